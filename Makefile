@@ -1,0 +1,100 @@
+# contactopt: shape optimisation in contact problems (Haslinger & Neittaanmaki 1987).
+# The literate sources paper/*.nw are the only sources of the program;
+# src/ is tangled from them (committed, never edited by hand).
+
+# The parts of the paper, in the order of the argument (the driver first).
+NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
+      paper/state.nw paper/model.nw paper/output.nw paper/main.nw \
+      paper/closing.nw
+
+# Modules tangled into src/ (each has a .h and a .c), and the program.
+MODULES := status scene mesh fem state model output
+TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c
+OBJ     := $(MODULES:%=build/%.o)
+
+CC      ?= cc
+CFLAGS  ?= -O2 -g
+CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
+           -I/usr/include/suitesparse -Isrc
+LDLIBS  := -lcholmod -lgsl -lgslcblas -linih -lm
+# make SAN=1 check: the whole suite under AddressSanitizer and UBSan.
+ifeq ($(SAN),1)
+CFLAGS  += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer
+LDFLAGS += -fsanitize=address,undefined
+endif
+
+# Debian packages the package needs, and the command that proves each one.
+PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
+            libsuitesparse-dev pkg-config texlive-latex-base \
+            texlive-latex-recommended texlive-fonts-recommended
+
+.PHONY: all deps tangle tangle-check paper figures check bench clean
+all: bin/contactopt
+
+# ---- dependencies: install what is missing, or say exactly how -------------
+deps:
+	@missing=$$(for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; \
+	done); \
+	if [ -n "$$missing" ]; then \
+	  cmd="apt-get update && apt-get install -y --no-install-recommends $$(echo $$missing)"; \
+	  if [ "$$(id -u)" = 0 ]; then echo "deps: installing $$(echo $$missing)"; \
+	    export DEBIAN_FRONTEND=noninteractive; sh -c "$$cmd" >build-deps.log 2>&1 \
+	      || { echo "deps: apt-get failed, see build-deps.log"; exit 1; }; rm -f build-deps.log; \
+	  elif sudo -n true 2>/dev/null; then sudo sh -c "$$cmd"; \
+	  else echo "deps: missing Debian packages; run as root:"; echo "  $$cmd"; exit 1; fi; \
+	fi
+
+# ---- tangling ----------------------------------------------------------------
+tangle: src/.tangled
+src/.tangled: $(NW) paper/tangle.sh | deps
+	sh paper/tangle.sh src $(NW)
+	@touch $@
+$(TANGLED): src/.tangled ;
+
+tangle-check: | deps
+	@rm -rf build/tangle-check && mkdir -p build/tangle-check
+	@sh paper/tangle.sh build/tangle-check $(NW)
+	@diff -r -x .tangled build/tangle-check src \
+	  && echo "tangle-check: src/ matches a fresh tangle of paper/*.nw" \
+	  || { echo "tangle-check: src/ differs from paper/*.nw (edit the .nw, run make)"; exit 1; }
+
+# ---- building ------------------------------------------------------------------
+build/%.o: src/%.c | src/.tangled
+	@mkdir -p build
+	$(CC) $(CFLAGS) -MMD -MP -c -o $@ $<
+bin/contactopt: build/main.o $(OBJ)
+	@mkdir -p bin
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+-include $(wildcard build/*.d)
+
+# Test programs link the library modules directly.
+TEST_PROGS := $(patsubst tests/%.c,build/tests/%,$(wildcard tests/*.c))
+build/tests/%: tests/%.c $(OBJ) tests/check.h
+	@mkdir -p build/tests
+	$(CC) $(CFLAGS) -Itests $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
+
+check: bin/contactopt $(TEST_PROGS) tangle-check
+	@sh tests/run
+
+bench: bin/contactopt
+	@sh tests/bench/state.sh
+
+# ---- the woven paper -------------------------------------------------------------
+paper: paper/contactopt.pdf
+paper/contactopt.pdf: $(NW) | deps
+	@mkdir -p build/paper
+	noweave -delay -index -autodefs c $(NW) > build/paper/contactopt.tex
+	cd build/paper && for i in 1 2 3 4; do \
+	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
+	    || { tail -40 contactopt.log; exit 1; }; \
+	  grep -q 'Rerun' contactopt.log || break; done
+	cp build/paper/contactopt.pdf $@
+
+figures: bin/contactopt
+	@echo "make figures: not yet — the figures of Section 5 come with the optimiser (issue 4)."
+	@echo "Built bin/contactopt; 'bin/contactopt solve data/example-5.1.scene' solves the state."
+	@exit 1
+
+clean:
+	rm -rf build bin out src/.tangled

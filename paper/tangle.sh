@@ -1,0 +1,13 @@
+#!/bin/sh
+# tangle.sh DIR FILE.nw...: write every root chunk named like a C file
+# (foo.c, foo.h) of the given noweb files into DIR, with #line directives
+# pointing into the .nw.  cpif leaves an unchanged file (and its time) alone,
+# so a prose-only edit rebuilds nothing.
+set -e
+dir=$1; shift
+mkdir -p "$dir"
+for nw in "$@"; do
+  for root in $(noroots "$nw" | sed -n 's/^<<\(.*\.[ch]\)>>$/\1/p'); do
+    notangle -L'#line %L "%F"%N' -R"$root" "$nw" | cpif "$dir/$root"
+  done
+done

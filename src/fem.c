@@ -1,0 +1,249 @@
+#line 67 "paper/fem.nw"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "fem.h"
+
+#line 81 "paper/fem.nw"
+static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
+
+Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st)
+{
+  Dofs *d = calloc(1, sizeof *d);
+  if (!d) { status_set(st, STATUS_SYSTEM, "dofs: out of memory"); return NULL; }
+  d->ndof = 2 * m->nnodes;
+  d->unknown = calloc(d->ndof, sizeof *d->unknown);
+  d->contact = malloc(m->ncol * sizeof *d->contact);
+  d->contact_col = malloc(m->ncol * sizeof *d->contact_col);
+  if (!d->unknown || !d->contact || !d->contact_col) {
+    fem_dofs_free(d);
+    status_set(st, STATUS_SYSTEM, "dofs: out of memory");
+    return NULL;
+  }
+  for (int side = 0; side < SIDE_COUNT; side++)
+    fem_hold_side(m, side, s->side[side].kind, d->unknown);
+  
+#line 105 "paper/fem.nw"
+for (int k = 0; k < d->ndof; k++)
+  d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
+for (int i = 0; i < m->ncol; i++)
+  if (d->unknown[2 * i + 1] >= 0) {      /* u2 of A_i, node i of row 0 */
+    d->contact[d->nc] = d->unknown[2 * i + 1];
+    d->contact_col[d->nc++] = i;
+  }
+#line 99 "paper/fem.nw"
+  return d;
+}
+#line 116 "paper/fem.nw"
+static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
+{
+  if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
+  int count = side == SIDE_TOP ? m->ncol : m->nrow;
+  for (int s = 0; s < count; s++) {
+    int k = side == SIDE_TOP ? (m->nrow - 1) * m->ncol + s
+          : s * m->ncol + (side == SIDE_LEFT ? 0 : m->N);
+    int normal = side == SIDE_TOP ? 1 : 0;
+    if (kind == BC_CLAMPED || normal == 0) held[2 * k] = -1;
+    if (kind == BC_CLAMPED || normal == 1) held[2 * k + 1] = -1;
+  }
+}
+
+void fem_dofs_free(Dofs *d)
+{
+  if (!d) return;
+  free(d->unknown);
+  free(d->contact);
+  free(d->contact_col);
+  free(d);
+}
+#line 156 "paper/fem.nw"
+Hooke fem_hooke(const Scene *s)
+{
+  Hooke H;
+  double (*D)[3] = H.D;
+  double mu = s->E / (2 * (1 + s->nu));
+  double lambda = s->model == MODEL_PLANE_STRAIN
+    ? s->E * s->nu / ((1 + s->nu) * (1 - 2 * s->nu))
+    : s->E * s->nu / (1 - s->nu * s->nu);
+  memset(D, 0, 9 * sizeof D[0][0]);
+  D[0][0] = D[1][1] = lambda + 2 * mu;
+  D[0][1] = D[1][0] = lambda;
+  D[2][2] = mu;
+  return H;
+}
+#line 182 "paper/fem.nw"
+void fem_element_stiffness(const double xy[6], const Hooke *H,
+                           double K[6][6])
+{
+  double B[3][6] = {{0}}, area2 = (xy[2] - xy[0]) * (xy[5] - xy[1])
+                                - (xy[4] - xy[0]) * (xy[3] - xy[1]);
+  for (int k = 0; k < 3; k++) {
+    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    double gx = (xy[2 * k1 + 1] - xy[2 * k2 + 1]) / area2;
+    double gy = (xy[2 * k2] - xy[2 * k1]) / area2;
+    B[0][2 * k] = gx; B[1][2 * k + 1] = gy;
+    B[2][2 * k] = gy; B[2][2 * k + 1] = gx;
+  }
+  
+#line 199 "paper/fem.nw"
+double DB[3][6];
+const double (*D)[3] = H->D;
+for (int r = 0; r < 3; r++)
+  for (int c = 0; c < 6; c++)
+    DB[r][c] = D[r][0] * B[0][c] + D[r][1] * B[1][c] + D[r][2] * B[2][c];
+for (int r = 0; r < 6; r++)
+  for (int c = 0; c < 6; c++)
+    K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
+                            + B[2][r] * DB[2][c]);
+#line 195 "paper/fem.nw"
+}
+#line 218 "paper/fem.nw"
+static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
+
+cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
+                                  cholmod_common *cm, Status *st)
+{
+  cholmod_triplet *T = cholmod_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri,
+                                                0, CHOLMOD_REAL, cm);
+  if (!T) { status_set(st, STATUS_SYSTEM, "stiffness: out of memory"); return NULL; }
+  for (int t = 0; t < m->ntri; t++) {
+    int g[6];
+    fem_element_dofs(m, d, t, g);
+    
+#line 239 "paper/fem.nw"
+for (int r = 0; r < 6; r++)
+  for (int c = 0; c < 6; c++)
+    if (g[r] >= 0 && g[c] >= 0) {
+      ((int *) T->i)[T->nnz] = g[r];
+      ((int *) T->j)[T->nnz] = g[c];
+      ((double *) T->x)[T->nnz++] = 0;
+    }
+#line 230 "paper/fem.nw"
+  }
+  cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
+  cholmod_free_triplet(&T, cm);
+  if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
+  return A;
+}
+#line 250 "paper/fem.nw"
+static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
+{
+  for (int k = 0; k < 3; k++) {
+    int node = m->tri[3 * t + k];
+    g[2 * k] = d->unknown[2 * node];
+    g[2 * k + 1] = d->unknown[2 * node + 1];
+  }
+}
+#line 263 "paper/fem.nw"
+static double *fem_entry(cholmod_sparse *A, int r, int c)
+{
+  int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (Ai[mid] < r) lo = mid + 1; else hi = mid;
+  }
+  return lo <= hi && Ai[lo] == r ? (double *) A->x + lo : NULL;
+}
+
+int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
+                       const Hooke *H, Status *st)
+{
+  memset(A->x, 0, ((int *) A->p)[A->ncol] * sizeof(double));
+  for (int t = 0; t < m->ntri; t++) {
+    double xy[6], K[6][6];
+    int g[6];
+    
+#line 290 "paper/fem.nw"
+for (int k = 0; k < 3; k++) {
+  xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
+  xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
+}
+#line 281 "paper/fem.nw"
+    fem_element_dofs(m, d, t, g);
+    fem_element_stiffness(xy, H, K);
+    
+#line 297 "paper/fem.nw"
+for (int r = 0; r < 6; r++)
+  for (int c = 0; c < 6; c++)
+    if (g[r] >= 0 && g[c] >= 0) {
+      double *a = fem_entry(A, g[r], g[c]);
+      if (!a)
+        return status_set(st, STATUS_SYSTEM,
+                          "stiffness: pattern does not match the mesh");
+      *a += K[r][c];
+    }
+#line 284 "paper/fem.nw"
+  }
+  return STATUS_OK;
+}
+#line 317 "paper/fem.nw"
+static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
+                               double *b);
+static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
+                             const Side *load, double *b);
+
+void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b)
+{
+  memset(b, 0, d->n * sizeof *b);
+  if (s->has_body_force) fem_add_body_force(m, d, s->F, b);
+  for (int side = 0; side < SIDE_COUNT; side++)
+    if (s->side[side].kind == BC_TRACTION)
+      fem_add_traction(m, d, side, &s->side[side], b);
+}
+#line 333 "paper/fem.nw"
+static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
+                          double *b)
+{
+  for (int c = 0; c < 2; c++)
+    if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
+}
+
+static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
+                               double *b)
+{
+  for (int t = 0; t < m->ntri; t++)
+    for (int k = 0; k < 3; k++)
+      fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
+}
+#line 354 "paper/fem.nw"
+static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
+                             const Side *load, double *b)
+{
+  int top = side == SIDE_TOP, count = top ? m->N : m->nrow - 1;
+  for (int e = 0; e < count; e++) {
+    int p = top ? (m->nrow - 1) * m->ncol + e
+                : e * m->ncol + (side == SIDE_LEFT ? 0 : m->N);
+    int q = top ? p + 1 : p + m->ncol;
+    double s0 = m->xy[2 * p + !top], s1 = m->xy[2 * q + !top];
+    double t0 = (fmax(s0, load->from) - s0) / (s1 - s0);
+    double t1 = (fmin(s1, load->to) - s0) / (s1 - s0);
+    if (t1 <= t0) continue;
+    double L = s1 - s0;
+    fem_add_force(d, p, load->P, L * ((t1 - t0) - (t1 * t1 - t0 * t0) / 2), b);
+    fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
+  }
+}
+#line 380 "paper/fem.nw"
+void fem_multiply(const cholmod_sparse *A, const double *x, double *y)
+{
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  for (size_t j = 0; j < A->ncol; j++) {
+    double s = 0;
+    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * x[Ai[p]];
+    y[j] = s;       /* column j is row j: A is stored symmetric */
+  }
+}
+
+double fem_energy(const cholmod_sparse *A, const double *b, const double *Q)
+{
+  double e = 0;
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  for (size_t j = 0; j < A->ncol; j++) {
+    double s = 0;
+    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * Q[Ai[p]];
+    e += Q[j] * (0.5 * s - b[j]);
+  }
+  return e;
+}

@@ -1,0 +1,35 @@
+#line 26 "paper/fem.nw"
+#ifndef CONTACTOPT_FEM_H
+#define CONTACTOPT_FEM_H
+#include <cholmod.h>
+#include "status.h"
+#include "scene.h"
+#include "mesh.h"
+
+typedef struct {
+  int ndof;          /* 2*nnodes: DOF 2k is u1, 2k+1 is u2 of node k */
+  int n;             /* unknowns: the DOFs that no side holds */
+  int *unknown;      /* ndof: the unknown of each DOF, or -1 when held */
+  int nc;            /* |I|: contact nodes whose u2 is an unknown */
+  int *contact;      /* nc: the unknown of u2 at each of them */
+  int *contact_col;  /* nc: its column i, the node A_i */
+} Dofs;
+
+/* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
+typedef struct { double D[3][3]; } Hooke;
+
+#line 50 "paper/fem.nw"
+Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st);
+void fem_dofs_free(Dofs *d);
+Hooke fem_hooke(const Scene *s);
+void fem_element_stiffness(const double xy[6], const Hooke *H,
+                           double K[6][6]);
+cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
+                                  cholmod_common *cm, Status *st);
+int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
+                       const Hooke *H, Status *st);
+void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b);
+double fem_energy(const cholmod_sparse *A, const double *b, const double *Q);
+void fem_multiply(const cholmod_sparse *A, const double *x, double *y);
+#line 46 "paper/fem.nw"
+#endif

@@ -1,0 +1,25 @@
+#line 38 "paper/mesh.nw"
+#ifndef CONTACTOPT_MESH_H
+#define CONTACTOPT_MESH_H
+#include "status.h"
+#include "scene.h"
+
+typedef struct {
+  int N, M, R;       /* design intervals, moving rows, fixed rows */
+  int ncol, nrow;    /* N+1 columns and M+R+1 rows of nodes */
+  int nnodes;        /* ncol*nrow; node (i,j) has index j*ncol + i */
+  int ntri;          /* 2N(M+R) triangles */
+  double a, b, gamma, C0prime;
+  double h;          /* (b-a)/N, the design step */
+  double *xy;        /* 2*nnodes: x1 of node k at xy[2k], x2 at xy[2k+1] */
+  int *tri;          /* 3*ntri: the nodes of each triangle, counter-clockwise */
+} Mesh;
+
+#line 59 "paper/mesh.nw"
+Mesh *mesh_new(const Scene *s, Status *st);     /* topology, fixed nodes */
+int mesh_move(Mesh *m, const double *X, Status *st); /* place nodes for X */
+double mesh_motion(const Mesh *m, int k); /* d x2(node k) / d alpha_i, (4.2) */
+double mesh_area(const Mesh *m, int t);   /* signed area of triangle t */
+void mesh_free(Mesh *m);
+#line 55 "paper/mesh.nw"
+#endif

@@ -1,0 +1,34 @@
+#line 11 "paper/model.nw"
+#ifndef CONTACTOPT_MODEL_H
+#define CONTACTOPT_MODEL_H
+#include <cholmod.h>
+#include "status.h"
+#include "scene.h"
+#include "mesh.h"
+#include "fem.h"
+#include "state.h"
+
+typedef struct {
+  const Scene *scene;   /* the problem (not owned) */
+  cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
+  Mesh *mesh;           /* moved to the last design solved */
+  Dofs *dofs;           /* unknowns and contact DOFs I */
+  Hooke hooke;          /* Hooke's law of the scene's plane model */
+  cholmod_sparse *A;    /* A(X), n x n */
+  double *b;            /* n: F(X) + P(X) */
+  double *lo;           /* nc: the bounds -X_i of the contact DOFs */
+  Qp qp;                /* the state problem (4.3) over A, b, lo */
+  Qp_workspace *solver; /* its solver, reused from design to design */
+  double *Q;            /* n: the state Q(X) */
+  double *T;            /* nc: the contact forces T_i >= 0 */
+  double energy;        /* E(X) = 1/2 Q'AQ - (F+P)'Q */
+  Qp_report report;     /* of the last state solve */
+  double seconds;       /* wall time of the last model_solve */
+  int solved;           /* Q holds a state: warm start the next solve */
+} Model;
+
+Model *model_new(const Scene *s, cholmod_common *cm, Status *st);
+/* move to design X (N+1 values), assemble, solve the state from the last */
+int model_solve(Model *md, const double *X, Status *st);
+void model_free(Model *md);
+#endif

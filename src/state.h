@@ -1,0 +1,52 @@
+#line 68 "paper/state.nw"
+#ifndef CONTACTOPT_STATE_H
+#define CONTACTOPT_STATE_H
+#include <cholmod.h>
+#include "status.h"
+#include "scene.h"
+
+/* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
+   x[ic[c]] >= lo[c], c = 0..nc-1.  A is symmetric positive semidefinite,
+   and positive definite on the subspace x[ic] = 0. */
+typedef struct {
+  const cholmod_sparse *A; /* n x n, both triangles stored, sorted, packed */
+  const double *b;         /* n: the load vector F + P */
+  int nc;                  /* number of bounded unknowns, |I| */
+  const int *ic;           /* nc: their indices, increasing */
+  const double *lo;        /* nc: their lower bounds, -X_i */
+} Qp;
+
+typedef struct {
+  State_method method;     /* pdas, psor or cgssor */
+  double tol;              /* stop when qp_kkt <= tol */
+  int max_iter;            /* fail when not converged after this many */
+  double omega;            /* relaxation, 0 < omega < 2 (psor, cgssor) */
+} Qp_options;
+
+typedef struct {
+  int iterations;          /* sweeps, CG steps or Newton steps used */
+  double kkt;              /* qp_kkt at the returned x */
+  int active;              /* bounded unknowns at their bound */
+  int converged;           /* kkt <= tol */
+} Qp_report;
+
+typedef struct Qp_workspace Qp_workspace;
+
+/* set / iterate / test, GSL style: the caller may own the loop */
+Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
+                       cholmod_common *cm, Status *st);
+int qp_set(Qp_workspace *w, const double *x0, Status *st); /* x0 NULL: cold */
+int qp_iterate(Qp_workspace *w, Status *st);
+int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
+const double *qp_x(const Qp_workspace *w);   /* the current iterate */
+void qp_free(Qp_workspace *w);
+
+/* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
+   T[c] = (Ax - b)[ic[c]]; STATUS_NUMERIC when not converged. */
+int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
+             Qp_report *rep, Status *st);
+
+/* The relative KKT residual of x (scale-free); T (nc, may be NULL)
+   receives the contact forces. */
+double qp_kkt(const Qp *qp, const double *x, double *T);
+#endif

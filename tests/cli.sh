@@ -1,0 +1,62 @@
+# cli.sh: the command line: help texts, overrides, the files of solve, the
+# Matrix Market export, and bad input: exit status 2, one line naming the
+# file, nothing written.
+. tests/lib.sh
+scene=data/example-5.1.scene
+$BIN --help > $TMP/help; rc=$?
+check "contactopt --help exits 0 and names the solve command" \
+  sh -c "[ $rc -eq 0 ] && grep -q solve $TMP/help"
+$BIN solve --help > $TMP/help; rc=$?
+for opt in -o -s --matrix-market --help; do
+  check "contactopt solve --help explains $opt" grep -q -- "$opt" $TMP/help
+done
+$BIN frobnicate $scene 2>$TMP/err; rc=$?
+check "an unknown command exits 2" [ $rc -eq 2 ]
+
+out=$TMP/run
+$BIN solve $scene -o $out -s mesh.M=2 --matrix-market $TMP/A.mtx > $TMP/stdout; rc=$?
+check "solve exits 0" [ $rc -eq 0 ]
+for f in summary.dat shape.dat contact.dat nodes.dat triangles.dat solution.vtu; do
+  check "solve writes $f" test -s $out/$f
+done
+for k in energy kkt_residual iterations active_contact_nodes dofs seconds; do
+  check "summary.dat has $k" grep -q "^$k " $out/summary.dat
+done
+check "-s mesh.M=2 is applied (M 2 in the summary)" grep -q '^M 2$' $out/summary.dat
+check "no staging folder is left behind" sh -c "! ls -d $out.partial-* 2>/dev/null"
+# Matrix Market: the banner, then n n nnz with n = dofs
+dofs=$(awk '$1 == "dofs" { print $2 }' $out/summary.dat)
+check "the Matrix Market file is a real matrix of order dofs = $dofs" \
+  sh -c "head -1 $TMP/A.mtx | grep -q '^%%MatrixMarket matrix coordinate real' &&
+         grep -v '^%' $TMP/A.mtx | head -1 | awk -v n=$dofs '{ exit !(\$1 == n && \$2 == n) }'"
+check "shape.dat has N+1 = 17 rows" sh -c "[ \$(grep -vc '^#' $out/shape.dat) -eq 17 ]"
+# round-off leaves |T| ~ 1e-15 max T at the nodes out of contact
+check "contact.dat: every gap >= 0 and every contact force >= -1e-12 max T" \
+  awk '!/^#/ { g[NR] = $4; t[NR] = $5; if ($5 > m) m = $5 }
+       END { for (k in g) if (g[k] < -1e-12 || t[k] < -1e-12 * m) bad = 1; exit bad }' $out/contact.dat
+check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $OLDPWD/$scene d/x.scene &&
+  $OLDPWD/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
+
+# bad input: status 2, one line naming the file, no output folder
+bad() { # description expected-words... -- arguments
+  desc=$1; shift; words=""
+  while [ "$1" != "--" ]; do words="$words $1"; shift; done; shift
+  rm -rf $TMP/bad
+  $BIN solve "$@" -o $TMP/bad > /dev/null 2> $TMP/err; rc=$?
+  good=1
+  [ $rc -eq 2 ] || good=0
+  [ $(wc -l < $TMP/err) -eq 1 ] || good=0
+  for w in $words; do grep -q -- "$w" $TMP/err || good=0; done
+  [ -e $TMP/bad ] && good=0
+  if [ $good -eq 1 ]; then ok "$desc: exit 2, $(cat $TMP/err)"
+  else fail "$desc: exit $rc, wrote $(ls $TMP/bad 2>/dev/null | wc -l) files: $(cat $TMP/err)"; fi
+}
+bad "a missing scene" missing.scene -- $TMP/missing.scene
+bad "an unknown key" solver.frobnicate -- $scene -s solver.frobnicate=1
+bad "nu = 0.5" material.nu 0.5 -- $scene -s material.nu=0.5
+bad "a malformed number" mesh.M -- $scene -s mesh.M=4x
+bad "an unknown option" --frobnicate -- $scene --frobnicate
+bad "two scenes" more -- $scene $scene
+printf '[geometry\na = 0\n' > $TMP/broken.scene
+bad "a syntax error" broken.scene line -- $TMP/broken.scene
+finish

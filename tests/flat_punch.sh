@@ -1,0 +1,31 @@
+# flat_punch.sh: the exact uniaxial-strain solution of a flat punch, for
+# every state solver and both plane models (see tests/scenes/flat-punch.scene).
+. tests/lib.sh
+scene=tests/scenes/flat-punch.scene
+E=2.15e11; nu=0.29; P2=-5.75e8
+for model in plane_strain plane_stress; do
+  # u2 at the top (gamma = 1): P2 / (lambda + 2 mu) or P2 (1 - nu^2) / E
+  want=$(awk -v E=$E -v nu=$nu -v P=$P2 -v m=$model 'BEGIN {
+    l = E * nu / ((1 + nu) * (1 - 2 * nu)); mu = E / (2 * (1 + nu));
+    printf "%.17g", m == "plane_strain" ? P / (l + 2 * mu) : P * (1 - nu * nu) / E }')
+  for solver in pdas psor cgssor; do
+    for N in 16 64; do
+      out=$TMP/$model-$solver-$N
+      M=$((N / 16)); R=$((3 * N / 16))
+      if ! $BIN solve $scene -o $out -s material.model=$model -s solver.state=$solver \
+           -s design.N=$N -s mesh.M=$M -s mesh.R=$R -s solver.tol=1e-12 >/dev/null 2>$TMP/err; then
+        fail "flat punch $model $solver N=$N: $(cat $TMP/err)"; continue
+      fi
+      worst=$(awk -v p=5.75e8 '!/^#/ { e = ($6 - p) / p; if (e < 0) e = -e; if (e > w) w = e }
+                               END { printf "%.2e", w }' $out/contact.dat)
+      check "flat punch $model $solver N=$N: contact pressure = applied, rel. error $worst <= 1e-10" \
+        awk -v w=$worst 'BEGIN { exit !(w <= 1e-10) }'
+      top=$(awk -v row=$((M + R)) -v want=$want '!/^#/ && $3 == row {
+              e = ($7 - want) / want; if (e < 0) e = -e; if (e > w) w = e }
+              END { printf "%.2e", w }' $out/nodes.dat)
+      check "flat punch $model $solver N=$N: top u2 = $want, rel. error $top <= 1e-10" \
+        awk -v w=$top 'BEGIN { exit !(w <= 1e-10) }'
+    done
+  done
+done
+finish

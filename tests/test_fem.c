@@ -1,0 +1,202 @@
+/* test_fem: the moving mesh and the P1 elasticity operator.
+   Patch test: a linear displacement field has constant stress, so the
+   assembled operator applied to it vanishes at interior nodes and equals
+   the consistent nodal forces of the boundary tractions sigma.n elsewhere;
+   rigid motions have zero stiffness; the article's mesh has the sizes of
+   Fig. 5.2a. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "scene.h"
+#include "mesh.h"
+#include "fem.h"
+
+static Scene free_body(int N, int M, int R, Plane_model model)
+{
+  Scene s;
+  memset(&s, 0, sizeof s);
+  s.a = 0; s.b = 4; s.gamma = 1; s.N = N; s.M = M; s.R = R;
+  s.C0 = 0.05; s.C0prime = 0.25; s.E = 2.15e11; s.nu = 0.29; s.model = model;
+  return s;                          /* every side free: all DOFs unknowns */
+}
+
+/* an arc-shaped, non-uniform design so that no triangle is a right one */
+static void design(int N, double *X)
+{
+  for (int i = 0; i <= N; i++) {
+    double x = 4.0 * i / N;
+    X[i] = 160.025 - sqrt(160.025 * 160.025 - (x - 4) * (x - 4))
+         + 0.01 * sin(3.0 * i);
+    if (X[i] < 0) X[i] = 0;
+  }
+}
+
+static double norm_inf(const double *v, int n)
+{
+  double m = 0;
+  for (int k = 0; k < n; k++) m = fmax(m, fabs(v[k]));
+  return m;
+}
+
+/* consistent nodal forces of the constant traction sigma.n on every
+   boundary edge (outward normal of a counter-clockwise boundary) */
+static void boundary_forces(const Mesh *m, const Hooke *H,
+                            const double grad[4], double *f)
+{
+  double e[3] = { grad[0], grad[3], grad[1] + grad[2] };  /* e11 e22 2e12 */
+  double s[3];
+  const double (*D)[3] = H->D;
+  for (int r = 0; r < 3; r++) s[r] = D[r][0] * e[0] + D[r][1] * e[1] + D[r][2] * e[2];
+  int n = 2 * (m->N + m->nrow - 1), *loop = malloc((n + 1) * sizeof *loop), k = 0;
+  for (int i = 0; i < m->N; i++) loop[k++] = i;                              /* bottom */
+  for (int j = 0; j < m->nrow - 1; j++) loop[k++] = j * m->ncol + m->N;     /* right */
+  for (int i = m->N; i > 0; i--) loop[k++] = (m->nrow - 1) * m->ncol + i;  /* top */
+  for (int j = m->nrow - 1; j > 0; j--) loop[k++] = j * m->ncol;            /* left */
+  loop[k] = loop[0];
+  memset(f, 0, 2 * m->nnodes * sizeof *f);
+  for (k = 0; k < n; k++) {
+    int p = loop[k], q = loop[k + 1];
+    double dx = m->xy[2 * q] - m->xy[2 * p], dy = m->xy[2 * q + 1] - m->xy[2 * p + 1];
+    double nx = dy, ny = -dx;                       /* outward normal times L */
+    double t1 = s[0] * nx + s[2] * ny, t2 = s[2] * nx + s[1] * ny;
+    f[2 * p] += t1 / 2; f[2 * p + 1] += t2 / 2;
+    f[2 * q] += t1 / 2; f[2 * q + 1] += t2 / 2;
+  }
+  free(loop);
+}
+
+static void patch_test(Plane_model model)
+{
+  int N = 16, M = 2, R = 3;
+  Scene s = free_body(N, M, R, model);
+  Status st = { 0, "" };
+  cholmod_common cm;
+  cholmod_start(&cm);
+  Mesh *m = mesh_new(&s, &st);
+  double X[17];
+  design(N, X);
+  check(mesh_move(m, X, &st) == 0, "patch mesh moves to a design (%s)", st.msg);
+  Dofs *d = fem_dofs_new(m, &s, &st);
+  check(d->n == 2 * m->nnodes && d->nc == N + 1, "a free body: every DOF is unknown");
+  cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
+  Hooke H = fem_hooke(&s);
+  fem_stiffness_fill(A, m, d, &H, &st);
+  check(A->sorted && A->packed && A->stype == 0, "stiffness is sorted, packed, both triangles");
+  double grad[4] = { 1e-3, -2e-3, 0.5e-3, 3e-3 };   /* du1/dx du1/dy du2/dx du2/dy */
+  double *u = malloc(d->n * sizeof *u), *r = malloc(d->n * sizeof *r),
+         *f = malloc(d->n * sizeof *f);
+  for (int k = 0; k < m->nnodes; k++) {
+    double x = m->xy[2 * k], y = m->xy[2 * k + 1];
+    u[2 * k] = 1e-4 + grad[0] * x + grad[1] * y;
+    u[2 * k + 1] = -2e-4 + grad[2] * x + grad[3] * y;
+  }
+  fem_multiply(A, u, r);
+  boundary_forces(m, &H, grad, f);
+  double scale = norm_inf(f, d->n), err = 0;
+  for (int k = 0; k < d->n; k++) err = fmax(err, fabs(r[k] - f[k]));
+  check(err <= 1e-12 * scale, "%s patch test: |A u_lin - f_boundary| / |f| = %.2e",
+        model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", err / scale);
+  for (int mode = 0; mode < 3; mode++) {         /* two translations, a rotation */
+    for (int k = 0; k < m->nnodes; k++) {
+      double x = m->xy[2 * k], y = m->xy[2 * k + 1];
+      u[2 * k] = mode == 0 ? 1 : mode == 1 ? 0 : -y;
+      u[2 * k + 1] = mode == 0 ? 0 : mode == 1 ? 1 : x;
+    }
+    fem_multiply(A, u, r);
+    double amax = 0;
+    for (int p = 0; p < ((int *) A->p)[A->ncol]; p++) amax = fmax(amax, fabs(((double *) A->x)[p]));
+    check(norm_inf(r, d->n) <= 1e-12 * amax * 4, "%s rigid motion %d has zero stiffness (%.2e)",
+          model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", mode, norm_inf(r, d->n) / amax);
+  }
+  free(u); free(r); free(f);
+  cholmod_free_sparse(&A, &cm);
+  fem_dofs_free(d);
+  mesh_free(m);
+  cholmod_finish(&cm);
+}
+
+/* Fig. 5.2a: 128 triangles, 17 contact nodes; orientation; (4.2) */
+static void article_mesh(void)
+{
+  Scene s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
+  Status st = { 0, "" };
+  Mesh *m = mesh_new(&s, &st);
+  double X[17];
+  design(16, X);
+  mesh_move(m, X, &st);
+  check(m->ntri == 128 && m->ncol == 17, "article mesh: %d triangles, %d contact nodes",
+        m->ntri, m->ncol);
+  int positive = 1;
+  for (int t = 0; t < m->ntri; t++) positive &= mesh_area(m, t) > 0;
+  check(positive, "article mesh: every triangle positively oriented");
+  double area = 0;
+  for (int t = 0; t < m->ntri; t++) area += mesh_area(m, t);
+  double trapez = 0;
+  for (int i = 0; i < 16; i++) trapez += 0.25 * (X[i] + X[i + 1]) / 2;
+  check(fabs(area - (4.0 - trapez)) < 1e-13, "mesh area = gamma(b-a) - h sum trapezoids");
+  mesh_free(m);
+
+  s = free_body(8, 4, 2, MODEL_PLANE_STRESS);
+  m = mesh_new(&s, &st);
+  double Y[9] = { 0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.1, 0.0, 0.03 };
+  mesh_move(m, Y, &st);
+  int ok = 1;
+  for (int i = 0; i <= 8; i++)
+    for (int j = 0; j <= 4; j++) {
+      double want = Y[i] + (0.25 - Y[i]) * j / 4.0;
+      ok &= fabs(m->xy[2 * (j * 9 + i) + 1] - want) < 1e-15;
+      ok &= fabs(mesh_motion(m, j * 9 + i) - (1 - j / 4.0)) < 1e-15;
+    }
+  check(ok, "moving nodes follow (4.2): x2 = alpha + (C0' - alpha) j/M, rate 1 - j/M");
+  Y[5] = 0.25;
+  check(mesh_move(m, Y, &st) == STATUS_INPUT && strstr(st.msg, "inverted"),
+        "alpha = C0prime is refused: %s", st.msg);
+  Y[5] = -0.01;
+  check(mesh_move(m, Y, &st) == STATUS_INPUT && strstr(st.msg, "alpha_5"),
+        "alpha < 0 is refused: %s", st.msg);
+  mesh_free(m);
+}
+
+/* a consistent traction load sums to P times the loaded length, also when
+   the interval ends inside an edge */
+static void traction_load(void)
+{
+  Scene s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
+  s.side[SIDE_LEFT].kind = BC_CLAMPED;
+  s.side[SIDE_TOP] = (Side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
+  s.side[SIDE_RIGHT] = (Side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };
+  Status st = { 0, "" };
+  Mesh *m = mesh_new(&s, &st);
+  double X[17] = { 0 };
+  mesh_move(m, X, &st);
+  Dofs *d = fem_dofs_new(m, &s, &st);
+  double *b = calloc(d->n, sizeof *b), sum[2] = { 0, 0 }, moment = 0;
+  fem_load(m, d, &s, b);
+  for (int k = 0; k < m->nnodes; k++)
+    for (int c = 0; c < 2; c++)
+      if (d->unknown[2 * k + c] >= 0) {
+        sum[c] += b[d->unknown[2 * k + c]];
+        moment += (c ? m->xy[2 * k] : -m->xy[2 * k + 1]) * b[d->unknown[2 * k + c]];
+      }
+  double want1 = 2e8 * 2.2 + 1e8 * 0.6, want2 = -5.75e8 * 2.2;
+  check(fabs(sum[0] - want1) < 1e-6 && fabs(sum[1] - want2) < 1e-6,
+        "traction load sums to P times the loaded length (%.9g, %.9g)", sum[0], sum[1]);
+  /* moment about the origin of the exact distributed load */
+  double want_m = -5.75e8 * (3.3 * 3.3 - 1.1 * 1.1) / 2 - 2e8 * 1.0 * 2.2
+                - 1e8 * (0.9 * 0.9 - 0.3 * 0.3) / 2;
+  check(fabs(moment - want_m) < 1e-6 * fabs(want_m),
+        "traction load has the exact first moment (%.9g vs %.9g)", moment, want_m);
+  free(b);
+  fem_dofs_free(d);
+  mesh_free(m);
+}
+
+int main(void)
+{
+  patch_test(MODEL_PLANE_STRESS);
+  patch_test(MODEL_PLANE_STRAIN);
+  article_mesh();
+  traction_load();
+  return check_done();
+}

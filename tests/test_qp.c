@@ -1,0 +1,450 @@
+/* test_qp.c: the state solvers of state.nw on small bound-constrained QPs
+   min 1/2 x'Ax - b'x, x[ic] >= lo, built here with cholmod_triplet:
+   (a) 1D obstacle problems, (b) a semidefinite 1D Neumann problem held only
+   by the bounds, (c) 2D grid Laplacians with mixed contact.  The reference
+   for the tiny ones enumerates every active set and solves each linear
+   system with GSL's Cholesky factorisation: independent of state.c. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cholmod.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include "check.h"
+#include "state.h"
+
+#define TOL 1e-10
+
+/* a test problem: dense copy for the reference, sparse for the solvers */
+typedef struct {
+  const char *name;
+  int n, nc;
+  double *D;          /* n*n, row major: the dense A */
+  double *b, *lo;     /* n, nc */
+  int *ic;            /* nc */
+  cholmod_sparse *A;
+  Qp qp;
+} Problem;
+
+static cholmod_common cm;
+static const State_method methods[3] = { STATE_PDAS, STATE_PSOR, STATE_CGSSOR };
+static const char *names[3] = { "pdas", "psor", "cgssor" };
+
+/* ---- building problems ---------------------------------------------------- */
+
+static Problem *problem_new(const char *name, int n, int nc)
+{
+  Problem *P = calloc(1, sizeof *P);
+  P->name = name, P->n = n, P->nc = nc;
+  P->D = calloc((size_t) n * n, sizeof *P->D);
+  P->b = calloc(n, sizeof *P->b);
+  P->lo = calloc(nc + 1, sizeof *P->lo);
+  P->ic = calloc(nc + 1, sizeof *P->ic);
+  return P;
+}
+
+/* the sparse A of the dense one, both triangles, via a triplet matrix */
+static void problem_finish(Problem *P)
+{
+  int n = P->n, k = 0;
+  cholmod_triplet *t = cholmod_allocate_triplet(n, n, (size_t) n * n, 0,
+                                                CHOLMOD_REAL, &cm);
+  int *ti = t->i, *tj = t->j;
+  double *tx = t->x;
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++)
+      if (P->D[i * n + j] != 0 || i == j)
+        ti[k] = i, tj[k] = j, tx[k] = P->D[i * n + j], k++;
+  t->nnz = k;
+  P->A = cholmod_triplet_to_sparse(t, k, &cm);
+  cholmod_free_triplet(&t, &cm);
+  P->qp = (Qp) { P->A, P->b, P->nc, P->ic, P->lo };
+}
+
+static void problem_free(Problem *P)
+{
+  cholmod_free_sparse(&P->A, &cm);
+  free(P->D), free(P->b), free(P->lo), free(P->ic), free(P);
+}
+
+/* add k * (e_i - e_j)(e_i - e_j)' to D; j < 0: k e_i e_i' (a spring to 0) */
+static void spring(Problem *P, int i, int j, double k)
+{
+  int n = P->n;
+  P->D[i * n + i] += k;
+  if (j < 0) return;
+  P->D[j * n + j] += k;
+  P->D[i * n + j] -= k, P->D[j * n + i] -= k;
+}
+
+/* (a) -u'' = -f on (0,1), u(0) = u(1) = 0, u >= psi at every "every"-th node */
+static Problem *obstacle_1d(const char *name, int n, int every)
+{
+  Problem *P = problem_new(name, n, (n + every - 1) / every);
+  double h = 1.0 / (n + 1);
+  for (int i = 0; i < n; i++) {
+    spring(P, i, i + 1 < n ? i + 1 : -1, 1 / h);
+    if (i == 0) spring(P, 0, -1, 1 / h);
+    P->b[i] = -10 * h;
+  }
+  for (int c = 0; c < P->nc; c++) {
+    double x = (c * every + 1) * h;
+    P->ic[c] = c * every;
+    P->lo[c] = -0.3 + (x - 0.5) * (x - 0.5);
+  }
+  problem_finish(P);
+  return P;
+}
+
+/* (b) a free 1D chain (A singular: constants) held only by 3 bounds;
+   up = 1: the load lifts it off and nothing holds it */
+static Problem *neumann_1d(const char *name, int up, double k)
+{
+  static const int ic[3] = { 1, 4, 8 };
+  static const double lo[3] = { -0.5, -0.05, -0.12 };
+  Problem *P = problem_new(name, 10, 3);
+  for (int i = 0; i + 1 < 10; i++) spring(P, i, i + 1, k);
+  for (int i = 0; i < 10; i++) P->b[i] = (up ? 1 : -1) * (1 + i % 3) * 0.01;
+  memcpy(P->ic, ic, sizeof ic), memcpy(P->lo, lo, sizeof lo);
+  problem_finish(P);
+  return P;
+}
+
+/* (c) a membrane on an nx x ny grid, held above its top row, resting with
+   its bottom row on a curved obstacle, under a uniform downward load;
+   free = 1: not held above (A singular), and the load lifts it off */
+static Problem *grid_2d(const char *name, int nx, int ny, int free)
+{
+  Problem *P = problem_new(name, nx * ny, nx);
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i < nx; i++) {
+      int v = j * nx + i;
+      if (i + 1 < nx) spring(P, v, v + 1, 1);
+      if (j + 1 < ny) spring(P, v, v + nx, 1);
+      else if (!free) spring(P, v, -1, 1);
+      P->b[v] = (free ? 0.3 : -1.25) / (ny * ny);
+    }
+  for (int c = 0; c < nx; c++) {
+    double s = (c + 0.5) / nx - 0.5;
+    P->ic[c] = c, P->lo[c] = -0.4 + 2 * s * s;
+  }
+  problem_finish(P);
+  return P;
+}
+
+/* ---- the independent reference: enumerate active sets --------------------- */
+
+/* solve with the bounds in mask active; 1 if the result satisfies KKT */
+static int try_active_set(const Problem *P, unsigned mask, double *x)
+{
+  int n = P->n, ok = 1;
+  gsl_matrix *M = gsl_matrix_alloc(n, n);
+  gsl_vector *r = gsl_vector_alloc(n), *y = gsl_vector_alloc(n);
+  char *act = calloc(n, 1);
+  for (int c = 0; c < P->nc; c++) act[P->ic[c]] = (mask >> c) & 1;
+  for (int i = 0, c = 0; i < n; i++) {
+    double rhs = P->b[i];
+    for (int j = 0; j < n; j++) {
+      double a = P->D[i * n + j];
+      gsl_matrix_set(M, i, j, act[i] || act[j] ? (i == j) : a);
+      if (act[j] && !act[i]) {
+        int cj = 0;
+        while (P->ic[cj] != j) cj++;
+        rhs -= a * P->lo[cj];
+      }
+    }
+    if (act[i]) { while (P->ic[c] != i) c++; rhs = P->lo[c]; }
+    gsl_vector_set(r, i, rhs);
+  }
+  ok = gsl_linalg_cholesky_decomp1(M) == GSL_SUCCESS
+       && gsl_linalg_cholesky_solve(M, r, y) == GSL_SUCCESS;
+  for (int i = 0; ok && i < n; i++) x[i] = gsl_vector_get(y, i);
+  for (int i = 0, c = 0; ok && i < n; i++) {   /* the KKT conditions, densely */
+    double ri = -P->b[i], scale = fabs(P->b[i]);
+    for (int j = 0; j < n; j++)
+      ri += P->D[i * n + j] * x[j], scale += fabs(P->D[i * n + j] * x[j]);
+    int bounded = c < P->nc && P->ic[c] == i;
+    if (!bounded || !act[i]) ok = fabs(ri) <= 1e-9 * scale;
+    if (bounded && act[i]) ok = ri >= -1e-9 * scale;
+    if (bounded && !act[i]) ok = ok && x[i] >= P->lo[c] - 1e-12;
+    c += bounded;
+  }
+  gsl_matrix_free(M), gsl_vector_free(r), gsl_vector_free(y), free(act);
+  return ok;
+}
+
+/* the solution by enumeration (nc <= 12); 0 if no active set satisfies KKT */
+static int reference(const Problem *P, double *x)
+{
+  for (unsigned mask = 0; mask < (1u << P->nc); mask++)
+    if (try_active_set(P, mask, x)) return 1;
+  return 0;
+}
+
+/* ---- running the solvers ---------------------------------------------------- */
+
+typedef struct {
+  int code;
+  Qp_report rep;
+  Status st;
+} Run;
+
+static Qp_options options(State_method m)
+{
+  Qp_options o = { m, TOL, 100000, 1.5 };
+  return o;
+}
+
+/* one cold (x0 NULL) or warm solve in a fresh workspace */
+static Run run(const Problem *P, Qp_options o, const double *x0, double *x,
+               double *T)
+{
+  Run r = { 0, { 0, 0, 0, 0 }, { STATUS_OK, "" } };
+  Qp_workspace *w = qp_alloc(&P->qp, &o, &cm, &r.st);
+  if (!w) { r.code = r.st.code; return r; }
+  r.code = qp_solve(w, x0, x, T, &r.rep, &r.st);
+  qp_free(w);
+  return r;
+}
+
+static double max_diff(int n, const double *u, const double *v)
+{
+  double d = 0, s = 0;
+  for (int i = 0; i < n; i++) d = fmax(d, fabs(u[i] - v[i])), s = fmax(s, fabs(v[i]));
+  return d / (s > 0 ? s : 1);
+}
+
+static int count_touching(const Problem *P, const double *x)
+{
+  int m = 0;
+  for (int c = 0; c < P->nc; c++) m += x[P->ic[c]] <= P->lo[c] + 1e-9;
+  return m;
+}
+
+/* every solver against the reference xr (or, if NULL, against pdas) */
+static void check_solvers(const Problem *P, const double *xr)
+{
+  int n = P->n;
+  double *x = malloc(n * sizeof *x), *T = malloc((P->nc + 1) * sizeof *T);
+  double *x0 = malloc(n * sizeof *x0);
+  for (int m = 0; m < 3; m++) {
+    Run r = run(P, options(methods[m]), NULL, x, T);
+    check(r.code == STATUS_OK && r.rep.converged && r.rep.kkt <= TOL,
+          "%s %s: converged in %d iterations, kkt %.2g, %d of %d bounds active%s",
+          P->name, names[m], r.rep.iterations, r.rep.kkt, r.rep.active, P->nc,
+          r.st.msg);
+    check(qp_kkt(&P->qp, x, NULL) <= TOL, "%s %s: recomputed kkt %.2g <= tol",
+          P->name, names[m], qp_kkt(&P->qp, x, NULL));
+    if (m == 0 && !xr) memcpy(x0, x, n * sizeof *x), xr = x0;
+    check(max_diff(n, x, xr) < 1e-7, "%s %s: x agrees with %s to %.2g",
+          P->name, names[m], xr == x0 ? "pdas" : "the enumeration",
+          max_diff(n, x, xr));
+  }
+  free(x), free(T), free(x0);
+}
+
+/* ---- invariance and warm starts ------------------------------------------- */
+
+/* A and b times s leave x and every solver's iteration count unchanged */
+static void check_scaling(Problem *P)
+{
+  int n = P->n, nz = ((int *) P->A->p)[n];
+  double *x0 = malloc(n * sizeof *x0), *x = malloc(n * sizeof *x);
+  double *Ax0 = malloc(nz * sizeof *Ax0), *b0 = malloc(n * sizeof *b0);
+  double *Ax = P->A->x, scales[2] = { 2.15e11, 1e-9 };
+  memcpy(Ax0, Ax, nz * sizeof *Ax), memcpy(b0, P->b, n * sizeof *b0);
+  for (int m = 0; m < 3; m++) {
+    Run r0 = run(P, options(methods[m]), NULL, x0, NULL);
+    for (int s = 0; s < 2; s++) {
+      for (int k = 0; k < nz; k++) Ax[k] = scales[s] * Ax0[k];
+      for (int i = 0; i < n; i++) P->b[i] = scales[s] * b0[i];
+      Run r = run(P, options(methods[m]), NULL, x, NULL);
+      check(r.code == STATUS_OK && r.rep.iterations == r0.rep.iterations
+            && max_diff(n, x, x0) < 1e-9, "%s %s: A, b times %g: %d iterations "
+            "as unscaled (%d), x the same to %.2g", P->name, names[m], scales[s],
+            r.rep.iterations, r0.rep.iterations, max_diff(n, x, x0));
+      memcpy(Ax, Ax0, nz * sizeof *Ax), memcpy(P->b, b0, n * sizeof *b0);
+    }
+  }
+  free(x0), free(x), free(Ax0), free(b0);
+}
+
+/* a warm start from the solution converges at once; after new values of A
+   and b, qp_set re-reads them: a warm re-solve in the same workspace
+   agrees with a cold solve in a fresh one */
+static void check_warm(Problem *P)
+{
+  int n = P->n, nz = ((int *) P->A->p)[n];
+  double *x = malloc(n * sizeof *x), *x2 = malloc(n * sizeof *x2);
+  double *x3 = malloc(n * sizeof *x3), *Ax = P->A->x;
+  double *Ax0 = malloc(nz * sizeof *Ax0), *b0 = malloc(n * sizeof *b0);
+  memcpy(Ax0, Ax, nz * sizeof *Ax), memcpy(b0, P->b, n * sizeof *b0);
+  for (int m = 0; m < 3; m++) {
+    Qp_options o = options(methods[m]);
+    Status st = { STATUS_OK, "" };
+    Qp_report r1, r2;
+    Qp_workspace *w = qp_alloc(&P->qp, &o, &cm, &st);
+    int code = qp_solve(w, NULL, x, NULL, &r1, &st);
+    code |= qp_solve(w, x, x2, NULL, &r2, &st);
+    check(!code && r2.iterations <= 1 && max_diff(n, x2, x) < 1e-12,
+          "%s %s: warm start from the solution: %d iterations (cold: %d)",
+          P->name, names[m], r2.iterations, r1.iterations);
+    for (int j = 0; j < n; j++)            /* stiffer diagonal, more load */
+      for (int k = ((int *) P->A->p)[j]; k < ((int *) P->A->p)[j + 1]; k++)
+        if (((int *) P->A->i)[k] == j) Ax[k] *= 1.25;
+    for (int i = 0; i < n; i++) P->b[i] *= 1.5;
+    code = qp_solve(w, x, x2, NULL, &r2, &st);
+    Run r3 = run(P, o, NULL, x3, NULL);
+    check(!code && !r3.code && max_diff(n, x2, x3) < 1e-7, "%s %s: new values "
+          "of A and b: warm re-solve (%d iterations) = cold solve (%d), to %.2g",
+          P->name, names[m], r2.iterations, r3.rep.iterations, max_diff(n, x2, x3));
+    memcpy(Ax, Ax0, nz * sizeof *Ax), memcpy(P->b, b0, n * sizeof *b0);
+    qp_free(w);
+  }
+  free(x), free(x2), free(x3), free(Ax0), free(b0);
+}
+
+/* ---- failures, each provoked once ------------------------------------------- */
+
+static int has(const char *msg, const char *what) { return strstr(msg, what) != NULL; }
+
+static int all_finite(int n, const double *x)
+{
+  for (int i = 0; i < n; i++) if (!isfinite(x[i])) return 0;
+  return 1;
+}
+
+/* max_iter = 1 on a problem that needs more, and tol beyond rounding */
+static void check_not_converged(Problem *P)
+{
+  double *x = malloc(P->n * sizeof *x);
+  for (int m = 0; m < 3; m++) {
+    Qp_options o = options(methods[m]);
+    o.max_iter = 1;
+    Run r = run(P, o, NULL, x, NULL);
+    check(r.code == STATUS_NUMERIC && has(r.st.msg, "not converged")
+          && has(r.st.msg, names[m]) && r.rep.iterations == 1,
+          "%s %s, max_iter 1: STATUS_NUMERIC \"%s\"", P->name, names[m], r.st.msg);
+  }
+  Qp_options o = options(STATE_PDAS);
+  o.tol = 1e-300;
+  Run r = run(P, o, NULL, x, NULL);
+  check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated"),
+        "%s pdas, tol 1e-300: STATUS_NUMERIC \"%s\"", P->name, r.st.msg);
+  free(x);
+}
+
+/* a body held only by the bounds, under a load that lifts it off */
+static void check_not_held(void)
+{
+  Problem *P[3] = { neumann_1d("neumann 1D, load up", 1, 1),
+                    neumann_1d("neumann 1D, k = 2.15e11/3, load up", 1, 2.15e11 / 3),
+                    grid_2d("free grid 12x6, load up", 12, 6, 1) };
+  for (int k = 0; k < 3; k++) {
+    double *x = malloc(P[k]->n * sizeof *x);
+    for (int m = 0; m < 3; m++) {
+      Qp_options o = options(methods[m]);
+      o.max_iter = 2000;
+      Run r = run(P[k], o, NULL, x, NULL);
+      check(r.code == STATUS_NUMERIC && has(r.st.msg, "lifts it off")
+            && !has(r.st.msg, "nan") && all_finite(P[k]->n, x),
+            "%s %s: STATUS_NUMERIC \"%s\"", P[k]->name, names[m], r.st.msg);
+    }
+    free(x), problem_free(P[k]);
+  }
+}
+
+/* the input errors of the contract, and NaN in the data */
+static void check_input_errors(Problem *P)
+{
+  Qp_options o = options(STATE_PSOR);
+  Status st = { STATUS_OK, "" };
+  P->A->stype = 1;
+  check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
+        "A with stype 1 refused: \"%s\"", st.msg);
+  P->A->stype = 0;
+  o.omega = 2;
+  check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
+        "omega = 2 refused: \"%s\"", st.msg);
+  o = options(STATE_PDAS), o.tol = 0;
+  check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
+        "tol = 0 refused: \"%s\"", st.msg);
+  o = options(STATE_PDAS);
+  int ic1 = P->ic[1];
+  P->ic[1] = P->ic[0];
+  check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
+        "repeated bounded unknown refused: \"%s\"", st.msg);
+  P->ic[1] = ic1;
+  double *x = malloc(P->n * sizeof *x), b1 = P->b[1], lo0 = P->lo[0];
+  P->b[1] = NAN;
+  Run r = run(P, o, NULL, x, NULL);
+  check(r.code == STATUS_NUMERIC && has(r.st.msg, "b[1]"),
+        "NaN in b: STATUS_NUMERIC \"%s\"", r.st.msg);
+  P->b[1] = b1, P->lo[0] = INFINITY;
+  r = run(P, o, NULL, x, NULL);
+  check(r.code == STATUS_NUMERIC && has(r.st.msg, "lo[0]"),
+        "infinite lo: STATUS_NUMERIC \"%s\"", r.st.msg);
+  P->lo[0] = lo0;
+  for (int i = 0; i < P->n; i++) x[i] = i == 2 ? NAN : 0;
+  r = run(P, o, x, x, NULL);
+  check(r.code == STATUS_NUMERIC && has(r.st.msg, "starting point"),
+        "NaN in x0: STATUS_NUMERIC \"%s\"", r.st.msg);
+  free(x);
+}
+
+/* a pattern that is not symmetric, and a zero diagonal entry */
+static void check_bad_matrices(void)
+{
+  Problem *P = obstacle_1d("unsymmetric", 6, 2);
+  Status st = { STATUS_OK, "" };
+  Qp_options o = options(STATE_PDAS);
+  cholmod_free_sparse(&P->A, &cm);
+  P->D[0 * 6 + 3] = 0.5;
+  problem_finish(P);
+  check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
+        "unsymmetric pattern refused: \"%s\"", st.msg);
+  problem_free(P);
+  P = obstacle_1d("zero diagonal", 6, 2);
+  ((double *) P->A->x)[0] = 0;       /* A(0,0): the first entry of column 0 */
+  double x[6];
+  Run r = run(P, o, NULL, x, NULL);
+  check(r.code == STATUS_INPUT && has(r.st.msg, "diagonal"),
+        "zero diagonal refused: \"%s\"", r.st.msg);
+  problem_free(P);
+}
+
+/* ---- the problems ----------------------------------------------------------- */
+
+static void check_against_reference(Problem *P)
+{
+  double *xr = malloc(P->n * sizeof *xr);
+  int found = reference(P, xr);
+  int m = found ? count_touching(P, xr) : -1;
+  check(found && m > 0 && m < P->nc, "%s: the enumeration finds the solution, "
+        "%d of %d bounds active", P->name, m, P->nc);
+  if (found) check_solvers(P, xr);
+  free(xr);
+}
+
+int main(void)
+{
+  cholmod_start(&cm);
+  gsl_set_error_handler_off();
+  Problem *P[5] = {
+    obstacle_1d("obstacle 1D, all bounded", 12, 1),
+    obstacle_1d("obstacle 1D, every 3rd bounded", 30, 3),
+    neumann_1d("neumann 1D (semidefinite)", 0, 1),
+    grid_2d("grid 8x5", 8, 5, 0),
+    grid_2d("grid 30x20", 30, 20, 0),
+  };
+  for (int k = 0; k < 4; k++) check_against_reference(P[k]);
+  check_solvers(P[4], NULL);
+  for (int k = 0; k < 5; k++) check_scaling(P[k]), check_warm(P[k]);
+  check_not_converged(P[1]);
+  check_not_held();
+  check_input_errors(P[0]);
+  check_bad_matrices();
+  for (int k = 0; k < 5; k++) problem_free(P[k]);
+  cholmod_finish(&cm);
+  return check_done();
+}

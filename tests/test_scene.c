@@ -1,0 +1,418 @@
+/* test_scene.c: the scene module (paper/setting.nw).  The shipped scenes
+   load with the article's values; overrides apply; every documented error
+   is provoked once, in a small scene written to a temporary directory, and
+   must give status 2, leave nothing allocated, and tell one line naming the
+   file, the key and the reason.  Run from the repository root. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "check.h"
+#include "scene.h"
+
+static char tmpdir[] = "/tmp/test_scene.XXXXXX";
+static char made[128][256];   /* files written in tmpdir, removed at the end */
+static int nmade;
+
+/* The base of every bad scene: Example 5.2, one key a line, line numbers
+   as in the comment. */
+static const char base[] =
+  "[geometry]\na = 0\nb = 4\ngamma = 1\n"                         /* 1-4 */
+  "[design]\nN = 16\nC0 = 0.05\nC1 = 0.025\nC2 = 3.91\n"          /* 5-9 */
+  "initial = line\nline_start = 0\nline_end = 0.05\n"             /* 10-12 */
+  "[mesh]\nM = 1\nR = 3\nC0prime = 0.25\n"                        /* 13-16 */
+  "[material]\nE = 2.15e11\nnu = 0.29\n"                          /* 17-19 */
+  "[left]\nbc = clamped\n[right]\nbc = roller\n"                  /* 20-23 */
+  "[top]\nbc = traction\nfrom = 2\nto = 4\nP2 = -5.75e8\n";       /* 24-28 */
+
+/* write text to tmpdir/name; path = its path */
+static void write_file(const char *name, const char *text, char *path,
+                       size_t size)
+{
+  FILE *fp;
+  snprintf(path, size, "%s/%s", tmpdir, name);
+  if (!(fp = fopen(path, "w")) || fputs(text, fp) < 0 || fclose(fp)) {
+    fprintf(stderr, "test_scene: cannot write %s\n", path);
+    exit(1);
+  }
+  if (nmade < 128) snprintf(made[nmade++], sizeof made[0], "%s", path);
+}
+
+/* out = base with its first `old` replaced by `with`; 0 if old not found */
+static int edit(char *out, size_t size, const char *old, const char *with)
+{
+  const char *at = strstr(base, old);
+  if (!at) return 0;
+  snprintf(out, size, "%.*s%s%s", (int)(at - base), base, with,
+           at + strlen(old));
+  return 1;
+}
+
+/* load path with the overrides; expect status 2 and a message holding
+   the path, key and word */
+static void expect(const char *what, const char *path, int nov,
+                   char *const *ov, const char *key, const char *word)
+{
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc = scene_load(&s, path, nov, ov, &st);
+  check(rc == STATUS_INPUT && st.code == STATUS_INPUT && !s.alpha0
+        && strstr(st.msg, path) && strstr(st.msg, key)
+        && strstr(st.msg, word) && !strchr(st.msg, '\n'),
+        "%s: %s", what, st.msg);
+  scene_free(&s);
+}
+
+/* the base scene edited, then loaded: expect an error */
+static void expect_edit(const char *what, const char *old, const char *with,
+                        const char *key, const char *word)
+{
+  char text[4096], path[256], name[64];
+  if (!edit(text, sizeof text, old, with)) {
+    check(0, "%s: the edit does not apply to the base scene", what);
+    return;
+  }
+  snprintf(name, sizeof name, "bad%02d.scene", nmade);
+  write_file(name, text, path, sizeof path);
+  expect(what, path, 0, NULL, key, word);
+}
+
+/* Example 5.1's arc R1 - sqrt(R1^2 - (x1 - 4)^2) by the obvious formula,
+   which loses four digits to cancellation (the module does not): good to
+   1e-13.  Exact values, from 40-digit decimal arithmetic: 0.05 at x1 = 0
+   (R1^2 - 16 = 159.975^2), 0.01249853527068868192... at x1 = 2. */
+static double arc(double R1, double x1)
+{
+  return R1 - sqrt(R1 * R1 - (x1 - 4) * (x1 - 4));
+}
+static const double alpha_at_2 = 0.01249853527068868192;
+
+/* Example 5.1 and its values */
+static void test_example_5_1(void)
+{
+  const double R1 = 160.025;
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc = scene_load(&s, "data/example-5.1.scene", 0, NULL, &st), i, mono = 1;
+  if (!check(rc == 0, "example 5.1 loads: %s", st.msg)) return;
+  check(s.a == 0 && s.b == 4 && s.gamma == 1, "5.1: a = 0, b = 4, gamma = 1");
+  check(s.N == 16 && s.C0 == 0.05 && s.C1 == 0.025 && s.C2 == 3.91,
+        "5.1: N = 16, C0 = 0.05, C1 = 0.025, C2 = 3.91");
+  check(s.M == 1 && s.R == 3 && s.C0prime == 0.25, "5.1: M = 1, R = 3, C0' = 0.25");
+  check(s.E == 2.15e11 && s.nu == 0.29 && s.model == MODEL_PLANE_STRESS,
+        "5.1: E = 2.15e11, nu = 0.29, plane stress");
+  check(s.side[SIDE_LEFT].kind == BC_CLAMPED
+        && s.side[SIDE_RIGHT].kind == BC_ROLLER, "5.1: left clamped, right roller");
+  check(s.side[SIDE_TOP].kind == BC_TRACTION && s.side[SIDE_TOP].from == 2
+        && s.side[SIDE_TOP].to == 4 && s.side[SIDE_TOP].P[0] == 0
+        && s.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
+  check(s.F[0] == 0 && s.F[1] == 0 && !s.has_body_force, "5.1: F = 0");
+  check(s.state == STATE_PDAS && s.tol == 1e-10 && s.max_iter == 100
+        && s.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
+  check(strcmp(s.initial, "arc") == 0, "5.1: initial = arc");
+  check(fabs(s.alpha0[0] - arc(R1, 0)) < 1e-13,
+        "5.1: alpha0(0) = R1 - sqrt(R1^2 - 16) = %.17g", s.alpha0[0]);
+  check(fabs(s.alpha0[0] - 0.05) < 1e-16, "5.1: alpha0(0) = C0 = 0.05 to 1e-16");
+  check(fabs(s.alpha0[8] - arc(R1, 2)) < 1e-13
+        && fabs(s.alpha0[8] - alpha_at_2) < 1e-16,
+        "5.1: alpha0(2) = R1 - sqrt(R1^2 - 4) = %.17g", s.alpha0[8]);
+  check(s.alpha0[16] == 0, "5.1: alpha0(4) = 0 exactly");
+  for (i = 0; i < 16; i++) mono &= s.alpha0[i + 1] < s.alpha0[i];
+  check(mono, "5.1: alpha0 decreases from x1 = 0 to 4");
+  scene_free(&s);
+  scene_free(&s);
+  check(s.alpha0 == NULL, "scene_free twice is harmless");
+}
+
+/* Example 5.2 (alpha0 = 0.0125 x1) and its flat variant */
+static void test_example_5_2(void)
+{
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int i, ok = 1;
+  if (check(scene_load(&s, "data/example-5.2.scene", 0, NULL, &st) == 0,
+            "example 5.2 loads: %s", st.msg)) {
+    for (i = 0; i <= 16; i++) ok &= fabs(s.alpha0[i] - 0.0125 * (i * 0.25)) < 1e-16;
+    check(ok && s.alpha0[16] == 0.05, "5.2: alpha0 = 0.0125 x1 at the 17 nodes");
+    check(s.C2 == 3.91 && s.side[SIDE_TOP].P[1] == -5.75e8, "5.2: the rest as 5.1");
+    scene_free(&s);
+  }
+  if (check(scene_load(&s, "data/example-5.2-flat.scene", 0, NULL, &st) == 0,
+            "example 5.2 flat loads: %s", st.msg)) {
+    for (ok = 1, i = 0; i <= 16; i++) ok &= s.alpha0[i] == 0.05;
+    check(ok && strcmp(s.initial, "constant") == 0, "5.2 flat: alpha0 = 0.05");
+    scene_free(&s);
+  }
+}
+
+/* -s overrides: M, N (re-sampling), a default that depends on a key */
+static void test_overrides(void)
+{
+  const double R1 = 160.025;
+  char *m4[] = {"mesh.M=4"}, *n64[] = {"design.N=64"};
+  char *psor[] = {" solver.state = psor ", "body_force.F2=-7.8e4"};
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, m4, &st) == 0
+            && s.M == 4 && s.R == 3 && s.N == 16, "-s mesh.M=4 sets M = 4"))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, n64, &st) == 0
+            && s.N == 64, "-s design.N=64 sets N = 64")) {
+    check(s.alpha0[64] == 0
+          && fabs(s.alpha0[32] - alpha_at_2) < 1e-16
+          && fabs(s.alpha0[0] - arc(R1, 0)) < 1e-13,
+          "N = 64 re-samples the arc on 65 nodes");
+    scene_free(&s);
+  }
+  if (check(scene_load(&s, "data/example-5.1.scene", 2, psor, &st) == 0,
+            "-s with blanks around the names: %s", st.msg)) {
+    check(s.state == STATE_PSOR && s.max_iter == 100000,
+          "psor: the default max_iter is 100000");
+    check(s.has_body_force && s.F[1] == -7.8e4, "a body force sets has_body_force");
+    scene_free(&s);
+  }
+}
+
+/* initial = file: comments, blank lines, two columns, relative path */
+static void test_shape_file(void)
+{
+  char text[2048], path[256], scene[256];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int i, ok = 1, n = snprintf(text, sizeof text, "# x1 alpha\n\n");
+  for (i = 0; i <= 16; i++)
+    n += snprintf(text + n, sizeof text - (size_t)n, "%g %g # node %d\n",
+                  i * 0.25, 0.001 * i, i);
+  write_file("shape.dat", text, path, sizeof path);
+  edit(text, sizeof text, "initial = line\nline_start = 0\nline_end = 0.05\n",
+       "initial = file\nfile = shape.dat\n");
+  write_file("file.scene", text, scene, sizeof scene);
+  if (check(scene_load(&s, scene, 0, NULL, &st) == 0,
+            "initial = file loads relative to the scene: %s", st.msg)) {
+    for (i = 0; i <= 16; i++) ok &= fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
+    check(ok, "initial = file: the last column is alpha0");
+    scene_free(&s);
+  }
+}
+
+/* the errors of the file's syntax and names */
+static void test_syntax_errors(void)
+{
+  char text[4096], path[256], line[300];
+  memset(line, 'x', sizeof line);
+  memcpy(line, "\n; ", 3);
+  line[sizeof line - 2] = '\n';
+  line[sizeof line - 1] = '\0';
+  edit(text, sizeof text, "\nP2 = -5.75e8\n", "\nP2 = -5.75e8\noops\n");
+  write_file("syntax.scene", text, path, sizeof path);
+  expect("syntax error", path, 0, NULL, "line 29", "syntax error");
+  edit(text, sizeof text, "\nR = 3\n", line);
+  write_file("long.scene", text, path, sizeof path);
+  expect("overlong line", path, 0, NULL, "line 15", "longer than");
+  expect_edit("continuation line", "\nb = 4\n", "\nb = 4\n  gamma = 1\n",
+              "geometry.b", "indented");
+  expect_edit("key before any section", "[geometry]\n", "x = 1\n[geometry]\n",
+              "x = 1", "before any [section]");
+  expect_edit("unknown section", "\n[mesh]\n", "\n[foo]\nx = 1\n[mesh]\n",
+              "[foo]", "unknown section");
+  expect_edit("unknown key", "\n[mesh]\n", "\n[mesh]\nQ = 1\n", "mesh.Q",
+              "unknown key");
+  expect_edit("duplicate key", "\nM = 1\n", "\nM = 1\nM = 2\n", "mesh.M",
+              "duplicate");
+  expect_edit("missing required key", "\nR = 3\n", "\n", "mesh.R", "missing");
+}
+
+/* malformed numbers and integers */
+static void test_number_errors(void)
+{
+  expect_edit("malformed number 1e", "\nE = 2.15e11\n", "\nE = 1e\n",
+              "material.E", "not a number");
+  expect_edit("malformed number 0.3x", "\nnu = 0.29\n", "\nnu = 0.3x\n",
+              "material.nu", "not a number");
+  expect_edit("malformed number nan", "\nC0 = 0.05\n", "\nC0 = nan\n",
+              "design.C0", "not a finite number");
+  expect_edit("number out of range", "\ngamma = 1\n", "\ngamma = 1e999\n",
+              "geometry.gamma", "out of the range");
+  expect_edit("empty value", "\na = 0\n", "\na =\n", "geometry.a", "empty");
+  expect_edit("# after a value", "\nb = 4\n", "\nb = 4 # four\n",
+              "geometry.b", "not '#'");
+  expect_edit("non-integer N", "\nN = 16\n", "\nN = 16.5\n", "design.N",
+              "not an integer");
+  expect_edit("non-integer M", "\nM = 1\n", "\nM = 1.0\n", "mesh.M",
+              "not an integer");
+  expect_edit("non-integer R", "\nR = 3\n", "\nR = 3e0\n", "mesh.R",
+              "not an integer");
+  expect_edit("non-integer max_iter", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[solver]\nmax_iter = 1e5\n", "solver.max_iter",
+              "not an integer");
+  expect_edit("integer out of range", "\nN = 16\n", "\nN = 99999999999\n",
+              "design.N", "out of the range of an int");
+}
+
+/* values out of their range */
+static void test_range_errors(void)
+{
+  expect_edit("E <= 0", "\nE = 2.15e11\n", "\nE = 0\n", "material.E", "> 0");
+  expect_edit("nu >= 0.5", "\nnu = 0.29\n", "\nnu = 0.5\n", "material.nu",
+              "incompressible");
+  expect_edit("nu <= -1", "\nnu = 0.29\n", "\nnu = -1\n", "material.nu",
+              "> -1");
+  expect_edit("N < 1", "\nN = 16\n", "\nN = 0\n", "design.N", ">= 1");
+  expect_edit("M < 1", "\nM = 1\n", "\nM = 0\n", "mesh.M", ">= 1");
+  expect_edit("R < 1", "\nR = 3\n", "\nR = 0\n", "mesh.R", ">= 1");
+  expect_edit("b <= a", "\nb = 4\n", "\nb = 0\n", "geometry.b", "exceed");
+  expect_edit("C0 <= 0", "\nC0 = 0.05\n", "\nC0 = 0\n", "design.C0", "> 0");
+  expect_edit("C1 < 0", "\nC1 = 0.025\n", "\nC1 = -0.1\n", "design.C1", ">= 0");
+  expect_edit("C2 <= 0", "\nC2 = 3.91\n", "\nC2 = 0\n", "design.C2", "> 0");
+  expect_edit("C0prime <= C0", "\nC0prime = 0.25\n", "\nC0prime = 0.05\n",
+              "mesh.C0prime", "exceed design.C0");
+  expect_edit("gamma <= C0prime", "\ngamma = 1\n", "\ngamma = 0.25\n",
+              "geometry.gamma", "exceed mesh.C0prime");
+  expect_edit("empty admissible set", "\nC2 = 3.91\n", "\nC2 = 3.7\n",
+              "design.C2", "admit no shape");
+  expect_edit("solver.tol out of (0, 1)", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[solver]\ntol = 1\n", "solver.tol", "(0, 1)");
+  expect_edit("solver.omega out of (0, 2)", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[solver]\nomega = 2\n", "solver.omega", "(0, 2)");
+  expect_edit("solver.max_iter < 1", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[solver]\nmax_iter = 0\n", "solver.max_iter",
+              ">= 1");
+}
+
+/* the initial shape */
+static void test_initial_errors(void)
+{
+  const char *line = "initial = line\nline_start = 0\nline_end = 0.05\n";
+  char path[256];
+  expect_edit("initial shape outside [0, C0prime)", "\nline_end = 0.05\n",
+              "\nline_end = 0.26\n", "design.initial", "node 16 (x1 = 4)");
+  expect_edit("key of another initial", "\nline_end = 0.05\n",
+              "\nline_end = 0.05\narc_radius = 1\n", "design.arc_radius",
+              "no effect with initial = line");
+  expect_edit("unknown initial", "\ninitial = line\n", "\ninitial = spline\n",
+              "design.initial", "accepted: arc, line, constant, file");
+  expect_edit("arc that does not reach a node", line,
+              "initial = arc\narc_x1 = 4\narc_x2 = 1\narc_radius = 1\n",
+              "design.arc_radius", "does not reach node 0");
+  expect_edit("arc radius <= 0", line,
+              "initial = arc\narc_x1 = 4\narc_x2 = 1\narc_radius = 0\n",
+              "design.arc_radius", "> 0");
+  expect_edit("shape file missing", line, "initial = file\nfile = none.dat\n",
+              "design.file", "cannot read");
+  write_file("short.dat", "0 0\n1 0.01\n", path, sizeof path);
+  expect_edit("shape file with wrong rows", line,
+              "initial = file\nfile = short.dat\n", "design.file",
+              "short.dat has 2 rows of values, expected N + 1 = 17");
+  write_file("nonnum.dat", "0 0\n1 abc\n", path, sizeof path);
+  expect_edit("shape file with a non-number", line,
+              "initial = file\nfile = nonnum.dat\n", "design.file",
+              "nonnum.dat line 2: 'abc' is not a number");
+}
+
+/* the sides, the contact, the solver */
+static void test_condition_errors(void)
+{
+  expect_edit("no side holds u1", "[left]\nbc = clamped\n[right]\nbc = roller\n",
+              "[left]\nbc = free\n[right]\nbc = free\n", "top.bc = traction",
+              "no side holds u1");
+  expect_edit("traction outside the top", "\nfrom = 2\n", "\nfrom = -1\n",
+              "top.from", "must lie in the top side");
+  expect_edit("traction below C0prime on the left", "[left]\nbc = clamped\n",
+              "[left]\nbc = traction\nfrom = 0.1\nto = 1\nP1 = 1\n",
+              "left.from", "never moves");
+  expect_edit("traction from >= to", "\nto = 4\n", "\nto = 2\n", "top.to",
+              "must exceed top.from");
+  expect_edit("traction zero", "\nP2 = -5.75e8\n", "\nP2 = 0\n", "top.bc",
+              "zero: use bc = free");
+  expect_edit("traction key on a roller", "\nbc = roller\n",
+              "\nbc = roller\nP1 = 3\n", "right.P1", "no effect with bc = roller");
+  expect_edit("unknown bc", "\nbc = roller\n", "\nbc = rolling\n", "right.bc",
+              "accepted: free, clamped, roller, traction");
+  expect_edit("unknown material model", "\nnu = 0.29\n",
+              "\nnu = 0.29\nmodel = axisymmetric\n", "material.model",
+              "accepted: plane_stress, plane_strain");
+  expect_edit("unknown solver state", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[solver]\nstate = gauss\n", "solver.state",
+              "accepted: pdas, psor, cgssor");
+  expect_edit("contact with friction", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\n", "contact.model",
+              "only frictionless contact is implemented");
+}
+
+/* a scene path longer than Scene.path: the message names its start */
+static void test_long_path(void)
+{
+  char path[600];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc;
+  memset(path, 'd', sizeof path);
+  memcpy(path + sizeof path - 7, ".scene", 7);
+  rc = scene_load(&s, path, 0, NULL, &st);
+  check(rc == STATUS_INPUT && !s.alpha0 && strstr(st.msg, "dddd...: ")
+        && strstr(st.msg, "scene path longer than 511"),
+        "scene path too long: %s", st.msg);
+}
+
+/* the file itself, and the overrides */
+static void test_file_and_override_errors(void)
+{
+  const char *ex = "data/example-5.1.scene";
+  char path[256], big[400];
+  char *nu[] = {"material.nu=0.7"}, *nodot[] = {"meshM=4"};
+  char *noeq[] = {"mesh.M"}, *unknown[] = {"mesh.Q=1"}, *longv[] = {big};
+  Scene s;
+  snprintf(path, sizeof path, "%s/none.scene", tmpdir);
+  expect("missing scene file", path, 0, NULL, "cannot read", "No such file");
+  expect("unreadable scene file (a directory)", tmpdir, 0, NULL,
+         "cannot read", "directory");
+  expect("value error from an override", ex, 1, nu,
+         "(-s material.nu=0.7): material.nu = 0.7", "incompressible");
+  expect("malformed override without '.'", ex, 1, nodot, "(-s meshM=4)",
+         "malformed override");
+  expect("malformed override without '='", ex, 1, noeq, "(-s mesh.M)",
+         "malformed override");
+  expect("unknown key in an override", ex, 1, unknown, "(-s mesh.Q=1)",
+         "unknown key");
+  memset(big, 'x', sizeof big);
+  memcpy(big, "design.file=", 12);
+  big[sizeof big - 1] = '\0';
+  expect("override value too long", ex, 1, longv, "design.file",
+         "longer than 255");
+  check(scene_load(&s, path, 0, NULL, NULL) == STATUS_INPUT && !s.alpha0,
+        "a NULL status still fails with 2");
+  test_long_path();
+}
+
+static void test_names(void)
+{
+  check(strcmp(scene_bc_name(BC_ROLLER), "roller") == 0
+        && strcmp(scene_state_name(STATE_CGSSOR), "cgssor") == 0
+        && strcmp(scene_model_name(MODEL_PLANE_STRAIN), "plane_strain") == 0
+        && strcmp(scene_bc_name((Bc_kind)9), "?") == 0,
+        "names of conditions, methods, models, and '?' out of range");
+}
+
+int main(void)
+{
+  int i;
+  if (!mkdtemp(tmpdir)) {
+    perror("test_scene: mkdtemp");
+    return 1;
+  }
+  test_example_5_1();
+  test_example_5_2();
+  test_overrides();
+  test_shape_file();
+  test_syntax_errors();
+  test_number_errors();
+  test_range_errors();
+  test_initial_errors();
+  test_condition_errors();
+  test_file_and_override_errors();
+  test_names();
+  for (i = 0; i < nmade; i++) unlink(made[i]);
+  rmdir(tmpdir);
+  return check_done();
+}
