@@ -4,11 +4,11 @@
 
 # The parts of the paper, in the order of the argument (the driver first).
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
-      paper/state.nw paper/model.nw paper/output.nw paper/main.nw \
+      paper/state.nw paper/model.nw paper/sensitivity.nw paper/output.nw paper/main.nw \
       paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
-MODULES := status scene mesh fem state model output
+MODULES := status scene mesh fem state model sensitivity output
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c
 OBJ     := $(MODULES:%=build/%.o)
 
@@ -25,7 +25,7 @@ endif
 
 # Debian packages the package needs, and the command that proves each one.
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
-            libsuitesparse-dev pkg-config texlive-latex-base \
+            libsuitesparse-dev libopenblas0-pthread pkg-config lmodern texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
 .PHONY: all deps tangle tangle-check paper figures check bench clean

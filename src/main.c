@@ -1,4 +1,5 @@
 #line 10 "paper/main.nw"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,14 +8,16 @@
 #include "scene.h"
 #include "model.h"
 #include "output.h"
+#include "sensitivity.h"
 
-#line 25 "paper/main.nw"
+#line 27 "paper/main.nw"
 static const char *usage_main =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
   "(Haslinger & Neittaanmaki, M2AN 21, 1987).\n\n"
   "commands:\n"
-  "  solve     solve the contact state at the scene's initial shape\n\n"
+  "  solve     solve the contact state at the scene's initial shape\n"
+  "  gradcheck compare the gradient (4.8) with finite differences of E\n\n"
   "'contactopt COMMAND --help' explains the options of a command.\n";
 
 static const char *usage_solve =
@@ -33,17 +36,29 @@ static const char *usage_solve =
   "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat,\n"
   "nodes.dat, triangles.dat and solution.vtu (ParaView).\n"
   "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write.\n";
-#line 52 "paper/main.nw"
+
+static const char *usage_gradcheck =
+  "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
+  "Compare the gradient of E by formula (4.8) at the scene's initial design\n"
+  "with finite differences of E at the steps C0 * 1e-2 .. 1e-6: central\n"
+  "differences, or second-order one-sided ones at a node on the foundation\n"
+  "(alpha_i = 0).  Prints the largest relative error |G - G_fd| / max|G|.\n\n"
+  "  -o DIR                output folder (default: out/NAME-gradcheck)\n"
+  "  -s section.key=value  override a key of the scene (repeatable)\n"
+  "  -h, --help            this text\n\n"
+  "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
+  "difference, relative error) and summary.dat (max_relative_error, ...).\n";
+#line 67 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
-  const char *command;                 /* "solve" */
+  const char *command;                 /* "solve", "gradcheck" */
   const char *scene;                   /* the scene file */
   const char *outdir;                  /* -o, or NULL for out/NAME */
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
-#line 64 "paper/main.nw"
+#line 79 "paper/main.nw"
 static int args_read(int argc, char **argv, Args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -66,16 +81,18 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 90 "paper/main.nw"
-static void default_outdir(const char *scene, char *dir, size_t size)
+#line 106 "paper/main.nw"
+static void output_dir(const Args *a, const char *suffix, char *dir,
+                       size_t size)
 {
-  const char *base = strrchr(scene, '/');
-  base = base ? base + 1 : scene;
+  if (a->outdir) { snprintf(dir, size, "%s", a->outdir); return; }
+  const char *base = strrchr(a->scene, '/');
+  base = base ? base + 1 : a->scene;
   size_t len = strlen(base);
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
-  snprintf(dir, size, "out/%.*s", (int) len, base);
+  snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 107 "paper/main.nw"
+#line 125 "paper/main.nw"
 static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
 {
   FILE *f = output_open(o, "summary.dat", st);
@@ -91,7 +108,7 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
           md->seconds);
   return output_close(o, f, st);
 }
-#line 126 "paper/main.nw"
+#line 144 "paper/main.nw"
 static int write_matrix_market(const char *path, cholmod_sparse *A,
                                cholmod_common *cm, Status *st)
 {
@@ -107,14 +124,13 @@ static int write_matrix_market(const char *path, cholmod_sparse *A,
   }
   return STATUS_OK;
 }
-#line 144 "paper/main.nw"
+#line 162 "paper/main.nw"
 static int solve_write(const Args *a, const Scene *s, Model *md,
                        cholmod_common *cm, Status *st)
 {
   char dir[1024];
   Output o;
-  if (a->outdir) snprintf(dir, sizeof dir, "%s", a->outdir);
-  else default_outdir(a->scene, dir, sizeof dir);
+  output_dir(a, "", dir, sizeof dir);
   int rc = output_begin(&o, dir, st);
   if (rc) return rc;
   if ((rc = output_state(&o, "", md, s->alpha0, st))
@@ -147,7 +163,136 @@ static int command_solve(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 188 "paper/main.nw"
+#line 216 "paper/main.nw"
+static int energy_at(Model *md, const double *X, double *E, Status *st)
+{
+  int rc = model_solve(md, X, st);
+  *E = md->energy;
+  return rc;
+}
+
+static int finite_difference(Model *md, double *X, int i, double s,
+                             double *fd, Status *st)
+{
+  double x0 = X[i], E1, E2, E0;
+  int rc, central = x0 - s >= 0;
+  X[i] = central ? x0 - s : x0;
+  if (!(rc = energy_at(md, X, &E0, st))) {
+    X[i] = x0 + s;
+    if (!(rc = energy_at(md, X, &E1, st)) && !central) {
+      X[i] = x0 + 2 * s;
+      rc = energy_at(md, X, &E2, st);
+    }
+  }
+  X[i] = x0;
+  if (!rc) *fd = central ? (E1 - E0) / (2 * s) : (-3 * E0 + 4 * E1 - E2) / (2 * s);
+  return rc;
+}
+#line 243 "paper/main.nw"
+static int best_differences(Model *md, const Scene *s, const double *G,
+                            double *best, double *err, Status *st)
+{
+  int n = s->N + 1, rc = STATUS_OK;
+  double Gmax = 0, *X = malloc(n * sizeof *X);
+  if (!X) return status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
+  memcpy(X, s->alpha0, n * sizeof *X);
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(G[i]));
+  for (int i = 0; i < n && !rc; i++) {
+    err[i] = INFINITY;
+    for (double step = 1e-2; step >= 1e-6 * 0.999 && !rc; step /= 10) {
+      double fd;
+      if ((rc = finite_difference(md, X, i, step * s->C0, &fd, st))) break;
+      double e = fabs(fd - G[i]) / (Gmax > 0 ? Gmax : 1);
+      if (e < err[i]) { err[i] = e; best[i] = fd; }
+    }
+  }
+  free(X);
+  return rc;
+}
+#line 266 "paper/main.nw"
+static int write_gradient(Output *o, const Model *md, const double *G,
+                          const double *best, const double *err, Status *st)
+{
+  FILE *f = output_open(o, "gradient.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# i x1[m] dE/dX_i[J/m^2] finite_difference[J/m^2] relative_error\n");
+  for (int i = 0; i < md->mesh->ncol; i++)
+    fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i], G[i],
+            best[i], err[i]);
+  return output_close(o, f, st);
+}
+
+static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
+                           const double *G, const double *best,
+                           const double *err, Status *st)
+{
+  char dir[1024];
+  Output o;
+  int worst = 0, rc;
+  for (int i = 1; i <= s->N; i++) if (err[i] > err[worst]) worst = i;
+  output_dir(a, "-gradcheck", dir, sizeof dir);
+  if ((rc = output_begin(&o, dir, st))) return rc;
+  FILE *f = output_open(&o, "summary.dat", st);
+  if (!f) { output_abort(&o); return st->code; }
+  fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
+             "max_relative_error %.3e\nworst_node %d\n", s->path,
+          scene_model_name(s->model), s->N, md->energy, err[worst], worst);
+  if ((rc = output_close(&o, f, st)) || (rc = write_gradient(&o, md, G, best, err, st))
+      || (rc = output_commit(&o, st))) {
+    output_abort(&o);
+    return rc;
+  }
+  printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
+         s->path, err[worst], worst, dir);
+  return STATUS_OK;
+}
+#line 306 "paper/main.nw"
+static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
+{
+  Scene s;
+  int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
+  if (rc) return rc;
+  Model *md = model_new(&s, cm, st);
+  double *G = malloc(3 * (s.N + 1) * sizeof *G);
+  if (!md) rc = st->code;
+  else if (!G) rc = status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
+  else if (!(rc = model_solve(md, s.alpha0, st)) && !(rc = grad_energy(md, G, st))) {
+    double *best = G + s.N + 1, *err = best + s.N + 1, E = md->energy;
+    if (!(rc = best_differences(md, &s, G, best, err, st))
+        && !(rc = model_solve(md, s.alpha0, st))) {
+      md->energy = E;
+      rc = gradcheck_write(a, &s, md, G, best, err, st);
+    }
+  }
+  free(G);
+  model_free(md);
+  scene_free(&s);
+  return rc;
+}
+#line 335 "paper/main.nw"
+typedef struct {
+  const char *name;
+  const char *usage;
+  int (*run)(const Args *a, cholmod_common *cm, Status *st);
+} Command;
+
+static const Command commands[] = {
+  { "solve", NULL, command_solve },
+  { "gradcheck", NULL, command_gradcheck },
+};
+
+static const Command *command_find(const char *name)
+{
+  for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)
+    if (!strcmp(commands[k].name, name)) return &commands[k];
+  return NULL;
+}
+
+static const char *command_usage(const Command *c)
+{
+  return !strcmp(c->name, "solve") ? usage_solve : usage_gradcheck;
+}
+
 static int wants_help(int argc, char **argv)
 {
   for (int k = 1; k < argc; k++)
@@ -159,20 +304,21 @@ int main(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
   Args a;
-  if (argc < 2 || (wants_help(argc, argv) && (argc == 2 || strcmp(argv[1], "solve")))) {
+  const Command *c = argc > 1 ? command_find(argv[1]) : NULL;
+  if (argc < 2 || (!c && wants_help(argc, argv))) {
     fputs(usage_main, argc < 2 ? stderr : stdout);
     return argc < 2 ? STATUS_INPUT : STATUS_OK;
   }
-  if (strcmp(argv[1], "solve")) {
+  if (!c) {
     fprintf(stderr, "contactopt: unknown command '%s' (try --help)\n", argv[1]);
     return STATUS_INPUT;
   }
-  if (wants_help(argc, argv)) { fputs(usage_solve, stdout); return STATUS_OK; }
+  if (wants_help(argc, argv)) { fputs(command_usage(c), stdout); return STATUS_OK; }
   cholmod_common cm;
   cholmod_start(&cm);
   cm.print = 0;             /* the library reports through Status, not stderr */
   int rc = args_read(argc, argv, &a, &st);
-  if (!rc) rc = command_solve(&a, &cm, &st);
+  if (!rc) rc = c->run(&a, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
   cholmod_finish(&cm);
   return rc;

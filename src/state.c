@@ -1,19 +1,20 @@
 #line 137 "paper/state.nw"
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "state.h"
-#line 368 "paper/state.nw"
-#include <limits.h>
-#line 789 "paper/state.nw"
+#line 804 "paper/state.nw"
+#define SINGULAR (-1)    /* newton_solve: K is singular (not a Status_code) */
+#line 943 "paper/state.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
-#line 942 "paper/state.nw"
+#line 1121 "paper/state.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 1162 "paper/state.nw"
+#line 1341 "paper/state.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-#line 251 "paper/state.nw"
+#line 254 "paper/state.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -29,24 +30,31 @@ struct Qp_workspace {
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   
-#line 680 "paper/state.nw"
+#line 713 "paper/state.nw"
 cholmod_sparse K;      /* the Newton matrix: A's pattern (borrowed),
                           own values, stype -1 */
-cholmod_factor *L;     /* its factor: symbolic from qp_alloc, numeric per step */
+cholmod_factor *Ls;    /* the symbolic analysis of K, from qp_alloc */
+cholmod_factor *L;     /* the factor of the Newton matrix of fac (LDL') */
+int *iperm;            /* n: the position of each unknown in L's order */
+cholmod_sparse *R;     /* n x 1: a column of K to add to L */
 cholmod_dense *rhs;    /* n x 1: the Newton right-hand side */
 cholmod_dense *sol, *Y, *E; /* the solution and cholmod_solve2's workspace */
-char *act;             /* nc: the active set of the current Newton step */
-#line 266 "paper/state.nw"
+char *act;             /* nc: the active set of the next Newton step */
+char *fac;             /* nc: the active set that L factorises */
+int fresh;             /* 1: the next step factorises from the analysis */
+int refactored;        /* 1: the last step did */
+int warm;              /* the first active set was guessed from x0 */
+#line 269 "paper/state.nw"
   
-#line 947 "paper/state.nw"
+#line 1126 "paper/state.nw"
 double *p;             /* n: the conjugate direction */
 double *q;             /* n: A p, or A beta in a proportioning step */
 double *z;             /* n: the preconditioned free gradient, or beta */
 double abar;           /* the expansion step length 1.9 / normA */
 int restart;           /* 1: p must restart from z (the face changed) */
-#line 267 "paper/state.nw"
+#line 270 "paper/state.nw"
 };
-#line 331 "paper/state.nw"
+#line 334 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st);
 static int check_options(const Qp_options *opt, Status *st);
@@ -63,23 +71,30 @@ static int mprgp_iterate(Qp_workspace *w, Status *st);
 #line 574 "paper/state.nw"
 static int not_converged(const Qp_workspace *w, Status *st);
 static int count_active(const Qp_workspace *w);
-#line 733 "paper/state.nw"
-static void fill_newton_matrix(Qp_workspace *w);
-static void fill_newton_rhs(Qp_workspace *w);
+#line 792 "paper/state.nw"
 static int newton_solve(Qp_workspace *w, Status *st);
+static int factorise(Qp_workspace *w, Status *st);
+static int modify_factor(Qp_workspace *w, Status *st);
+static int factor_is_regular(const Qp_workspace *w);
+static void fill_newton_rhs(Qp_workspace *w);
+static int predict_active_set(Qp_workspace *w);
 static int update_active_set(Qp_workspace *w, Status *st);
-#line 819 "paper/state.nw"
+#line 861 "paper/state.nw"
+static void fill_newton_matrix(Qp_workspace *w);
+#line 910 "paper/state.nw"
+static void fill_added_column(Qp_workspace *w, int j);
+#line 987 "paper/state.nw"
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active);
-#line 1031 "paper/state.nw"
+#line 1210 "paper/state.nw"
 static int proportional(const Qp_workspace *w);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int proportioning_step(Qp_workspace *w, Status *st);
-#line 1113 "paper/state.nw"
+#line 1292 "paper/state.nw"
 static double feasible_step(const Qp_workspace *w);
 static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
-#line 175 "paper/state.nw"
+#line 178 "paper/state.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static double ratio(double num, double den) { return num == 0 ? 0 : num / den; }
 
@@ -92,7 +107,7 @@ static double row_dot(const cholmod_sparse *A, int j, const double *x)
   for (int k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
   return s;
 }
-#line 194 "paper/state.nw"
+#line 197 "paper/state.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 static double kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -107,32 +122,32 @@ static double kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 217 "paper/state.nw"
+#line 220 "paper/state.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 208 "paper/state.nw"
+#line 211 "paper/state.nw"
       c++;
     } else
       rf += r * r;
   }
   
-#line 228 "paper/state.nw"
+#line 231 "paper/state.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(ratio(sqrt(rf), sf), ratio(sqrt(tn), sf)),
                 fmax(ratio(sqrt(inf), su), ratio(ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 213 "paper/state.nw"
+#line 216 "paper/state.nw"
 }
-#line 235 "paper/state.nw"
+#line 238 "paper/state.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return kkt_eval(qp, x, NULL, T);
 }
-#line 274 "paper/state.nw"
+#line 277 "paper/state.nw"
 /* unknown i is off its bound */
 static int is_free(const Qp_workspace *w, int i) { return w->x[i] > w->lo[i]; }
 
@@ -154,7 +169,7 @@ static void matvec(const cholmod_sparse *A, const double *x, double *y)
 {
   for (int j = 0; j < (int) A->ncol; j++) y[j] = row_dot(A, j, x);
 }
-#line 299 "paper/state.nw"
+#line 302 "paper/state.nw"
 /* g = A x - b, then kkt and T at x */
 static void refresh(Qp_workspace *w)
 {
@@ -162,7 +177,7 @@ static void refresh(Qp_workspace *w)
   for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
   w->kkt = kkt_eval(w->qp, w->x, w->g, w->T);
 }
-#line 313 "paper/state.nw"
+#line 316 "paper/state.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -178,7 +193,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 342 "paper/state.nw"
+#line 345 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -202,7 +217,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         (int) A->ncol);
   return check_options(opt, st);
 }
-#line 372 "paper/state.nw"
+#line 371 "paper/state.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != STATE_PDAS && opt->method != STATE_PSOR
@@ -217,7 +232,7 @@ static int check_options(const Qp_options *opt, Status *st)
                       opt->omega);
   return STATUS_OK;
 }
-#line 391 "paper/state.nw"
+#line 390 "paper/state.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
@@ -232,12 +247,13 @@ static int alloc_common(Qp_workspace *w, Status *st)
   for (int c = 0; c < w->nc; c++) w->bnd[w->qp->ic[c]] = c;
   return STATUS_OK;
 }
-#line 413 "paper/state.nw"
+#line 412 "paper/state.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
   const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
-  int *next = malloc(((size_t) w->n + 1) * sizeof *next), bad = !next;
+  int *next = malloc(((size_t) w->n + 1) * sizeof *next);
+  int oom = !next, bad = oom;
   for (int i = 0; !bad && i < w->n; i++) next[i] = Ap[i];
   for (int j = 0; !bad && j < w->n; j++)
     for (int k = Ap[j]; !bad && k < Ap[j + 1]; k++) {
@@ -246,23 +262,24 @@ static int check_pattern(Qp_workspace *w, Status *st)
     }
   for (int i = 0; !bad && i < w->n; i++) bad = next[i] != Ap[i + 1];
   free(next);
-  return !bad ? STATUS_OK : status_set(st, next ? STATUS_INPUT : STATUS_SYSTEM,
-    "qp_alloc: the pattern of A is not symmetric (both triangles must be "
-    "stored), or no memory to check it");
+  if (oom) return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory");
+  return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
+    "pattern of A is not symmetric (both triangles must be stored)");
 }
 #line 433 "paper/state.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
   
-#line 710 "paper/state.nw"
-free(w->K.x), free(w->act);
-cholmod_free_factor(&w->L, w->cm);
+#line 763 "paper/state.nw"
+free(w->K.x), free(w->act), free(w->fac), free(w->iperm);
+cholmod_free_factor(&w->Ls, w->cm), cholmod_free_factor(&w->L, w->cm);
+cholmod_free_sparse(&w->R, w->cm);
 cholmod_free_dense(&w->rhs, w->cm), cholmod_free_dense(&w->sol, w->cm);
 cholmod_free_dense(&w->Y, w->cm), cholmod_free_dense(&w->E, w->cm);
 #line 437 "paper/state.nw"
   
-#line 973 "paper/state.nw"
+#line 1152 "paper/state.nw"
 free(w->p), free(w->q), free(w->z);
 #line 438 "paper/state.nw"
   free(w->bnd), free(w->lo), free(w->d);
@@ -382,18 +399,19 @@ static int not_converged(const Qp_workspace *w, Status *st)
     "iteration%s (kkt = %.3g > tol = %.3g)%s", method_name(w->opt.method),
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, hint(w));
 }
-#line 645 "paper/state.nw"
-/* the first active set: all of I (cold) or where x0 touches (warm) */
+#line 658 "paper/state.nw"
+/* the first active set: all of I (cold), or the Newton rule's at x0 (warm) */
 static void pdas_set(Qp_workspace *w, int warm)
 {
-  for (int c = 0; c < w->nc; c++)
-    w->act[c] = warm ? !is_free(w, w->qp->ic[c]) : 1;
+  w->warm = warm, w->fresh = 1;
+  for (int c = 0; c < w->nc; c++) w->act[c] = 1;
+  if (warm) predict_active_set(w);
 }
 
-/* unknown i is bounded and in the active set */
-static int is_active(const Qp_workspace *w, int i)
+/* unknown i is bounded and active in the factorised Newton matrix */
+static int is_held(const Qp_workspace *w, int i)
 {
-  return w->bnd[i] >= 0 && w->act[w->bnd[i]];
+  return w->bnd[i] >= 0 && w->fac[w->bnd[i]];
 }
 
 /* the size of the active set */
@@ -403,36 +421,91 @@ static int count_act(const Qp_workspace *w)
   for (int c = 0; c < w->nc; c++) m += w->act[c];
   return m;
 }
-#line 689 "paper/state.nw"
+#line 729 "paper/state.nw"
 static int pdas_alloc(Qp_workspace *w, Status *st)
 {
   const cholmod_sparse *A = w->qp->A;
-  size_t nz = (size_t) ((const int *) A->p)[w->n];
+  const int *Ap = A->p;
+  size_t nz = (size_t) Ap[w->n], n = (size_t) w->n, maxcol = 1;
+  for (int j = 0; j < w->n; j++)
+    if ((size_t) (Ap[j + 1] - Ap[j]) > maxcol) maxcol = (size_t) (Ap[j + 1] - Ap[j]);
   w->K = *A;                 /* the header: p and i are shared with A */
   w->K.x = malloc((nz + 1) * sizeof(double));
   w->K.nzmax = nz, w->K.stype = -1;
-  w->act = malloc((size_t) w->nc + 1);
-  if (!w->K.x || !w->act)
+  w->act = malloc((size_t) w->nc + 1), w->fac = malloc((size_t) w->nc + 1);
+  w->iperm = malloc((n + 1) * sizeof *w->iperm);
+  if (!w->K.x || !w->act || !w->fac || !w->iperm)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas)");
   memcpy(w->K.x, A->x, nz * sizeof(double));
-  w->L = cholmod_analyze(&w->K, w->cm);
-  w->rhs = cholmod_allocate_dense(w->K.nrow, 1, w->K.nrow, CHOLMOD_REAL, w->cm);
-  if (!w->L || !w->rhs)
-    return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
-                      "analyse A (CHOLMOD status %d)", w->cm->status);
+  
+#line 751 "paper/state.nw"
+cholmod_common *cm = w->cm;
+w->Ls = cholmod_analyze(&w->K, cm);
+w->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
+w->R = cholmod_allocate_sparse(n, 1, maxcol, 0, 1, 0, CHOLMOD_REAL, cm);
+if (!w->Ls || !w->rhs || !w->R)
+  return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
+                    "analyse A (CHOLMOD status %d)", cm->status);
+const int *perm = w->Ls->Perm;
+for (int k = 0; k < w->n; k++) w->iperm[perm[k]] = k;
+#line 745 "paper/state.nw"
   return STATUS_OK;
 }
-#line 721 "paper/state.nw"
+#line 776 "paper/state.nw"
 static int pdas_step(Qp_workspace *w, Status *st)
 {
-  fill_newton_matrix(w);
-  fill_newton_rhs(w);
   int code = newton_solve(w, st);
+  if (code == SINGULAR && w->iter == 0 && w->warm) {
+    pdas_set(w, 0);              /* the warm guess holds nothing: go cold */
+    code = newton_solve(w, st);
+  }
+  if (code == SINGULAR)
+    return not_held(w, st, "the Newton matrix is singular", count_act(w));
   if (code) return code;
   refresh(w);
   return update_active_set(w, st);
 }
-#line 740 "paper/state.nw"
+#line 808 "paper/state.nw"
+/* x = K \ rhs for the active set act, x_i = lo_i exactly on it */
+static int newton_solve(Qp_workspace *w, Status *st)
+{
+  int code = w->fresh ? factorise(w, st) : modify_factor(w, st);
+  if (code) return code;
+  if (!factor_is_regular(w)) {
+    if (w->refactored) return SINGULAR;
+    w->fresh = 1;
+    return newton_solve(w, st);
+  }
+  fill_newton_rhs(w);
+  if (!cholmod_solve2(CHOLMOD_A, w->L, w->rhs, NULL, &w->sol, NULL,
+                      &w->Y, &w->E, w->cm))
+    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
+                      "(CHOLMOD status %d)", w->cm->status);
+  const double *s = w->sol->x;
+  for (int i = 0; i < w->n; i++) w->x[i] = is_held(w, i) ? w->lo[i] : s[i];
+  return STATUS_OK;
+}
+#line 839 "paper/state.nw"
+static int factorise(Qp_workspace *w, Status *st)
+{
+  cholmod_common *cm = w->cm;
+  int print = cm->print, ok;
+  memcpy(w->fac, w->act, (size_t) w->nc);
+  fill_newton_matrix(w);
+  cholmod_free_factor(&w->L, cm);
+  cm->print = 0;                  /* a singular K is our message to give */
+  w->L = cholmod_copy_factor(w->Ls, cm);
+  ok = w->L && cholmod_factorize(&w->K, w->L, cm) && cm->status >= CHOLMOD_OK;
+  if (ok && w->L->minor == w->L->n)
+    ok = cholmod_change_factor(CHOLMOD_REAL, 0, 0, 0, 0, w->L, cm);
+  cm->print = print;
+  if (!ok)
+    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to factorise "
+                      "(CHOLMOD status %d)", cm->status);
+  w->fresh = 0, w->refactored = 1;
+  return STATUS_OK;
+}
+#line 865 "paper/state.nw"
 /* K = A, with the row and column of each active unknown reduced to A_ii */
 static void fill_newton_matrix(Qp_workspace *w)
 {
@@ -442,10 +515,57 @@ static void fill_newton_matrix(Qp_workspace *w)
   for (int j = 0; j < w->n; j++)
     for (int k = Ap[j]; k < Ap[j + 1]; k++) {
       int i = Ai[k];
-      Kx[k] = i != j && (is_active(w, i) || is_active(w, j)) ? 0 : Ax[k];
+      Kx[k] = i != j && (is_held(w, i) || is_held(w, j)) ? 0 : Ax[k];
     }
 }
-#line 757 "paper/state.nw"
+#line 887 "paper/state.nw"
+/* L: from the Newton matrix of fac to that of act, row by row */
+static int modify_factor(Qp_workspace *w, Status *st)
+{
+  int ok = 1, print = w->cm->print;
+  w->cm->print = 0;               /* as in factorise */
+  for (int c = 0; ok && c < w->nc; c++)
+    if (w->act[c] && !w->fac[c]) {
+      ok = cholmod_rowdel((size_t) w->iperm[w->qp->ic[c]], NULL, w->L, w->cm);
+      w->fac[c] = 1;
+    }
+  for (int c = 0; ok && c < w->nc; c++)
+    if (!w->act[c] && w->fac[c]) {
+      w->fac[c] = 0;
+      fill_added_column(w, w->qp->ic[c]);
+      ok = cholmod_rowadd((size_t) w->iperm[w->qp->ic[c]], w->R, w->L, w->cm);
+    }
+  w->cm->print = print, w->refactored = 0;
+  return ok ? STATUS_OK : status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD "
+    "failed to modify the factor (CHOLMOD status %d)", w->cm->status);
+}
+#line 914 "paper/state.nw"
+/* R = column j of A in the rows not held, in the factor's order */
+static void fill_added_column(Qp_workspace *w, int j)
+{
+  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
+  const double *Ax = w->qp->A->x;
+  int *Rp = w->R->p, *Ri = w->R->i, m = 0;
+  double *Rx = w->R->x;
+  for (int k = Ap[j]; k < Ap[j + 1]; k++)
+    if (!is_held(w, Ai[k])) Ri[m] = w->iperm[Ai[k]], Rx[m++] = Ax[k];
+  Rp[0] = 0, Rp[1] = m;
+}
+#line 947 "paper/state.nw"
+/* the pivots of the unknowns not held are positive and within 1/RCOND_MIN */
+static int factor_is_regular(const Qp_workspace *w)
+{
+  const cholmod_factor *L = w->L;
+  const int *Lp = L->p, *perm = L->Perm;
+  const double *Lx = L->x;
+  double dmin = INFINITY, dmax = 0;
+  if (L->minor < L->n) return 0;
+  for (int k = 0; k < w->n; k++)
+    if (!is_held(w, perm[k]))
+      dmin = fmin(dmin, Lx[Lp[k]]), dmax = fmax(dmax, Lx[Lp[k]]);
+  return dmax == 0 || (dmin > 0 && dmin >= PDAS_RCOND_MIN * dmax);
+}
+#line 969 "paper/state.nw"
 /* rhs = b - A(:,act) lo(act) off the active set, A_ii lo_i on it */
 static void fill_newton_rhs(Qp_workspace *w)
 {
@@ -455,35 +575,13 @@ static void fill_newton_rhs(Qp_workspace *w)
   memcpy(r, w->qp->b, (size_t) w->n * sizeof *r);
   for (int c = 0; c < w->nc; c++) {
     int j = w->qp->ic[c];
-    if (!w->act[c]) continue;
+    if (!w->fac[c]) continue;
     for (int k = Ap[j]; k < Ap[j + 1]; k++)
-      if (!is_active(w, Ai[k])) r[Ai[k]] -= Ax[k] * w->qp->lo[c];
+      if (!is_held(w, Ai[k])) r[Ai[k]] -= Ax[k] * w->qp->lo[c];
     r[j] = w->d[j] * w->qp->lo[c];
   }
 }
-#line 793 "paper/state.nw"
-/* x = K \ rhs, with x_i = lo_i exactly on the active set */
-static int newton_solve(Qp_workspace *w, Status *st)
-{
-  cholmod_common *cm = w->cm;
-  int print = cm->print, ok;
-  cm->print = 0;                  /* a singular K is our message to give */
-  ok = cholmod_factorize(&w->K, w->L, cm);
-  cm->print = print;
-  if (!ok || cm->status < CHOLMOD_OK)
-    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to factorise "
-                      "(CHOLMOD status %d)", cm->status);
-  if (w->L->minor < w->L->n || cholmod_rcond(w->L, cm) < PDAS_RCOND_MIN)
-    return not_held(w, st, "the Newton matrix is singular", count_act(w));
-  if (!cholmod_solve2(CHOLMOD_A, w->L, w->rhs, NULL, &w->sol, NULL,
-                      &w->Y, &w->E, cm))
-    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
-                      "(CHOLMOD status %d)", cm->status);
-  const double *s = w->sol->x;
-  for (int i = 0; i < w->n; i++) w->x[i] = is_active(w, i) ? w->lo[i] : s[i];
-  return STATUS_OK;
-}
-#line 824 "paper/state.nw"
+#line 992 "paper/state.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active)
@@ -493,10 +591,9 @@ static int not_held(const Qp_workspace *w, Status *st, const char *why,
     "bounds active, at iteration %d", method_name(w->opt.method), why,
     active, w->nc, w->iter + 1);
 }
-#line 843 "paper/state.nw"
-/* A+ = { c : T_c + A_ii (lo_c - x_i) > 0 }; a repeated set that does not
-   meet tol is a failure */
-static int update_active_set(Qp_workspace *w, Status *st)
+#line 1016 "paper/state.nw"
+/* act = { c : T_c + A_ii (lo_c - x_i) > 0 }; 1 if it did not change */
+static int predict_active_set(Qp_workspace *w)
 {
   int same = 1;
   for (int c = 0; c < w->nc; c++) {
@@ -505,13 +602,20 @@ static int update_active_set(Qp_workspace *w, Status *st)
     same &= a == w->act[c];
     w->act[c] = a;
   }
-  if (same && w->kkt > w->opt.tol)
-    return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
-      "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
-      "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
-  return STATUS_OK;
+  return same;
 }
-#line 880 "paper/state.nw"
+
+/* the next active set; a repeated set that does not meet tol is a failure */
+static int update_active_set(Qp_workspace *w, Status *st)
+{
+  int same = predict_active_set(w);
+  if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
+  if (!w->refactored) { w->fresh = 1; return STATUS_OK; }
+  return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
+    "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
+    "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
+}
+#line 1059 "paper/state.nw"
 /* one projected SOR sweep over all unknowns, then the residual */
 static int psor_sweep(Qp_workspace *w, Status *st)
 {
@@ -523,7 +627,7 @@ static int psor_sweep(Qp_workspace *w, Status *st)
   (void) st;      /* a sweep cannot fail; NaN is caught by qp_iterate */
   return STATUS_OK;
 }
-#line 955 "paper/state.nw"
+#line 1134 "paper/state.nw"
 static int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1;
@@ -539,7 +643,7 @@ static void mprgp_set(Qp_workspace *w)
   w->abar = MPRGP_ABAR / w->normA;
   w->restart = 1;
 }
-#line 990 "paper/state.nw"
+#line 1169 "paper/state.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -558,7 +662,7 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 1019 "paper/state.nw"
+#line 1198 "paper/state.nw"
 static int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   int code = proportional(w) ? cg_or_expansion_step(w, st)
@@ -568,7 +672,7 @@ static int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 1037 "paper/state.nw"
+#line 1216 "paper/state.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -582,7 +686,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 1058 "paper/state.nw"
+#line 1237 "paper/state.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -599,7 +703,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   w->restart = 1;
   return STATUS_OK;
 }
-#line 1089 "paper/state.nw"
+#line 1268 "paper/state.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   int n = w->n;
@@ -621,7 +725,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 1119 "paper/state.nw"
+#line 1298 "paper/state.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -631,7 +735,7 @@ static double feasible_step(const Qp_workspace *w)
       af = fmin(af, (w->x[i] - w->lo[i]) / w->p[i]);
   return af;
 }
-#line 1136 "paper/state.nw"
+#line 1315 "paper/state.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -643,7 +747,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, w->z, w->q) / pap;
   for (int i = 0; i < w->n; i++) w->p[i] = w->z[i] - gamma * w->p[i];
 }
-#line 1166 "paper/state.nw"
+#line 1345 "paper/state.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {

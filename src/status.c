@@ -1,4 +1,4 @@
-#line 72 "paper/contactopt.nw"
+#line 73 "paper/contactopt.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include "status.h"

@@ -1,7 +1,8 @@
 /* test_qp.c: the state solvers of state.nw on small bound-constrained QPs
    min 1/2 x'Ax - b'x, x[ic] >= lo, built here with cholmod_triplet:
    (a) 1D obstacle problems, (b) a semidefinite 1D Neumann problem held only
-   by the bounds, (c) 2D grid Laplacians with mixed contact.  The reference
+   by the bounds, (c) 2D grid Laplacians with mixed contact, (d) a small
+   elastic body of Example 5.1 (not an M-matrix).  The reference
    for the tiny ones enumerates every active set and solves each linear
    system with GSL's Cholesky factorisation: independent of state.c. */
 #include <math.h>
@@ -112,8 +113,8 @@ static Problem *neumann_1d(const char *name, int up, double k)
 
 /* (c) a membrane on an nx x ny grid, held above its top row, resting with
    its bottom row on a curved obstacle, under a uniform downward load;
-   free = 1: not held above (A singular), and the load lifts it off */
-static Problem *grid_2d(const char *name, int nx, int ny, int free)
+   loose = 1: not held above (A singular), and the load lifts it off */
+static Problem *grid_2d(const char *name, int nx, int ny, int loose)
 {
   Problem *P = problem_new(name, nx * ny, nx);
   for (int j = 0; j < ny; j++)
@@ -121,14 +122,75 @@ static Problem *grid_2d(const char *name, int nx, int ny, int free)
       int v = j * nx + i;
       if (i + 1 < nx) spring(P, v, v + 1, 1);
       if (j + 1 < ny) spring(P, v, v + nx, 1);
-      else if (!free) spring(P, v, -1, 1);
-      P->b[v] = (free ? 0.3 : -1.25) / (ny * ny);
+      else if (!loose) spring(P, v, -1, 1);
+      P->b[v] = (loose ? 0.3 : -1.25) / (ny * ny);
     }
   for (int c = 0; c < nx; c++) {
     double s = (c + 0.5) / nx - 0.5;
     P->ic[c] = c, P->lo[c] = -0.4 + 2 * s * s;
   }
   problem_finish(P);
+  return P;
+}
+
+/* (d) the elastic body of Example 5.1 on N x ny cells cut by diagonals:
+   plane stress, E = 2.15e11, nu = 0.29, x1 in (0,4), clamped at x1 = 0,
+   u1 = 0 at x1 = 4, P2 = -5.75e8 on the top for x1 in (2,4), the bottom on
+   the arc alpha(x1) = R1 - sqrt(R1^2 - (x1-4)^2) above the foundation:
+   u2 >= -alpha at the N bottom nodes that are not clamped */
+static void element(const double *xy, const int *v, double K[6][6])
+{
+  const double E = 2.15e11, nu = 0.29, f = E / (1 - nu * nu);
+  const double D[3][3] = { { f, f * nu, 0 }, { f * nu, f, 0 }, { 0, 0, f * (1 - nu) / 2 } };
+  double x[3], y[3];
+  for (int a = 0; a < 3; a++) x[a] = xy[2 * v[a]], y[a] = xy[2 * v[a] + 1];
+  double A2 = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+  double B[3][6] = { { y[1] - y[2], 0, y[2] - y[0], 0, y[0] - y[1], 0 },
+                     { 0, x[2] - x[1], 0, x[0] - x[2], 0, x[1] - x[0] },
+                     { x[2] - x[1], y[1] - y[2], x[0] - x[2], y[2] - y[0],
+                       x[1] - x[0], y[0] - y[1] } };
+  for (int a = 0; a < 6; a++)
+    for (int b = a; b < 6; b++) {
+      double s = 0;
+      for (int p = 0; p < 3; p++)
+        for (int r = 0; r < 3; r++) s += B[p][a] * D[p][r] * B[r][b];
+      K[a][b] = K[b][a] = s / (2 * A2);
+    }
+}
+
+static Problem *elastic_2d(const char *name, int N, int ny)
+{
+  int nn = (N + 1) * (ny + 1), n = 0, *u = malloc(2 * nn * sizeof *u);
+  double *xy = malloc(2 * nn * sizeof *xy), R1 = 160.025;
+  for (int v = 0; v < nn; v++) {
+    int i = v % (N + 1), j = v / (N + 1);
+    double x1 = 4.0 * i / N, al = R1 - sqrt(R1 * R1 - (x1 - 4) * (x1 - 4));
+    xy[2 * v] = x1, xy[2 * v + 1] = al + (1 - al) * j / ny;
+    u[2 * v] = i == 0 || i == N ? -1 : n++;
+    u[2 * v + 1] = i == 0 ? -1 : n++;
+  }
+  Problem *P = problem_new(name, n, N);
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i < N; i++) {
+      int v0 = j * (N + 1) + i;
+      int tri[2][3] = { { v0, v0 + 1, v0 + N + 2 }, { v0, v0 + N + 2, v0 + N + 1 } };
+      for (int e = 0; e < 2; e++) {
+        double K[6][6];
+        element(xy, tri[e], K);
+        for (int a = 0; a < 6; a++)
+          for (int b = 0; b < 6; b++) {
+            int ua = u[2 * tri[e][a / 2] + a % 2], ub = u[2 * tri[e][b / 2] + b % 2];
+            if (ua >= 0 && ub >= 0) P->D[ua * n + ub] += K[a][b];
+          }
+      }
+    }
+  for (int i = N / 2; i < N; i++)                 /* the load on (2,4) */
+    for (int s = 0; s < 2; s++)
+      P->b[u[2 * (ny * (N + 1) + i + s) + 1]] += -5.75e8 * (4.0 / N) / 2;
+  for (int c = 0; c < N; c++)
+    P->ic[c] = u[2 * (c + 1) + 1], P->lo[c] = -xy[2 * (c + 1) + 1];
+  problem_finish(P);
+  free(u), free(xy);
   return P;
 }
 
@@ -304,6 +366,32 @@ static void check_warm(Problem *P)
   free(x), free(x2), free(x3), free(Ax0), free(b0);
 }
 
+/* pdas from psor's solution at a tighter tolerance: the active set guessed
+   from it is right, and one Newton step ends the solve */
+static void check_warm_pdas(Problem *P)
+{
+  double *x = malloc(P->n * sizeof *x);
+  Qp_options o = options(STATE_PSOR);
+  Run r = run(P, o, NULL, x, NULL);
+  o = options(STATE_PDAS), o.tol = 1e-14;
+  Run r2 = run(P, o, x, x, NULL);
+  check(!r.code && !r2.code && r2.rep.iterations == 1, "%s pdas, tol 1e-14, "
+        "warm from psor's solution (kkt %.2g): %d Newton step, kkt %.2g",
+        P->name, r.rep.kkt, r2.rep.iterations, r2.rep.kkt);
+  free(x);
+}
+
+/* a warm start that holds nothing (A semidefinite): pdas starts cold again */
+static void check_warm_floating(Problem *P)
+{
+  double *x = malloc(P->n * sizeof *x);
+  for (int i = 0; i < P->n; i++) x[i] = 10;
+  Run r = run(P, options(STATE_PDAS), x, x, NULL);
+  check(!r.code && r.rep.converged, "%s pdas, warm from a floating start: "
+        "converged in %d iterations (%s)", P->name, r.rep.iterations, r.st.msg);
+  free(x);
+}
+
 /* ---- failures, each provoked once ------------------------------------------- */
 
 static int has(const char *msg, const char *what) { return strstr(msg, what) != NULL; }
@@ -430,21 +518,24 @@ int main(void)
 {
   cholmod_start(&cm);
   gsl_set_error_handler_off();
-  Problem *P[5] = {
+  Problem *P[6] = {
     obstacle_1d("obstacle 1D, all bounded", 12, 1),
     obstacle_1d("obstacle 1D, every 3rd bounded", 30, 3),
     neumann_1d("neumann 1D (semidefinite)", 0, 1),
     grid_2d("grid 8x5", 8, 5, 0),
+    elastic_2d("elastic body 10x3", 10, 3),
     grid_2d("grid 30x20", 30, 20, 0),
   };
-  for (int k = 0; k < 4; k++) check_against_reference(P[k]);
-  check_solvers(P[4], NULL);
-  for (int k = 0; k < 5; k++) check_scaling(P[k]), check_warm(P[k]);
+  for (int k = 0; k < 5; k++) check_against_reference(P[k]);
+  check_solvers(P[5], NULL);
+  for (int k = 0; k < 6; k++) check_scaling(P[k]), check_warm(P[k]);
+  check_warm_pdas(P[5]);
+  check_warm_floating(P[2]);
   check_not_converged(P[1]);
   check_not_held();
   check_input_errors(P[0]);
   check_bad_matrices();
-  for (int k = 0; k < 5; k++) problem_free(P[k]);
+  for (int k = 0; k < 6; k++) problem_free(P[k]);
   cholmod_finish(&cm);
   return check_done();
 }
