@@ -1,4 +1,4 @@
-#line 274 "paper/setting.nw"
+#line 283 "paper/setting.nw"
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <ini.h>
 #include "scene.h"
-#line 294 "paper/setting.nw"
+#line 303 "paper/setting.nw"
 static const char *const geometry_keys[] = {"a", "b", "gamma", NULL};
 static const char *const design_keys[] = {"N", "C0", "C1", "C2", "initial",
   "arc_x1", "arc_x2", "arc_radius", "line_start", "line_end", "constant",
@@ -20,19 +20,22 @@ static const char *const body_force_keys[] = {"F1", "F2", NULL};
 static const char *const contact_keys[] = {"model", NULL};
 static const char *const solver_keys[] = {"state", "tol", "max_iter",
   "omega", NULL};
+static const char *const optimizer_keys[] = {"method", "tol", "max_iter",
+  NULL};
 static const char *const section_names[] = {"geometry", "design", "mesh",
   "material", "left", "right", "top", "body_force", "contact", "solver",
-  NULL};
+  "optimizer", NULL};
 static const char *const *const section_keys[] = {geometry_keys,
   design_keys, mesh_keys, material_keys, side_keys, side_keys, side_keys,
-  body_force_keys, contact_keys, solver_keys};
-#line 315 "paper/setting.nw"
+  body_force_keys, contact_keys, solver_keys, optimizer_keys};
+#line 326 "paper/setting.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const bc_names[] = {"free", "clamped", "roller",
   "traction", NULL};
 static const char *const model_names[] = {"plane_stress", "plane_strain",
   NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
+static const char *const opt_names[] = {"slsqp", "projgrad", NULL};
 static const char *const initial_names[] = {"arc", "line", "constant",
   "file", NULL};
 static const char *const arc_keys[] = {"arc_x1", "arc_x2", "arc_radius",
@@ -43,7 +46,7 @@ static const char *const file_keys[] = {"file", NULL};
 static const char *const *const initial_keys[] = {arc_keys, line_keys,
   constant_keys, file_keys};
 static const char *const traction_keys[] = {"from", "to", "P1", "P2", NULL};
-#line 393 "paper/setting.nw"
+#line 410 "paper/setting.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 
 typedef struct {
@@ -52,7 +55,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 407 "paper/setting.nw"
+#line 424 "paper/setting.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -66,13 +69,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 433 "paper/setting.nw"
+#line 450 "paper/setting.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 334 "paper/setting.nw"
+#line 346 "paper/setting.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -81,7 +84,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 346 "paper/setting.nw"
+#line 358 "paper/setting.nw"
 /* buf = the names, comma-separated (truncated to size) */
 static const char *name_list(const char *const *names, char *buf,
                              size_t size)
@@ -94,7 +97,7 @@ static const char *name_list(const char *const *names, char *buf,
                              i ? ", " : "", names[i]);
   return buf;
 }
-#line 362 "paper/setting.nw"
+#line 374 "paper/setting.nw"
 /* the name of entry k of a list of n names, or "?" */
 static const char *enum_name(const char *const *names, int n, int k)
 {
@@ -106,6 +109,11 @@ const char *scene_state_name(State_method m)
   return enum_name(state_names, 3, (int)m);
 }
 
+const char *scene_opt_name(Opt_method m)
+{
+  return enum_name(opt_names, 2, (int)m);
+}
+
 const char *scene_model_name(Plane_model m)
 {
   return enum_name(model_names, 2, (int)m);
@@ -115,7 +123,7 @@ const char *scene_bc_name(Bc_kind k)
 {
   return enum_name(bc_names, 4, (int)k);
 }
-#line 441 "paper/setting.nw"
+#line 458 "paper/setting.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -134,7 +142,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 462 "paper/setting.nw"
+#line 479 "paper/setting.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -152,7 +160,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 483 "paper/setting.nw"
+#line 500 "paper/setting.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -172,7 +180,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 512 "paper/setting.nw"
+#line 529 "paper/setting.nw"
 /* e = sec.key = val at L's current origin, if the schema has the names */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -181,7 +189,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   int s = name_index(section_names, sec);
   origin(L, L->override, where, sizeof where);
   
-#line 534 "paper/setting.nw"
+#line 551 "paper/setting.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -191,7 +199,7 @@ if (s < 0)
 if (name_index(section_keys[s], key) < 0)
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, name_list(section_keys[s], list, sizeof list));
-#line 520 "paper/setting.nw"
+#line 537 "paper/setting.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -202,7 +210,7 @@ if (name_index(section_keys[s], key) < 0)
   e->override = L->override;
   return 0;
 }
-#line 546 "paper/setting.nw"
+#line 563 "paper/setting.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -223,7 +231,7 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 580 "paper/setting.nw"
+#line 597 "paper/setting.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -238,7 +246,7 @@ static char *read_line(char *buf, int size, void *user)
   }
   return buf;
 }
-#line 601 "paper/setting.nw"
+#line 618 "paper/setting.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -249,7 +257,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 618 "paper/setting.nw"
+#line 635 "paper/setting.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -257,18 +265,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 611 "paper/setting.nw"
-  
 #line 628 "paper/setting.nw"
+  
+#line 645 "paper/setting.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 612 "paper/setting.nw"
+#line 629 "paper/setting.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 640 "paper/setting.nw"
+#line 657 "paper/setting.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -283,18 +291,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 661 "paper/setting.nw"
+#line 678 "paper/setting.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 654 "paper/setting.nw"
+#line 671 "paper/setting.nw"
   L->line = 0;
   return L->failed;
 }
-#line 678 "paper/setting.nw"
+#line 695 "paper/setting.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -305,7 +313,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 691 "paper/setting.nw"
+#line 708 "paper/setting.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -318,7 +326,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 712 "paper/setting.nw"
+#line 729 "paper/setting.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -330,14 +338,14 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 703 "paper/setting.nw"
+#line 720 "paper/setting.nw"
   free(copy);
   if (L->failed) return L->failed;
   if ((old = find(L, e.sec, e.key))) *old = e;
   else add(L, &e);
   return L->failed;
 }
-#line 733 "paper/setting.nw"
+#line 750 "paper/setting.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -349,7 +357,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 748 "paper/setting.nw"
+#line 765 "paper/setting.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -363,7 +371,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 765 "paper/setting.nw"
+#line 782 "paper/setting.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -374,7 +382,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 781 "paper/setting.nw"
+#line 798 "paper/setting.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -394,7 +402,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 804 "paper/setting.nw"
+#line 821 "paper/setting.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -405,7 +413,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 817 "paper/setting.nw"
+#line 834 "paper/setting.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -416,7 +424,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 830 "paper/setting.nw"
+#line 847 "paper/setting.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -427,7 +435,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 845 "paper/setting.nw"
+#line 862 "paper/setting.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -438,7 +446,7 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 864 "paper/setting.nw"
+#line 881 "paper/setting.nw"
 /* [geometry]: a < b, and gamma */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -449,7 +457,7 @@ static int read_geometry(Loader *L, Scene *s)
   if (!(s->b > s->a)) return blame(L, "must exceed geometry.a = %g", s->a);
   return real(L, "geometry", "gamma", REQUIRED, &s->gamma);
 }
-#line 879 "paper/setting.nw"
+#line 896 "paper/setting.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -464,7 +472,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 899 "paper/setting.nw"
+#line 916 "paper/setting.nw"
 /* [mesh]: M, R >= 1, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
@@ -482,7 +490,7 @@ static int read_mesh(Loader *L, Scene *s)
                "= %g: the fixed part of the mesh needs a height", s->C0prime);
   return 0;
 }
-#line 940 "paper/setting.nw"
+#line 957 "paper/setting.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -493,14 +501,14 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->C0 * w);
 }
-#line 959 "paper/setting.nw"
+#line 976 "paper/setting.nw"
 /* x_i = a + i (b - a) / N */
 static double node_x(const Scene *s, int i)
 {
   double t = (double)i / s->N;
   return (1 - t) * s->a + t * s->b;
 }
-#line 972 "paper/setting.nw"
+#line 989 "paper/setting.nw"
 /* alpha0 = arc_x2 - sqrt(r^2 - (x - arc_x1)^2), the lower half-circle */
 static int fill_arc(Loader *L, Scene *s)
 {
@@ -520,7 +528,7 @@ static int fill_arc(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 995 "paper/setting.nw"
+#line 1012 "paper/setting.nw"
 /* alpha0 linear from line_start at x1 = a to line_end at x1 = b */
 static int fill_line(Loader *L, Scene *s)
 {
@@ -535,7 +543,7 @@ static int fill_line(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1012 "paper/setting.nw"
+#line 1029 "paper/setting.nw"
 /* alpha0 = constant */
 static int fill_constant(Loader *L, Scene *s)
 {
@@ -545,7 +553,7 @@ static int fill_constant(Loader *L, Scene *s)
   for (i = 0; i <= s->N; i++) s->alpha0[i] = c;
   return 0;
 }
-#line 1026 "paper/setting.nw"
+#line 1043 "paper/setting.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -556,7 +564,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1042 "paper/setting.nw"
+#line 1059 "paper/setting.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -572,7 +580,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1062 "paper/setting.nw"
+#line 1079 "paper/setting.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -593,7 +601,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->N + 1);
   return rc;
 }
-#line 1085 "paper/setting.nw"
+#line 1102 "paper/setting.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -603,7 +611,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1098 "paper/setting.nw"
+#line 1115 "paper/setting.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -615,7 +623,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->alpha0[i], i, node_x(s, i), s->C0prime);
   return 0;
 }
-#line 1115 "paper/setting.nw"
+#line 1132 "paper/setting.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -626,19 +634,19 @@ static int read_initial(Loader *L, Scene *s)
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1134 "paper/setting.nw"
+#line 1151 "paper/setting.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1125 "paper/setting.nw"
+#line 1142 "paper/setting.nw"
   if (!(s->alpha0 = malloc(((size_t)s->N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
                                   "for %d nodes", L->path, s->N + 1);
   if ((rc = fill[k](L, s))) return rc;
   return check_alpha0(L, s);
 }
-#line 1149 "paper/setting.nw"
+#line 1166 "paper/setting.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -655,7 +663,7 @@ static int read_material(Loader *L, Scene *s)
   s->model = (Plane_model)k;
   return 0;
 }
-#line 1175 "paper/setting.nw"
+#line 1192 "paper/setting.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -663,7 +671,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->side[id];
   int rc;
   
-#line 1194 "paper/setting.nw"
+#line 1211 "paper/setting.nw"
 double lo = id == SIDE_TOP ? s->a : s->C0prime;
 double hi = id == SIDE_TOP ? s->b : s->gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -678,7 +686,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1182 "paper/setting.nw"
+#line 1199 "paper/setting.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -687,7 +695,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1212 "paper/setting.nw"
+#line 1229 "paper/setting.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -699,7 +707,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return refuse_keys(L, sec, traction_keys, "bc", bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1233 "paper/setting.nw"
+#line 1250 "paper/setting.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -713,7 +721,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, scene_bc_name(s->side[0].kind),
               scene_bc_name(s->side[1].kind), scene_bc_name(s->side[2].kind));
 }
-#line 1249 "paper/setting.nw"
+#line 1266 "paper/setting.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -722,7 +730,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1268 "paper/setting.nw"
+#line 1285 "paper/setting.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -737,7 +745,7 @@ static int read_loads(Loader *L, Scene *s)
                  "frictionless)");
   return 0;
 }
-#line 1289 "paper/setting.nw"
+#line 1306 "paper/setting.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -756,20 +764,35 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1317 "paper/setting.nw"
+#line 1329 "paper/setting.nw"
+/* [optimizer]: the method, 0 < tol < 1, max_iter >= 1 */
+static int read_optimizer(Loader *L, Scene *s)
+{
+  int rc, k;
+  if ((rc = word(L, "optimizer", "method", "slsqp", opt_names, &k))) return rc;
+  s->opt = (Opt_method)k;
+  if ((rc = real(L, "optimizer", "tol", "1e-8", &s->opt_tol))) return rc;
+  if (!(s->opt_tol > 0 && s->opt_tol < 1))
+    return blame(L, "must lie in (0, 1): it is a relative measure");
+  if ((rc = integer(L, "optimizer", "max_iter", "200", &s->opt_max_iter)))
+    return rc;
+  if (s->opt_max_iter < 1) return blame(L, "must be >= 1");
+  return 0;
+}
+#line 1353 "paper/setting.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
   static int (*const step[])(Loader *, Scene *) = {read_geometry,
     read_design, read_mesh, check_admissible, read_initial, read_material,
-    read_sides, read_loads, read_solver};
+    read_sides, read_loads, read_solver, read_optimizer};
   size_t i;
   int rc = 0;
   for (i = 0; !rc && i < sizeof step / sizeof step[0]; i++)
     rc = step[i](L, s);
   return rc;
 }
-#line 1334 "paper/setting.nw"
+#line 1370 "paper/setting.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -789,7 +812,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1356 "paper/setting.nw"
+#line 1392 "paper/setting.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
