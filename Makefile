@@ -4,11 +4,12 @@
 
 # The parts of the paper, in the order of the argument (the driver first).
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
-      paper/state.nw paper/model.nw paper/sensitivity.nw paper/output.nw paper/main.nw \
+      paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
+      paper/optimize.nw paper/output.nw paper/main.nw \
       paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
-MODULES := status scene mesh fem state model sensitivity output
+MODULES := status scene mesh fem state model sensitivity design optimize output
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c
 OBJ     := $(MODULES:%=build/%.o)
 
@@ -16,7 +17,7 @@ CC      ?= cc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
            -I/usr/include/suitesparse -Isrc
-LDLIBS  := -lcholmod -lgsl -lgslcblas -linih -lm
+LDLIBS  := -lcholmod -lnlopt -lgsl -lgslcblas -linih -lm
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan.
 ifeq ($(SAN),1)
 CFLAGS  += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer
@@ -66,13 +67,13 @@ build/%.o: src/%.c | src/.tangled
 bin/contactopt: build/main.o $(OBJ)
 	@mkdir -p bin
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
--include $(wildcard build/*.d)
+-include $(wildcard build/*.d build/tests/*.d)
 
 # Test programs link the library modules directly.
 TEST_PROGS := $(patsubst tests/%.c,build/tests/%,$(wildcard tests/*.c))
 build/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p build/tests
-	$(CC) $(CFLAGS) -Itests $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
+	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
 check: bin/contactopt $(TEST_PROGS) tangle-check
 	@sh tests/run

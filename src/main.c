@@ -9,18 +9,21 @@
 #include "model.h"
 #include "output.h"
 #include "sensitivity.h"
+#include "design.h"
+#include "optimize.h"
 
-#line 27 "paper/main.nw"
-static const char *usage_main =
+#line 29 "paper/main.nw"
+static const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
   "(Haslinger & Neittaanmaki, M2AN 21, 1987).\n\n"
   "commands:\n"
   "  solve     solve the contact state at the scene's initial shape\n"
-  "  gradcheck compare the gradient (4.8) with finite differences of E\n\n"
+  "  gradcheck compare the gradient (4.8) with finite differences of E\n"
+  "  optimize  find the contact shape of least energy (Section 4.4)\n\n"
   "'contactopt COMMAND --help' explains the options of a command.\n";
 
-static const char *usage_solve =
+static const char usage_solve[] =
   "usage: contactopt solve SCENE [-o DIR] [-s section.key=value ...]\n"
   "                  [--matrix-market FILE]\n"
   "Solve the contact state problem (4.3) at the scene's initial design and\n"
@@ -37,7 +40,7 @@ static const char *usage_solve =
   "nodes.dat, triangles.dat and solution.vtu (ParaView).\n"
   "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write.\n";
 
-static const char *usage_gradcheck =
+static const char usage_gradcheck[] =
   "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
   "Compare the gradient of E by formula (4.8) at the scene's initial design\n"
   "with finite differences of E at the steps C0 * 1e-2 .. 1e-6: central\n"
@@ -48,17 +51,33 @@ static const char *usage_gradcheck =
   "  -h, --help            this text\n\n"
   "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
   "difference, relative error) and summary.dat (max_relative_error, ...).\n";
-#line 67 "paper/main.nw"
+
+static const char usage_optimize[] =
+  "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
+  "Minimise the total potential energy E over the design set B (4.4) from\n"
+  "the scene's initial design (moved to the nearest point of B first if it\n"
+  "is not in B), by optimizer.method = slsqp (NLopt's SQP, default) or\n"
+  "projgrad (Algorithm 4.1).  Prints one line per iteration: iteration, E,\n"
+  "projected-gradient norm, active contact nodes, state iterations, seconds.\n\n"
+  "  -o DIR                output folder (default: out/NAME-optimize)\n"
+  "  -s section.key=value  override a key of the scene (repeatable),\n"
+  "                        e.g. -s optimizer.method=projgrad\n"
+  "  -h, --help            this text\n\n"
+  "DIR receives history.dat, iterates.dat (every iterate), summary.dat\n"
+  "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
+  "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
+  "multipliers.dat, and initial/ and final/ with the files of solve.\n";
+#line 86 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
-  const char *command;                 /* "solve", "gradcheck" */
+  const char *command;                 /* solve, gradcheck or optimize */
   const char *scene;                   /* the scene file */
   const char *outdir;                  /* -o, or NULL for out/NAME */
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
-#line 79 "paper/main.nw"
+#line 98 "paper/main.nw"
 static int args_read(int argc, char **argv, Args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -81,7 +100,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 106 "paper/main.nw"
+#line 125 "paper/main.nw"
 static void output_dir(const Args *a, const char *suffix, char *dir,
                        size_t size)
 {
@@ -92,7 +111,7 @@ static void output_dir(const Args *a, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 125 "paper/main.nw"
+#line 144 "paper/main.nw"
 static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
 {
   FILE *f = output_open(o, "summary.dat", st);
@@ -108,7 +127,7 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
           md->seconds);
   return output_close(o, f, st);
 }
-#line 144 "paper/main.nw"
+#line 163 "paper/main.nw"
 static int write_matrix_market(const char *path, cholmod_sparse *A,
                                cholmod_common *cm, Status *st)
 {
@@ -124,7 +143,7 @@ static int write_matrix_market(const char *path, cholmod_sparse *A,
   }
   return STATUS_OK;
 }
-#line 162 "paper/main.nw"
+#line 181 "paper/main.nw"
 static int solve_write(const Args *a, const Scene *s, Model *md,
                        cholmod_common *cm, Status *st)
 {
@@ -163,7 +182,7 @@ static int command_solve(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 216 "paper/main.nw"
+#line 235 "paper/main.nw"
 static int energy_at(Model *md, const double *X, double *E, Status *st)
 {
   int rc = model_solve(md, X, st);
@@ -188,7 +207,7 @@ static int finite_difference(Model *md, double *X, int i, double s,
   if (!rc) *fd = central ? (E1 - E0) / (2 * s) : (-3 * E0 + 4 * E1 - E2) / (2 * s);
   return rc;
 }
-#line 243 "paper/main.nw"
+#line 262 "paper/main.nw"
 static int best_differences(Model *md, const Scene *s, const double *G,
                             double *best, double *err, Status *st)
 {
@@ -209,7 +228,7 @@ static int best_differences(Model *md, const Scene *s, const double *G,
   free(X);
   return rc;
 }
-#line 266 "paper/main.nw"
+#line 285 "paper/main.nw"
 static int write_gradient(Output *o, const Model *md, const double *G,
                           const double *best, const double *err, Status *st)
 {
@@ -246,7 +265,7 @@ static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
          s->path, err[worst], worst, dir);
   return STATUS_OK;
 }
-#line 306 "paper/main.nw"
+#line 325 "paper/main.nw"
 static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
 {
   Scene s;
@@ -269,7 +288,148 @@ static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 335 "paper/main.nw"
+#line 357 "paper/main.nw"
+typedef struct {
+  int n, size;              /* iterations recorded, room */
+  int ndesign;              /* N+1 */
+  Opt_progress *p;          /* the history */
+  double *X;                /* ndesign per iteration: the iterates */
+  int failed;               /* out of memory while recording */
+} History;
+
+static int history_grow(History *h)
+{
+  int size = 2 * h->size + 16;
+  Opt_progress *p = realloc(h->p, size * sizeof *p);
+  if (p) h->p = p;
+  double *X = realloc(h->X, (size_t) size * h->ndesign * sizeof *X);
+  if (X) h->X = X;
+  if (!p || !X) return h->failed = 1;
+  h->size = size;
+  return 0;
+}
+
+static void monitor(const Opt_progress *p, const double *X, void *data)
+{
+  History *h = data;
+  printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
+         p->iteration, p->energy, p->pgnorm, p->active, p->state_iterations,
+         p->seconds);
+  fflush(stdout);
+  if (h->failed || (h->n == h->size && history_grow(h))) return;
+  memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
+  h->p[h->n++] = *p;
+}
+#line 393 "paper/main.nw"
+static int feasible_start(const Scene *s, const Design_set *B, double *X,
+                          double *moved, Status *st)
+{
+  int n = s->N + 1, rc = STATUS_OK;
+  *moved = 0;
+  memcpy(X, s->alpha0, n * sizeof *X);
+  double v = design_violation(B, X);
+  if (v <= 1e-12) return STATUS_OK;
+  if ((rc = design_project(B, s->alpha0, X, NULL, st))) return rc;
+  for (int i = 0; i < n; i++) *moved += (X[i] - s->alpha0[i]) * (X[i] - s->alpha0[i]);
+  *moved = sqrt(*moved);
+  printf("%s: the initial design is not in B (largest relative violation "
+         "%.3g): moved to the nearest point of B, at distance %.6g m\n",
+         s->path, v, *moved);
+  return STATUS_OK;
+}
+#line 412 "paper/main.nw"
+static int write_history(Output *o, const Scene *s, const History *h,
+                         Status *st)
+{
+  int rc;
+  FILE *f = output_open(o, "history.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
+  for (int k = 0; k < h->n; k++)
+    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
+            h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
+  if ((rc = output_close(o, f, st))) return rc;
+  if (!(f = output_open(o, "iterates.dat", st))) return st->code;
+  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration\n");
+  for (int k = 0; k < h->n; k++, fprintf(f, "\n"))
+    for (int i = 0; i < h->ndesign; i++)
+      fprintf(f, "%d %d %.10g %.17g\n", h->p[k].iteration, i,
+              s->a + i * (s->b - s->a) / s->N, h->X[(size_t) k * h->ndesign + i]);
+  return output_close(o, f, st);
+}
+
+static int write_opt_summary(Output *o, const Scene *s, const Model *md,
+                             const Opt_report *r, double E0, double cv0,
+                             double moved, Status *st)
+{
+  FILE *f = output_open(o, "summary.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# name value\nscene %s\noptimizer %s\nstate_solver %s\nmodel %s\n",
+          s->path, scene_opt_name(s->opt), scene_state_name(s->state),
+          scene_model_name(s->model));
+  fprintf(f, "N %d\nM %d\nR %d\ninitial_projected %d\ninitial_moved %.6e\n",
+          s->N, s->M, s->R, moved > 0, moved);
+  fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",
+          E0, r->energy, r->iterations, r->evaluations);
+  fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
+  fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
+          cv0, model_pressure_cv(md));
+  fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\n", md->report.active,
+          md->report.kkt);
+  return output_close(o, f, st);
+}
+#line 456 "paper/main.nw"
+static int optimize_run(const Args *a, const Scene *s, Model *md, double *X,
+                        Output *o, Status *st)
+{
+  Design_set B = design_set(s);
+  History h = { 0, 0, s->N + 1, NULL, NULL, 0 };
+  Opt_report r;
+  double moved, E0, cv0;
+  int rc;
+  if ((rc = feasible_start(s, &B, X, &moved, st)) || (rc = model_solve(md, X, st))
+      || (rc = output_state(o, "initial", md, X, st)))
+    return rc;
+  E0 = md->energy;
+  cv0 = model_pressure_cv(md);
+  if (!(rc = opt_minimize(md, &B, s, X, monitor, &h, &r, st))) {
+    if (h.failed) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+    else if (!(rc = output_state(o, "final", md, X, st))
+             && !(rc = write_history(o, s, &h, st)))
+      rc = write_opt_summary(o, s, md, &r, E0, cv0, moved, st);
+  }
+  if (!rc)
+    printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
+           "projected gradient %.2e (%s) -> %s/\n", s->path, E0, r.energy,
+           r.iterations, r.evaluations, r.pgnorm, r.stop_reason, o->dir);
+  (void) a;
+  free(h.p);
+  free(h.X);
+  return rc;
+}
+
+static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
+{
+  Scene s;
+  char dir[1024];
+  Output o;
+  int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
+  if (rc) return rc;
+  Model *md = model_new(&s, cm, st);
+  double *X = malloc((s.N + 1) * sizeof *X);
+  output_dir(a, "-optimize", dir, sizeof dir);
+  if (!md) rc = st->code;
+  else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  else if (!(rc = output_begin(&o, dir, st))) {
+    if ((rc = optimize_run(a, &s, md, X, &o, st)) || (rc = output_commit(&o, st)))
+      output_abort(&o);
+  }
+  free(X);
+  model_free(md);
+  scene_free(&s);
+  return rc;
+}
+#line 513 "paper/main.nw"
 typedef struct {
   const char *name;
   const char *usage;
@@ -277,8 +437,9 @@ typedef struct {
 } Command;
 
 static const Command commands[] = {
-  { "solve", NULL, command_solve },
-  { "gradcheck", NULL, command_gradcheck },
+  { "solve", usage_solve, command_solve },
+  { "gradcheck", usage_gradcheck, command_gradcheck },
+  { "optimize", usage_optimize, command_optimize },
 };
 
 static const Command *command_find(const char *name)
@@ -286,11 +447,6 @@ static const Command *command_find(const char *name)
   for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)
     if (!strcmp(commands[k].name, name)) return &commands[k];
   return NULL;
-}
-
-static const char *command_usage(const Command *c)
-{
-  return !strcmp(c->name, "solve") ? usage_solve : usage_gradcheck;
 }
 
 static int wants_help(int argc, char **argv)
@@ -313,7 +469,7 @@ int main(int argc, char **argv)
     fprintf(stderr, "contactopt: unknown command '%s' (try --help)\n", argv[1]);
     return STATUS_INPUT;
   }
-  if (wants_help(argc, argv)) { fputs(command_usage(c), stdout); return STATUS_OK; }
+  if (wants_help(argc, argv)) { fputs(c->usage, stdout); return STATUS_OK; }
   cholmod_common cm;
   cholmod_start(&cm);
   cm.print = 0;             /* the library reports through Status, not stderr */

@@ -1,10 +1,11 @@
-#line 47 "paper/model.nw"
+#line 51 "paper/model.nw"
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 58 "paper/model.nw"
+#line 63 "paper/model.nw"
 Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
 {
   Model *md = calloc(1, sizeof *md);
@@ -18,7 +19,7 @@ Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
     return NULL;
   }
   
-#line 77 "paper/model.nw"
+#line 82 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -29,19 +30,19 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 71 "paper/model.nw"
+#line 76 "paper/model.nw"
   
-#line 90 "paper/model.nw"
+#line 95 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
 Qp_options opt = { s->state, s->tol, s->max_iter, s->omega };
 if (!(md->solver = qp_alloc(&md->qp, &opt, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 72 "paper/model.nw"
+#line 77 "paper/model.nw"
   return md;
 }
-#line 102 "paper/model.nw"
+#line 107 "paper/model.nw"
 static double model_clock(void)
 {
   struct timespec t;
@@ -64,6 +65,36 @@ int model_solve(Model *md, const double *X, Status *st)
   md->energy = fem_energy(md->A, md->b, md->Q);
   md->seconds = model_clock() - start;
   return rc;
+}
+
+#line 137 "paper/model.nw"
+static double model_tributary(const Mesh *m, int i)
+{
+  double len = 0;
+  for (int k = i - 1; k <= i; k++)
+    if (k >= 0 && k < m->N)
+      len += 0.5 * hypot(m->xy[2 * (k + 1)] - m->xy[2 * k],
+                         m->xy[2 * (k + 1) + 1] - m->xy[2 * k + 1]);
+  return len;
+}
+
+double model_pressure(const Model *md, int c)
+{
+  return md->T[c] / model_tributary(md->mesh, md->dofs->contact_col[c]);
+}
+
+double model_pressure_cv(const Model *md)
+{
+  double sum = 0, sum2 = 0;
+  int count = 0;
+  for (int c = 0; c < md->dofs->nc; c++)
+    if (md->Q[md->dofs->contact[c]] <= md->lo[c] && md->T[c] > 0) {
+      double p = model_pressure(md, c);
+      sum += p; sum2 += p * p; count++;
+    }
+  if (count == 0) return NAN;
+  double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
+  return sqrt(var) / mean;
 }
 
 void model_free(Model *md)

@@ -28,6 +28,10 @@ typedef struct {
 } Model;
 
 Model *model_new(const Scene *s, cholmod_common *cm, Status *st);
+/* contact pressure at contact DOF c: T_c over the tributary length */
+double model_pressure(const Model *md, int c);
+/* standard deviation over mean of the pressure on the contact zone */
+double model_pressure_cv(const Model *md);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);
 void model_free(Model *md);

@@ -121,17 +121,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 204 "paper/output.nw"
-static double output_tributary(const Mesh *m, int i)
-{
-  double len = 0;
-  for (int k = i - 1; k <= i; k++)
-    if (k >= 0 && k < m->N)
-      len += 0.5 * hypot(m->xy[2 * (k + 1)] - m->xy[2 * k],
-                         m->xy[2 * (k + 1) + 1] - m->xy[2 * k + 1]);
-  return len;
-}
-
+#line 203 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -143,11 +133,11 @@ static int output_contact(Output *o, const char *sub, const Model *md,
     double u2 = md->Q[md->dofs->contact[c]];
     fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g\n", md->mesh->xy[2 * i],
             X[i], u2, u2 + X[i], md->T[c],
-            md->T[c] / output_tributary(md->mesh, i));
+            model_pressure(md, c));
   }
   return output_close(o, f, st);
 }
-#line 232 "paper/output.nw"
+#line 221 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -179,7 +169,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 267 "paper/output.nw"
+#line 256 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
 {
   const Mesh *m = md->mesh;
@@ -197,7 +187,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
   for (int t = 0; t < m->ntri; t++)
     fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
   
-#line 289 "paper/output.nw"
+#line 278 "paper/output.nw"
 fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
 for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
 fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
@@ -208,10 +198,10 @@ fprintf(f, "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
 for (int k = 0; k < m->nnodes; k++)
   fprintf(f, "%.15g %.15g 0\n", output_u(md, k, 0), output_u(md, k, 1));
 fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 284 "paper/output.nw"
+#line 273 "paper/output.nw"
   return output_close(o, f, st);
 }
-#line 302 "paper/output.nw"
+#line 291 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {

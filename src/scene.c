@@ -771,7 +771,7 @@ static int read_optimizer(Loader *L, Scene *s)
   int rc, k;
   if ((rc = word(L, "optimizer", "method", "slsqp", opt_names, &k))) return rc;
   s->opt = (Opt_method)k;
-  if ((rc = real(L, "optimizer", "tol", "1e-8", &s->opt_tol))) return rc;
+  if ((rc = real(L, "optimizer", "tol", "1e-6", &s->opt_tol))) return rc;
   if (!(s->opt_tol > 0 && s->opt_tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative measure");
   if ((rc = integer(L, "optimizer", "max_iter", "200", &s->opt_max_iter)))

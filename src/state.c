@@ -5,14 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "state.h"
-#line 804 "paper/state.nw"
+#line 808 "paper/state.nw"
 #define SINGULAR (-1)    /* newton_solve: K is singular (not a Status_code) */
-#line 943 "paper/state.nw"
+#line 947 "paper/state.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
-#line 1121 "paper/state.nw"
+#line 1125 "paper/state.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 1341 "paper/state.nw"
+#line 1345 "paper/state.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
 #line 254 "paper/state.nw"
 struct Qp_workspace {
@@ -30,7 +30,7 @@ struct Qp_workspace {
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   
-#line 713 "paper/state.nw"
+#line 717 "paper/state.nw"
 cholmod_sparse K;      /* the Newton matrix: A's pattern (borrowed),
                           own values, stype -1 */
 cholmod_factor *Ls;    /* the symbolic analysis of K, from qp_alloc */
@@ -46,7 +46,7 @@ int refactored;        /* 1: the last step did */
 int warm;              /* the first active set was guessed from x0 */
 #line 269 "paper/state.nw"
   
-#line 1126 "paper/state.nw"
+#line 1130 "paper/state.nw"
 double *p;             /* n: the conjugate direction */
 double *q;             /* n: A p, or A beta in a proportioning step */
 double *z;             /* n: the preconditioned free gradient, or beta */
@@ -68,10 +68,10 @@ static void mprgp_set(Qp_workspace *w);
 static int pdas_step(Qp_workspace *w, Status *st);
 static int psor_sweep(Qp_workspace *w, Status *st);
 static int mprgp_iterate(Qp_workspace *w, Status *st);
-#line 574 "paper/state.nw"
+#line 578 "paper/state.nw"
 static int not_converged(const Qp_workspace *w, Status *st);
 static int count_active(const Qp_workspace *w);
-#line 792 "paper/state.nw"
+#line 796 "paper/state.nw"
 static int newton_solve(Qp_workspace *w, Status *st);
 static int factorise(Qp_workspace *w, Status *st);
 static int modify_factor(Qp_workspace *w, Status *st);
@@ -79,18 +79,18 @@ static int factor_is_regular(const Qp_workspace *w);
 static void fill_newton_rhs(Qp_workspace *w);
 static int predict_active_set(Qp_workspace *w);
 static int update_active_set(Qp_workspace *w, Status *st);
-#line 861 "paper/state.nw"
+#line 865 "paper/state.nw"
 static void fill_newton_matrix(Qp_workspace *w);
-#line 910 "paper/state.nw"
+#line 914 "paper/state.nw"
 static void fill_added_column(Qp_workspace *w, int j);
-#line 987 "paper/state.nw"
+#line 991 "paper/state.nw"
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active);
-#line 1210 "paper/state.nw"
+#line 1214 "paper/state.nw"
 static int proportional(const Qp_workspace *w);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int proportioning_step(Qp_workspace *w, Status *st);
-#line 1292 "paper/state.nw"
+#line 1296 "paper/state.nw"
 static double feasible_step(const Qp_workspace *w);
 static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
@@ -271,7 +271,7 @@ void qp_free(Qp_workspace *w)
 {
   if (!w) return;
   
-#line 763 "paper/state.nw"
+#line 767 "paper/state.nw"
 free(w->K.x), free(w->act), free(w->fac), free(w->iperm);
 cholmod_free_factor(&w->Ls, w->cm), cholmod_free_factor(&w->L, w->cm);
 cholmod_free_sparse(&w->R, w->cm);
@@ -279,7 +279,7 @@ cholmod_free_dense(&w->rhs, w->cm), cholmod_free_dense(&w->sol, w->cm);
 cholmod_free_dense(&w->Y, w->cm), cholmod_free_dense(&w->E, w->cm);
 #line 437 "paper/state.nw"
   
-#line 1152 "paper/state.nw"
+#line 1156 "paper/state.nw"
 free(w->p), free(w->q), free(w->z);
 #line 438 "paper/state.nw"
   free(w->bnd), free(w->lo), free(w->d);
@@ -361,13 +361,13 @@ int qp_iterate(Qp_workspace *w, Status *st)
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 555 "paper/state.nw"
+#line 559 "paper/state.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
   int code = qp_set(w, x0, st);
   if (code) return code;
-  while (!code && !qp_test(w))
+  while (!code && (!qp_test(w) || (w->iter == 0 && w->opt.method == STATE_PDAS)))
     code = w->iter >= w->opt.max_iter ? not_converged(w, st)
                                       : qp_iterate(w, st);
   memcpy(x, w->x, (size_t) w->n * sizeof *x);
@@ -378,7 +378,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   }
   return code;
 }
-#line 582 "paper/state.nw"
+#line 586 "paper/state.nw"
 /* bounded unknowns at their bound */
 static int count_active(const Qp_workspace *w)
 {
@@ -399,7 +399,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     "iteration%s (kkt = %.3g > tol = %.3g)%s", method_name(w->opt.method),
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, hint(w));
 }
-#line 658 "paper/state.nw"
+#line 662 "paper/state.nw"
 /* the first active set: all of I (cold), or the Newton rule's at x0 (warm) */
 static void pdas_set(Qp_workspace *w, int warm)
 {
@@ -421,7 +421,7 @@ static int count_act(const Qp_workspace *w)
   for (int c = 0; c < w->nc; c++) m += w->act[c];
   return m;
 }
-#line 729 "paper/state.nw"
+#line 733 "paper/state.nw"
 static int pdas_alloc(Qp_workspace *w, Status *st)
 {
   const cholmod_sparse *A = w->qp->A;
@@ -438,7 +438,7 @@ static int pdas_alloc(Qp_workspace *w, Status *st)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas)");
   memcpy(w->K.x, A->x, nz * sizeof(double));
   
-#line 751 "paper/state.nw"
+#line 755 "paper/state.nw"
 cholmod_common *cm = w->cm;
 w->Ls = cholmod_analyze(&w->K, cm);
 w->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
@@ -448,10 +448,10 @@ if (!w->Ls || !w->rhs || !w->R)
                     "analyse A (CHOLMOD status %d)", cm->status);
 const int *perm = w->Ls->Perm;
 for (int k = 0; k < w->n; k++) w->iperm[perm[k]] = k;
-#line 745 "paper/state.nw"
+#line 749 "paper/state.nw"
   return STATUS_OK;
 }
-#line 776 "paper/state.nw"
+#line 780 "paper/state.nw"
 static int pdas_step(Qp_workspace *w, Status *st)
 {
   int code = newton_solve(w, st);
@@ -465,7 +465,7 @@ static int pdas_step(Qp_workspace *w, Status *st)
   refresh(w);
   return update_active_set(w, st);
 }
-#line 808 "paper/state.nw"
+#line 812 "paper/state.nw"
 /* x = K \ rhs for the active set act, x_i = lo_i exactly on it */
 static int newton_solve(Qp_workspace *w, Status *st)
 {
@@ -485,7 +485,7 @@ static int newton_solve(Qp_workspace *w, Status *st)
   for (int i = 0; i < w->n; i++) w->x[i] = is_held(w, i) ? w->lo[i] : s[i];
   return STATUS_OK;
 }
-#line 839 "paper/state.nw"
+#line 843 "paper/state.nw"
 static int factorise(Qp_workspace *w, Status *st)
 {
   cholmod_common *cm = w->cm;
@@ -505,7 +505,7 @@ static int factorise(Qp_workspace *w, Status *st)
   w->fresh = 0, w->refactored = 1;
   return STATUS_OK;
 }
-#line 865 "paper/state.nw"
+#line 869 "paper/state.nw"
 /* K = A, with the row and column of each active unknown reduced to A_ii */
 static void fill_newton_matrix(Qp_workspace *w)
 {
@@ -518,7 +518,7 @@ static void fill_newton_matrix(Qp_workspace *w)
       Kx[k] = i != j && (is_held(w, i) || is_held(w, j)) ? 0 : Ax[k];
     }
 }
-#line 887 "paper/state.nw"
+#line 891 "paper/state.nw"
 /* L: from the Newton matrix of fac to that of act, row by row */
 static int modify_factor(Qp_workspace *w, Status *st)
 {
@@ -539,7 +539,7 @@ static int modify_factor(Qp_workspace *w, Status *st)
   return ok ? STATUS_OK : status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD "
     "failed to modify the factor (CHOLMOD status %d)", w->cm->status);
 }
-#line 914 "paper/state.nw"
+#line 918 "paper/state.nw"
 /* R = column j of A in the rows not held, in the factor's order */
 static void fill_added_column(Qp_workspace *w, int j)
 {
@@ -551,7 +551,7 @@ static void fill_added_column(Qp_workspace *w, int j)
     if (!is_held(w, Ai[k])) Ri[m] = w->iperm[Ai[k]], Rx[m++] = Ax[k];
   Rp[0] = 0, Rp[1] = m;
 }
-#line 947 "paper/state.nw"
+#line 951 "paper/state.nw"
 /* the pivots of the unknowns not held are positive and within 1/RCOND_MIN */
 static int factor_is_regular(const Qp_workspace *w)
 {
@@ -565,7 +565,7 @@ static int factor_is_regular(const Qp_workspace *w)
       dmin = fmin(dmin, Lx[Lp[k]]), dmax = fmax(dmax, Lx[Lp[k]]);
   return dmax == 0 || (dmin > 0 && dmin >= PDAS_RCOND_MIN * dmax);
 }
-#line 969 "paper/state.nw"
+#line 973 "paper/state.nw"
 /* rhs = b - A(:,act) lo(act) off the active set, A_ii lo_i on it */
 static void fill_newton_rhs(Qp_workspace *w)
 {
@@ -581,7 +581,7 @@ static void fill_newton_rhs(Qp_workspace *w)
     r[j] = w->d[j] * w->qp->lo[c];
   }
 }
-#line 992 "paper/state.nw"
+#line 996 "paper/state.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active)
@@ -591,7 +591,7 @@ static int not_held(const Qp_workspace *w, Status *st, const char *why,
     "bounds active, at iteration %d", method_name(w->opt.method), why,
     active, w->nc, w->iter + 1);
 }
-#line 1016 "paper/state.nw"
+#line 1020 "paper/state.nw"
 /* act = { c : T_c + A_ii (lo_c - x_i) > 0 }; 1 if it did not change */
 static int predict_active_set(Qp_workspace *w)
 {
@@ -615,7 +615,7 @@ static int update_active_set(Qp_workspace *w, Status *st)
     "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
     "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
 }
-#line 1059 "paper/state.nw"
+#line 1063 "paper/state.nw"
 /* one projected SOR sweep over all unknowns, then the residual */
 static int psor_sweep(Qp_workspace *w, Status *st)
 {
@@ -627,7 +627,7 @@ static int psor_sweep(Qp_workspace *w, Status *st)
   (void) st;      /* a sweep cannot fail; NaN is caught by qp_iterate */
   return STATUS_OK;
 }
-#line 1134 "paper/state.nw"
+#line 1138 "paper/state.nw"
 static int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1;
@@ -643,7 +643,7 @@ static void mprgp_set(Qp_workspace *w)
   w->abar = MPRGP_ABAR / w->normA;
   w->restart = 1;
 }
-#line 1169 "paper/state.nw"
+#line 1173 "paper/state.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -662,7 +662,7 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 1198 "paper/state.nw"
+#line 1202 "paper/state.nw"
 static int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   int code = proportional(w) ? cg_or_expansion_step(w, st)
@@ -672,7 +672,7 @@ static int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 1216 "paper/state.nw"
+#line 1220 "paper/state.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -686,7 +686,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 1237 "paper/state.nw"
+#line 1241 "paper/state.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -703,7 +703,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   w->restart = 1;
   return STATUS_OK;
 }
-#line 1268 "paper/state.nw"
+#line 1272 "paper/state.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   int n = w->n;
@@ -725,7 +725,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 1298 "paper/state.nw"
+#line 1302 "paper/state.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -735,7 +735,7 @@ static double feasible_step(const Qp_workspace *w)
       af = fmin(af, (w->x[i] - w->lo[i]) / w->p[i]);
   return af;
 }
-#line 1315 "paper/state.nw"
+#line 1319 "paper/state.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -747,7 +747,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, w->z, w->q) / pap;
   for (int i = 0; i < w->n; i++) w->p[i] = w->z[i] - gamma * w->p[i];
 }
-#line 1345 "paper/state.nw"
+#line 1349 "paper/state.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {

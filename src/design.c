@@ -1,0 +1,473 @@
+#line 123 "paper/design.nw"
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "design.h"
+
+#line 401 "paper/design.nw"
+typedef struct {              /* points of a piecewise linear derivative */
+  double *x, *d;              /* cap: stored (xi, eta) of each point */
+  int bot, top, cap;          /* live points bot..top-1; top-1 nearest the zero */
+  double s, c, e;             /* point (xi, eta) is x = xi + s, d = eta + c xi + e */
+} Group;
+#line 409 "paper/design.nw"
+typedef struct {
+  const Design_set *B;
+  int n;                      /* N+1 */
+  double *Y;                  /* n: the point projected (a copy: X may alias Y) */
+  double *Z;                  /* n: Y - mu w, projected onto C */
+  double *xstar;              /* n: the minimiser of V_i over [0, C0] */
+  double *X;                  /* n: P_C(Z) */
+  double *lo, *hi;            /* n: intervals of the slope multipliers */
+  signed char *edge, *box;    /* n: active at X: step i +1 up, -1 down,
+                                 2 both (delta = 0); X_i -1 at 0, +1 at C0 */
+  signed char *edge0, *box0;  /* n: those of the previous evaluation */
+  Group L, R;                 /* the derivative left and right of its zero */
+  double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
+} Work;
+#line 143 "paper/design.nw"
+Design_set design_set(const Scene *s)
+{
+  Design_set B;
+  double width = s->b - s->a, slack = 1e-12 * s->gamma * width;
+  B.N = s->N;
+  B.h = width / s->N;
+  B.C0 = s->C0;
+  B.delta = s->C1 * B.h;
+  B.area = s->gamma * width - s->C2;
+  if (B.area < 0 && B.area >= -slack) B.area = 0;
+  if (B.area > B.C0 * (B.N * B.h) && B.area <= B.C0 * (B.N * B.h) + slack)
+    B.area = B.C0 * (B.N * B.h);
+  return B;
+}
+#line 160 "paper/design.nw"
+static double weight(const Design_set *B, int i)
+{
+  return i == 0 || i == B->N ? 0.5 * B->h : B->h;
+}
+
+double design_area(const Design_set *B, const double *X)
+{
+  double sum = 0.5 * (X[0] + X[B->N]);
+  for (int i = 1; i < B->N; i++) sum += X[i];
+  return B->h * sum;
+}
+#line 175 "paper/design.nw"
+double design_violation(const Design_set *B, const double *X)
+{
+  double v = 0;
+  for (int i = 0; i <= B->N; i++) {
+    if (!isfinite(X[i])) return HUGE_VAL;
+    v = fmax(v, fmax(-X[i], X[i] - B->C0) / B->C0);
+  }
+  for (int i = 0; i < B->N; i++)
+    v = fmax(v, (fabs(X[i + 1] - X[i]) - B->delta) / B->C0);
+  return fmax(v, fabs(design_area(B, X) - B->area) / (B->C0 * B->N * B->h));
+}
+#line 227 "paper/design.nw"
+static void evaluate(Work *w, double mu);
+static int newton_on_pieces(Work *w, double lo, double hi, Status *st);
+
+static int find_multiplier(Work *w, Status *st)
+{
+  const Design_set *B = w->B;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (int i = 0; i < w->n; i++) {
+    lo = fmin(lo, (w->Y[i] - B->C0) / weight(B, i));
+    hi = fmax(hi, w->Y[i] / weight(B, i));
+  }
+  evaluate(w, lo);
+  if (w->g <= 0) return STATUS_OK;              /* S = C0 (b-a): X = C0 */
+  evaluate(w, hi);
+  if (w->g >= 0) return STATUS_OK;              /* S = 0: X = 0 */
+  return newton_on_pieces(w, lo, hi, st);
+}
+#line 248 "paper/design.nw"
+static void chain_project(Work *w);
+static double piece_slope(const Work *w);
+
+static void evaluate(Work *w, double mu)
+{
+  w->mu = mu;
+  for (int i = 0; i < w->n; i++) w->Z[i] = w->Y[i] - mu * weight(w->B, i);
+  chain_project(w);
+  w->g = design_area(w->B, w->X) - w->B->area;
+  w->slope = piece_slope(w);
+}
+#line 264 "paper/design.nw"
+static double piece_slope(const Work *w)
+{
+  double slope = 0;
+  for (int first = 0, last; first < w->n; first = last + 1) {
+    double sum = 0;
+    int fixed = 0;
+    for (last = first; ; last++) {
+      sum += weight(w->B, last);
+      fixed |= w->box[last] != 0;
+      if (last == w->n - 1 || !w->edge[last]) break;
+    }
+    if (!fixed) slope -= sum * sum / (last - first + 1);
+  }
+  return slope;
+}
+#line 297 "paper/design.nw"
+static int same_piece(const Work *w);
+static void keep_piece(Work *w);
+
+static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
+{
+  const int limit = 3 * (DBL_MAX_EXP - DBL_MIN_EXP + DBL_MANT_DIG);
+  double mu = lo < 0 && 0 < hi ? 0 : lo + 0.5 * (hi - lo);
+  double width1 = HUGE_VAL, width2 = HUGE_VAL;
+  int newton = 0;
+  for (int it = 0; it < limit; it++) {
+    evaluate(w, mu);
+    
+#line 318 "paper/design.nw"
+if (fabs(w->g) <= w->n * DBL_EPSILON * w->B->C0 * w->B->N * w->B->h
+    || (newton && same_piece(w)))
+  return STATUS_OK;
+#line 309 "paper/design.nw"
+    
+#line 324 "paper/design.nw"
+if (w->g > 0) lo = mu; else hi = mu;
+int stalled = hi - lo > 0.5 * width2;
+width2 = width1;
+width1 = hi - lo;
+keep_piece(w);
+#line 310 "paper/design.nw"
+    
+#line 333 "paper/design.nw"
+double mid = lo + 0.5 * (hi - lo);
+if (!(lo < mid && mid < hi)) return STATUS_OK;
+double step = w->slope < 0 ? mu - w->g / w->slope : mid;
+newton = !stalled && lo < step && step < hi;
+mu = newton ? step : mid;
+#line 311 "paper/design.nw"
+  }
+  return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
+                    "was not found in %d evaluations", limit);
+}
+#line 342 "paper/design.nw"
+static int same_piece(const Work *w)
+{
+  return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
+}
+
+static void keep_piece(Work *w)
+{
+  memcpy(w->edge0, w->edge, w->n);
+  memcpy(w->box0, w->box, w->n);
+}
+#line 426 "paper/design.nw"
+static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
+static double point_d(const Group *G, int k)
+{
+  return G->d[k] + G->c * G->x[k] + G->e;
+}
+
+static void point_set(Group *G, int k, double x, double d)
+{
+  G->x[k] = x - G->s;
+  G->d[k] = d - G->c * G->x[k] - G->e;
+}
+#line 441 "paper/design.nw"
+static void push(Group *G, double x, double d)
+{
+  if (G->top == G->cap) {
+    int live = G->top - G->bot;
+    memmove(G->x, G->x + G->bot, live * sizeof *G->x);
+    memmove(G->d, G->d + G->bot, live * sizeof *G->d);
+    G->bot = 0;
+    G->top = live;
+  }
+  point_set(G, G->top++, x, d);
+}
+
+static void move_top(Group *from, Group *to)
+{
+  from->top--;
+  push(to, point_x(from, from->top), point_d(from, from->top));
+}
+#line 463 "paper/design.nw"
+static void add_linear(Group *G, double z) { G->c += 1; G->e += G->s - z; }
+static double argmin_V(Work *w);
+static void step_V(Work *w, double xstar, double z);
+static void backtrack(Work *w);
+
+static void chain_project(Work *w)
+{
+  Group *L = &w->L, *R = &w->R;
+  L->bot = L->top = R->bot = R->top = 0;
+  L->s = L->c = L->e = R->s = R->c = R->e = 0;
+  push(R, w->B->C0, 0);
+  push(R, 0, 0);
+  add_linear(L, w->Z[0]);
+  add_linear(R, w->Z[0]);
+  w->xstar[0] = argmin_V(w);
+  for (int i = 1; i < w->n; i++) {
+    step_V(w, w->xstar[i - 1], w->Z[i]);
+    w->xstar[i] = argmin_V(w);
+  }
+  backtrack(w);
+}
+#line 489 "paper/design.nw"
+static void cut(Group *G, const Group *other, double bound, double side);
+
+static void step_V(Work *w, double xstar, double z)
+{
+  Group *L = &w->L, *R = &w->R;
+  push(L, xstar, 0);
+  push(R, xstar, 0);
+  L->s -= w->B->delta;
+  R->s += w->B->delta;
+  add_linear(L, z);
+  add_linear(R, z);
+  cut(L, R, 0, -1);
+  cut(R, L, w->B->C0, +1);
+}
+#line 512 "paper/design.nw"
+static void cut(Group *G, const Group *other, double bound, double side)
+{
+  while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
+    const Group *H = G;
+    int k = G->bot + 1;
+    if (k == G->top) { H = other; k = other->top - 1; }
+    if (k < H->bot) { point_set(G, G->bot, bound, point_d(G, G->bot)); return; }
+    double xp = point_x(G, G->bot), dp = point_d(G, G->bot);
+    double xq = point_x(H, k), dq = point_d(H, k);
+    if (side * (xq - bound) >= 0) { G->bot++; continue; }
+    point_set(G, G->bot, bound, dp + (dq - dp) * (bound - xp) / (xq - xp));
+    return;
+  }
+}
+#line 533 "paper/design.nw"
+static double argmin_V(Work *w)
+{
+  Group *L = &w->L, *R = &w->R;
+  while (L->top > L->bot && point_d(L, L->top - 1) >= 0) move_top(L, R);
+  while (R->top > R->bot && point_d(R, R->top - 1) < 0) move_top(R, L);
+  if (L->top == L->bot) return 0;
+  if (R->top == R->bot) return w->B->C0;
+  double xl = point_x(L, L->top - 1), dl = point_d(L, L->top - 1);
+  double xr = point_x(R, R->top - 1), dr = point_d(R, R->top - 1);
+  double x = xr > xl ? xl - dl * (xr - xl) / (dr - dl) : xl;
+  return fmin(fmax(x, fmax(xl, 0)), fmin(xr, w->B->C0));
+}
+#line 551 "paper/design.nw"
+static void backtrack(Work *w)
+{
+  double *X = w->X, delta = w->B->delta;
+  X[w->n - 1] = w->xstar[w->n - 1];
+  for (int i = w->n - 1; i > 0; i--) {
+    double x = w->xstar[i - 1];
+    w->edge[i - 1] = delta == 0 ? 2 : x < X[i] - delta ? 1
+                   : x > X[i] + delta ? -1 : 0;
+    X[i - 1] = delta == 0 ? X[i] : fmin(fmax(x, X[i] - delta), X[i] + delta);
+  }
+  w->edge[w->n - 1] = 0;
+  for (int i = 0; i < w->n; i++)
+    w->box[i] = X[i] == 0 ? -1 : X[i] == w->B->C0 ? 1 : 0;
+}
+#line 595 "paper/design.nw"
+static void range_of_beta(const Work *w, int j, double *lo, double *hi)
+{
+  *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
+  *hi = w->box[j] > 0 ? HUGE_VAL : 0;
+}
+
+static void range_of_nu(const Work *w, int j, double *lo, double *hi)
+{
+  int e = j < w->n - 1 ? w->edge[j] : 0;
+  *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
+  *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
+}
+#line 611 "paper/design.nw"
+static void sweep_forward(Work *w)
+{
+  double lo = 0, hi = 0, blo, bhi, nlo, nhi;
+  for (int j = 0; j < w->n; j++) {
+    double r = w->Z[j] - w->X[j];
+    range_of_beta(w, j, &blo, &bhi);
+    range_of_nu(w, j, &nlo, &nhi);
+    lo = fmax(lo - r + blo, nlo);
+    hi = fmin(hi - r + bhi, nhi);
+    if (lo > hi) lo = hi = hi < nlo ? nlo : nhi;   /* empty by rounding */
+    w->lo[j] = lo;
+    w->hi[j] = hi;
+  }
+}
+#line 630 "paper/design.nw"
+static void sweep_backward(const Work *w, Design_multipliers *m)
+{
+  double nu = 0, blo, bhi;
+  for (int j = w->n - 1; j >= 0; j--) {
+    double target = nu + w->Z[j] - w->X[j];
+    double prev = j > 0 ? fmin(fmax(target, w->lo[j - 1]), w->hi[j - 1]) : 0;
+    range_of_beta(w, j, &blo, &bhi);
+    double beta = fmin(fmax(target - prev, blo), bhi);
+    m->upper[j] = fmax(beta, 0);
+    m->lower[j] = fmax(-beta, 0);
+    if (j > 0) { m->up[j - 1] = fmax(prev, 0); m->down[j - 1] = fmax(-prev, 0); }
+    nu = prev;
+  }
+  m->mu = w->mu;
+}
+#line 654 "paper/design.nw"
+static int check_set(const Design_set *B, Status *st);
+static int check_point(const Design_set *B, const double *Y,
+                       const char *what, Status *st);
+static Work *work_new(const Design_set *B, Status *st);
+static void work_free(Work *w);
+
+int design_project(const Design_set *B, const double *Y, double *X,
+                   Design_multipliers *mult, Status *st)
+{
+  int rc;
+  if ((rc = check_set(B, st)) || (rc = check_point(B, Y, "the point to project", st)))
+    return rc;
+  if (mult && mult->N != B->N)
+    return status_set(st, STATUS_INPUT, "design: multipliers made for N = %d "
+                      "passed with a design set of N = %d", mult->N, B->N);
+  Work *w = work_new(B, st);
+  if (!w) return STATUS_SYSTEM;
+  memcpy(w->Y, Y, w->n * sizeof *Y);
+  if (!(rc = find_multiplier(w, st))) {
+    memcpy(X, w->X, w->n * sizeof *X);
+    if (mult) { sweep_forward(w); sweep_backward(w, mult); }
+  }
+  work_free(w);
+  return rc;
+}
+#line 682 "paper/design.nw"
+static int check_set(const Design_set *B, Status *st)
+{
+  if (!B || B->N < 1)
+    return status_set(st, STATUS_INPUT, "design: N = %d < 1", B ? B->N : 0);
+  if (!(B->h > 0 && isfinite(B->h)))
+    return status_set(st, STATUS_INPUT, "design: h = %g is not positive", B->h);
+  if (!(B->C0 > 0 && isfinite(B->C0)))
+    return status_set(st, STATUS_INPUT, "design: C0 = %g is not positive", B->C0);
+  if (!(B->delta >= 0 && isfinite(B->delta)))
+    return status_set(st, STATUS_INPUT, "design: the slope bound C1 h = %g "
+                      "is negative", B->delta);
+  if (!(B->area >= 0 && B->area <= B->C0 * (B->N * B->h)))
+    return status_set(st, STATUS_INPUT, "design: B is empty: the area S = %g "
+                      "is outside [0, C0 (b-a)] = [0, %g]", B->area,
+                      B->C0 * (B->N * B->h));
+  return STATUS_OK;
+}
+
+static int check_point(const Design_set *B, const double *Y,
+                       const char *what, Status *st)
+{
+  for (int i = 0; i <= B->N; i++)
+    if (!isfinite(Y[i]))
+      return status_set(st, STATUS_NUMERIC, "design: component %d of %s "
+                        "is %g", i, what, Y[i]);
+  return STATUS_OK;
+}
+#line 713 "paper/design.nw"
+static Work *work_new(const Design_set *B, Status *st)
+{
+  Work *w = calloc(1, sizeof *w);
+  if (!w) { status_set(st, STATUS_SYSTEM, "design: out of memory"); return NULL; }
+  w->B = B;
+  w->n = B->N + 1;
+  w->L.cap = w->R.cap = 2 * w->n + 2;
+  w->Y = malloc((6 * (size_t) w->n + 4 * (size_t) w->L.cap) * sizeof *w->Y);
+  w->edge = malloc(4 * (size_t) w->n);
+  if (!w->Y || !w->edge) {
+    work_free(w);
+    status_set(st, STATUS_SYSTEM, "design: out of memory for N = %d", B->N);
+    return NULL;
+  }
+  
+#line 741 "paper/design.nw"
+w->Z = w->Y + w->n;
+w->xstar = w->Z + w->n;
+w->X = w->xstar + w->n;
+w->lo = w->X + w->n;
+w->hi = w->lo + w->n;
+w->L.x = w->hi + w->n;
+w->L.d = w->L.x + w->L.cap;
+w->R.x = w->L.d + w->L.cap;
+w->R.d = w->R.x + w->R.cap;
+w->box = w->edge + w->n;
+w->edge0 = w->box + w->n;
+w->box0 = w->edge0 + w->n;
+#line 728 "paper/design.nw"
+  return w;
+}
+
+static void work_free(Work *w)
+{
+  if (!w) return;
+  free(w->Y);
+  free(w->edge);
+  free(w);
+}
+#line 756 "paper/design.nw"
+Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
+{
+  if (check_set(B, st)) return NULL;
+  Design_multipliers *m = calloc(1, sizeof *m);
+  double *v = malloc((4 * (size_t) B->N + 2) * sizeof *v);
+  if (!m || !v) {
+    free(m);
+    free(v);
+    status_set(st, STATUS_SYSTEM, "design: out of memory for multipliers");
+    return NULL;
+  }
+  m->N = B->N;
+  m->lower = v;
+  m->upper = v + B->N + 1;
+  m->up = m->upper + B->N + 1;
+  m->down = m->up + B->N;
+  return m;
+}
+
+void design_multipliers_free(Design_multipliers *m)
+{
+  if (!m) return;
+  free(m->lower);
+  free(m);
+}
+#line 810 "paper/design.nw"
+static double default_step(const Design_set *B, const double *G)
+{
+  double Gmax = 0;
+  for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
+  return Gmax > 0 ? B->C0 / Gmax : 1;
+}
+#line 820 "paper/design.nw"
+static void scale_multipliers(Design_multipliers *m, double f);
+
+int design_kkt(const Design_set *B, const double *X, const double *G,
+               double t, double *P, Design_multipliers *mult,
+               double *residual, Status *st)
+{
+  int rc, n = B->N + 1;
+  if ((rc = check_set(B, st)) || (rc = check_point(B, X, "the design", st))
+      || (rc = check_point(B, G, "the gradient", st))) return rc;
+  if (!(t > 0) || !isfinite(t)) t = default_step(B, G);
+  double *Y = malloc(2 * (size_t) n * sizeof *Y), *Q = P ? P : Y + n;
+  if (!Y) return status_set(st, STATUS_SYSTEM, "design: out of memory");
+  for (int i = 0; i < n; i++) Y[i] = X[i] - t * G[i];
+  if (!(rc = design_project(B, Y, Q, mult, st))) {
+    double r = 0;
+    for (int i = 0; i < n; i++) r = fmax(r, fabs(X[i] - Q[i]));
+    *residual = r / t;
+    if (mult) scale_multipliers(mult, 1 / t);
+  }
+  free(Y);
+  return rc;
+}
+#line 845 "paper/design.nw"
+static void scale_multipliers(Design_multipliers *m, double f)
+{
+  for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }
+  for (int i = 0; i < m->N; i++) { m->up[i] *= f; m->down[i] *= f; }
+  m->mu *= f;
+}

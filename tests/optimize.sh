@@ -1,0 +1,45 @@
+# optimize.sh: the shape optimisation (Section 4.4, Algorithm 4.1) from the
+# starts of Examples 5.1, 5.2 and the flat variant, with both optimisers.
+. tests/lib.sh
+value() { awk -v k=$1 '$1 == k { print $2 }' $2/summary.dat; }
+# every iterate in B: 0 <= X <= C0, |X_{i+1} - X_i| <= C1 h, h sum trapezoids = S,
+# each to 1e-12 (relative to C0, and to C0 (b - a) for the area)
+in_B() { awk -v C0=0.05 -v d=0.025*0.25 -v S=0.09 -v L=4 -v h=0.25 '
+  BEGIN { d = 0.025 * 0.25 }
+  /^#/ { next }
+  NF == 0 { if (n) done(); next }
+  { if ($2 == 0) { n = 0; area = 0 } x[n++] = $4 }
+  function done(  i, v) {
+    for (i = 0; i < n; i++) {
+      if (x[i] < -1e-12 * C0 || x[i] > C0 * (1 + 1e-12)) bad = 1
+      if (i > 0 && (x[i] - x[i-1] > d + 1e-12 * C0 || x[i-1] - x[i] > d + 1e-12 * C0)) bad = 1
+      if (i > 0) area += h * (x[i] + x[i-1]) / 2
+    }
+    v = (area - S) / (C0 * L); if (v < 0) v = -v; if (v > 1e-12) bad = 1
+    n = 0 }
+  END { if (n) done(); exit bad }' $1; }
+for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene; do
+  name=$(basename $scene .scene)
+  for method in slsqp projgrad; do
+    out=$TMP/$name-$method
+    if ! $BIN optimize $scene -o $out -s optimizer.method=$method >$TMP/log 2>$TMP/err; then
+      fail "$name $method: $(cat $TMP/err)"; continue
+    fi
+    check "$name $method: stops converged ($(value stop_reason $out), pg $(value projected_gradient $out))" \
+      [ "$(value stop_reason $out)" = converged ]
+    check "$name $method: every iterate lies in B to 1e-12" in_B $out/iterates.dat
+    check "$name $method: E decreases, $(value initial_energy $out) -> $(value energy $out)" \
+      awk -v a=$(value initial_energy $out) -v b=$(value energy $out) 'BEGIN { exit !(b < a) }'
+    check "$name $method: the contact pressure is more even at the optimum (cv $(value contact_pressure_cv_initial $out) -> $(value contact_pressure_cv_final $out))" \
+      awk -v a=$(value contact_pressure_cv_initial $out) -v b=$(value contact_pressure_cv_final $out) 'BEGIN { exit !(b < a) }'
+  done
+  check "$name projgrad: E never increases along Algorithm 4.1" \
+    awk '!/^#/ { if (n++ && $2 > prev) bad = 1; prev = $2 } END { exit bad }' $TMP/$name-projgrad/history.dat
+  a=$TMP/$name-slsqp; b=$TMP/$name-projgrad
+  [ -f $a/summary.dat ] && [ -f $b/summary.dat ] || continue
+  check "$name: both optimisers reach the same E to 1e-6 ($(value energy $a), $(value energy $b))" \
+    awk -v a=$(value energy $a) -v b=$(value energy $b) 'BEGIN { d = (a - b) / a; exit !(d < 1e-6 && d > -1e-6) }'
+  check "$name: both optimisers reach the same shape to 1e-4 C0" \
+    numdiff -q -a 5e-6 -r 0 $a/final/shape.dat $b/final/shape.dat
+done
+finish

@@ -1,0 +1,84 @@
+/* test_gradient: formula (4.8) at a weakly active node, one that touches
+   the foundation with zero contact force.  Q is not differentiable there,
+   E is: the analytic derivative must agree with the one-sided differences
+   from both sides (the node leaves contact on one side, presses on the
+   other).  The weakly active design is found by bisection on alpha_i
+   between a design where node i is free and one where it presses. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cholmod.h>
+#include "check.h"
+#include "scene.h"
+#include "model.h"
+#include "sensitivity.h"
+
+static double energy(Model *md, double *X)
+{
+  Status st;
+  if (model_solve(md, X, &st)) { printf("# %s\n", st.msg); return NAN; }
+  return md->energy;
+}
+
+static void weakly_active(const char *path, Plane_model model)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  cholmod_start(&cm);
+  cm.print = 0;
+  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
+  s.model = model;
+  Model *md = model_new(&s, &cm, &st);
+  double *X = malloc((s.N + 1) * sizeof *X), *G = malloc((s.N + 1) * sizeof *G);
+  memcpy(X, s.alpha0, (s.N + 1) * sizeof *X);
+  energy(md, X);
+  int i = -1, c = -1;                 /* the last free node before the zone */
+  for (int k = 0; k < md->dofs->nc; k++) {
+    int col = md->dofs->contact_col[k];
+    if (md->Q[md->dofs->contact[k]] > -X[col] && k + 1 < md->dofs->nc
+        && md->Q[md->dofs->contact[k + 1]] <= -X[col + 1]) { i = col; c = k; }
+  }
+  if (!check(i >= 0, "%s: a free node next to the contact zone", path)) return;
+  double hi = X[i], lo = 0;             /* free at hi, pressing at lo = 0 */
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * s.C0; it++) {
+    X[i] = 0.5 * (lo + hi);
+    energy(md, X);
+    if (md->Q[md->dofs->contact[c]] > -X[i]) hi = X[i]; else lo = X[i];
+  }
+  X[i] = hi;
+  energy(md, X);
+  grad_energy(md, G, &st);
+  double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0, Gmax = 0;
+  for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
+  for (int k = 0; k <= s.N; k++) Gmax = fmax(Gmax, fabs(G[k]));
+  check(gap <= 1e-12 * s.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+        "%s: node %d touches (gap %.1e m) with force %.1e max T: weakly active",
+        path, i, gap, fabs(md->T[c]) / Tmax);
+  double x0 = X[i], E0 = md->energy, h = 1e-5 * s.C0, Ep, Ep2, Em, Em2;
+  X[i] = x0 + h; Ep = energy(md, X);
+  X[i] = x0 + 2 * h; Ep2 = energy(md, X);
+  X[i] = x0 - h; Em = energy(md, X);
+  X[i] = x0 - 2 * h; Em2 = energy(md, X);
+  X[i] = x0;
+  double forward = (-3 * E0 + 4 * Ep - Ep2) / (2 * h);
+  double backward = (3 * E0 - 4 * Em + Em2) / (2 * h);
+  check(fabs(forward - G[i]) <= 1e-6 * Gmax,
+        "%s: dE/dX_%d = %.9g agrees with the forward difference %.9g (%.1e)",
+        path, i, G[i], forward, fabs(forward - G[i]) / Gmax);
+  check(fabs(backward - G[i]) <= 1e-6 * Gmax,
+        "%s: dE/dX_%d agrees with the backward difference %.9g (%.1e)",
+        path, i, backward, fabs(backward - G[i]) / Gmax);
+  free(X); free(G);
+  model_free(md);
+  scene_free(&s);
+  cholmod_finish(&cm);
+}
+
+int main(void)
+{
+  weakly_active("data/example-5.1.scene", MODEL_PLANE_STRESS);
+  weakly_active("data/example-5.1.scene", MODEL_PLANE_STRAIN);
+  weakly_active("data/example-5.2.scene", MODEL_PLANE_STRESS);
+  return check_done();
+}
