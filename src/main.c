@@ -358,9 +358,37 @@ static int write_history(Output *o, const Scene *s, const History *h,
   return output_close(o, f, st);
 }
 
+#line 441 "paper/main.nw"
+static int write_multipliers(Output *o, const Scene *s, const Model *md,
+                             const double *X, double *mu, Status *st)
+{
+  Design_set B = design_set(s);
+  int n = s->N + 1, rc;
+  double *G = malloc(n * sizeof *G), residual;
+  Design_multipliers *m = design_multipliers_new(&B, st);
+  FILE *f = NULL;
+  if (!m) rc = st->code;
+  else if (!G) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  else if (!(rc = grad_energy(md, G, st))
+           && !(rc = design_kkt(&B, X, G, -1, NULL, m, &residual, st))
+           && !(rc = (f = output_open(o, "multipliers.dat", st)) ? 0 : st->code)) {
+    fprintf(f, "# i x1[m] alpha[m] dE/dX_i lower(-X_i<=0) upper(X_i-C0<=0) "
+               "rise(X_i+1-X_i-d<=0) fall(X_i-X_i+1-d<=0); mu = %.15g\n", m->mu);
+    for (int i = 0; i < n; i++)
+      fprintf(f, "%d %.10g %.17g %.15g %.15g %.15g %.15g %.15g\n", i,
+              s->a + i * B.h, X[i], G[i], m->lower[i], m->upper[i],
+              i < s->N ? m->up[i] : 0.0, i < s->N ? m->down[i] : 0.0);
+    *mu = m->mu;
+    rc = output_close(o, f, st);
+  }
+  free(G);
+  design_multipliers_free(m);
+  return rc;
+}
+
 static int write_opt_summary(Output *o, const Scene *s, const Model *md,
                              const Opt_report *r, double E0, double cv0,
-                             double moved, Status *st)
+                             double moved, double mu, Status *st)
 {
   FILE *f = output_open(o, "summary.dat", st);
   if (!f) return st->code;
@@ -374,18 +402,18 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
   fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           cv0, model_pressure_cv(md));
-  fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\n", md->report.active,
-          md->report.kkt);
+  fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
+          md->report.active, md->report.kkt, mu);
   return output_close(o, f, st);
 }
-#line 456 "paper/main.nw"
+#line 492 "paper/main.nw"
 static int optimize_run(const Args *a, const Scene *s, Model *md, double *X,
                         Output *o, Status *st)
 {
   Design_set B = design_set(s);
   History h = { 0, 0, s->N + 1, NULL, NULL, 0 };
   Opt_report r;
-  double moved, E0, cv0;
+  double moved, E0, cv0, mu = 0;
   int rc;
   if ((rc = feasible_start(s, &B, X, &moved, st)) || (rc = model_solve(md, X, st))
       || (rc = output_state(o, "initial", md, X, st)))
@@ -395,8 +423,9 @@ static int optimize_run(const Args *a, const Scene *s, Model *md, double *X,
   if (!(rc = opt_minimize(md, &B, s, X, monitor, &h, &r, st))) {
     if (h.failed) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
     else if (!(rc = output_state(o, "final", md, X, st))
-             && !(rc = write_history(o, s, &h, st)))
-      rc = write_opt_summary(o, s, md, &r, E0, cv0, moved, st);
+             && !(rc = write_history(o, s, &h, st))
+             && !(rc = write_multipliers(o, s, md, X, &mu, st)))
+      rc = write_opt_summary(o, s, md, &r, E0, cv0, moved, mu, st);
   }
   if (!rc)
     printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
@@ -429,7 +458,7 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 513 "paper/main.nw"
+#line 550 "paper/main.nw"
 typedef struct {
   const char *name;
   const char *usage;
