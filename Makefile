@@ -11,14 +11,17 @@ NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
 # Modules tangled into src/ (each has a .h and a .c), and the program.
 MODULES := status scene mesh fem state model sensitivity design optimize output
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c
-OBJ     := $(MODULES:%=build/%.o)
+# make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
+# apart in build/san so that the two builds never mix.
+B       := $(if $(filter 1,$(SAN)),build/san,build)
+PROGRAM := $(if $(filter 1,$(SAN)),build/san/contactopt,bin/contactopt)
+OBJ     := $(MODULES:%=$(B)/%.o)
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
            -I/usr/include/suitesparse -Isrc
 LDLIBS  := -lcholmod -lnlopt -lgsl -lgslcblas -linih -lm
-# make SAN=1 check: the whole suite under AddressSanitizer and UBSan.
 ifeq ($(SAN),1)
 CFLAGS  += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer
 LDFLAGS += -fsanitize=address,undefined
@@ -61,22 +64,22 @@ tangle-check: | deps
 	  || { echo "tangle-check: src/ differs from paper/*.nw (edit the .nw, run make)"; exit 1; }
 
 # ---- building ------------------------------------------------------------------
-build/%.o: src/%.c | src/.tangled
-	@mkdir -p build
+$(B)/%.o: src/%.c | src/.tangled
+	@mkdir -p $(B)
 	$(CC) $(CFLAGS) -MMD -MP -c -o $@ $<
-bin/contactopt: build/main.o $(OBJ)
-	@mkdir -p bin
+$(PROGRAM): $(B)/main.o $(OBJ)
+	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
--include $(wildcard build/*.d build/tests/*.d)
+-include $(wildcard $(B)/*.d $(B)/tests/*.d)
 
 # Test programs link the library modules directly.
-TEST_PROGS := $(patsubst tests/%.c,build/tests/%,$(wildcard tests/*.c))
-build/tests/%: tests/%.c $(OBJ) tests/check.h
-	@mkdir -p build/tests
+TEST_PROGS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/*.c))
+$(B)/tests/%: tests/%.c $(OBJ) tests/check.h
+	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: bin/contactopt $(TEST_PROGS) tangle-check
-	@sh tests/run
+check: $(PROGRAM) $(TEST_PROGS) tangle-check
+	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
 
 bench: bin/contactopt
 	@sh tests/bench/state.sh

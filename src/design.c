@@ -5,23 +5,20 @@
 #include <string.h>
 #include "design.h"
 
-#line 419 "paper/design.nw"
+#line 407 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
-  int *jump;                  /* cap: +-k if the next point in x is at the same
-                                 place, the jump made at step k; else 0 */
   int bot, top, cap;          /* live points bot..top-1; top-1 nearest the zero */
   double s, c, e;             /* point (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Group;
-#line 429 "paper/design.nw"
+#line 415 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
+  double delta;               /* min(delta, C0): the slope bound of the pass */
   double *Y;                  /* n: the point projected (a copy: X may alias Y) */
   double *Z;                  /* n: Y - mu w, projected onto C */
   double *xstar;              /* n: the minimiser of V_i over [0, C0] */
-  int *at_jump;               /* n: the jump of V_i' that xstar[i] is on, or 0 */
-  int pinned;                 /* the last xstar is on a jump or at an end */
   double *X;                  /* n: P_C(Z) */
   double *lo, *hi;            /* n: intervals of the slope multipliers */
   signed char *edge, *box;    /* n: active at X: step i +1 up, -1 down,
@@ -164,100 +161,78 @@ static void keep_piece(Work *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 448 "paper/design.nw"
+#line 433 "paper/design.nw"
 static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Group *G, int k)
 {
   return G->d[k] + G->c * G->x[k] + G->e;
 }
 
-static void point_set(Group *G, int k, double x, double d, int jump)
+static void point_set(Group *G, int k, double x, double d)
 {
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
-  G->jump[k] = jump;
 }
-#line 466 "paper/design.nw"
-static void make_room(Group *G)
+#line 448 "paper/design.nw"
+static void push(Group *G, double x, double d)
 {
-  if (G->top < G->cap) return;
-  int live = G->top - G->bot;
-  memmove(G->x, G->x + G->bot, live * sizeof *G->x);
-  memmove(G->d, G->d + G->bot, live * sizeof *G->d);
-  memmove(G->jump, G->jump + G->bot, live * sizeof *G->jump);
-  G->bot = 0;
-  G->top = live;
+  if (G->top == G->cap) {
+    int live = G->top - G->bot;
+    memmove(G->x, G->x + G->bot, live * sizeof *G->x);
+    memmove(G->d, G->d + G->bot, live * sizeof *G->d);
+    G->bot = 0;
+    G->top = live;
+  }
+  point_set(G, G->top++, x, d);
 }
 
-static void push(Group *G, double x, double d, int jump)
-{
-  make_room(G);
-  point_set(G, G->top++, x, d, jump);
-}
-
-static void push_partner(Group *G, int jump)
-{
-  make_room(G);
-  double xi = G->x[G->top - 1];
-  G->x[G->top] = xi;
-  G->d[G->top] = -G->c * xi - G->e;
-  G->jump[G->top++] = jump;
-}
-#line 495 "paper/design.nw"
 static void move_top(Group *from, Group *to)
 {
   int k = --from->top;
-  push(to, point_x(from, k), point_d(from, k), from->jump[k]);
+  push(to, point_x(from, k), point_d(from, k));
 }
-#line 505 "paper/design.nw"
+#line 471 "paper/design.nw"
 static void add_linear(Group *G, double z) { G->c += 1; G->e += G->s - z; }
-static double argmin_V(Work *w, int i);
-static void step_V(Work *w, int i);
+static double argmin_V(Work *w);
+static void step_V(Work *w, double xstar, double z);
 static void backtrack(Work *w);
+static void identify(Work *w);
+static void polish(Work *w);
 
 static void chain_project(Work *w)
 {
   Group *L = &w->L, *R = &w->R;
   L->bot = L->top = R->bot = R->top = 0;
   L->s = L->c = L->e = R->s = R->c = R->e = 0;
-  push(R, w->B->C0, 0, 0);
-  push(R, 0, 0, 0);
+  push(R, w->B->C0, 0);
+  push(R, 0, 0);
   add_linear(L, w->Z[0]);
   add_linear(R, w->Z[0]);
-  w->xstar[0] = argmin_V(w, 0);
+  w->xstar[0] = argmin_V(w);
   for (int i = 1; i < w->n; i++) {
-    step_V(w, i);
-    w->xstar[i] = argmin_V(w, i);
+    step_V(w, w->xstar[i - 1], w->Z[i]);
+    w->xstar[i] = argmin_V(w);
   }
   backtrack(w);
+  identify(w);
+  polish(w);
 }
-#line 534 "paper/design.nw"
+#line 501 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side);
 
-static void step_V(Work *w, int i)
+static void step_V(Work *w, double xstar, double z)
 {
   Group *L = &w->L, *R = &w->R;
-  double xstar = w->xstar[i - 1];
-  
-#line 551 "paper/design.nw"
-if (w->pinned && L->top > L->bot) {
-  L->jump[L->top - 1] = -i;
-  push_partner(L, 0);
-} else
-  push(L, xstar, 0, 0);
-if (w->pinned && R->top > R->bot)
-  push_partner(R, +i);
-else
-  push(R, xstar, 0, 0);
-#line 541 "paper/design.nw"
-  L->s -= w->B->delta;
-  R->s += w->B->delta;
-  add_linear(L, w->Z[i]);
-  add_linear(R, w->Z[i]);
+  push(L, xstar, 0);
+  push(R, xstar, 0);
+  L->s -= w->delta;
+  R->s += w->delta;
+  add_linear(L, z);
+  add_linear(R, z);
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 570 "paper/design.nw"
+#line 524 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -265,58 +240,76 @@ static void cut(Group *G, const Group *other, double bound, double side)
     int k = G->bot + 1;
     if (k == G->top) { H = other; k = other->top - 1; }
     double xp = point_x(G, G->bot), dp = point_d(G, G->bot);
-    if (k < H->bot) { point_set(G, G->bot, bound, dp, 0); return; }
+    if (k < H->bot) { point_set(G, G->bot, bound, dp); return; }
     double xq = point_x(H, k), dq = point_d(H, k);
     if (side * (xq - bound) >= 0) { G->bot++; continue; }
-    point_set(G, G->bot, bound, dp + (dq - dp) * (bound - xp) / (xq - xp), 0);
+    point_set(G, G->bot, bound, dp + (dq - dp) * (bound - xp) / (xq - xp));
     return;
   }
 }
-#line 592 "paper/design.nw"
-static double argmin_V(Work *w, int i)
+#line 545 "paper/design.nw"
+static double argmin_V(Work *w)
 {
   Group *L = &w->L, *R = &w->R;
   while (L->top > L->bot && point_d(L, L->top - 1) >= 0) move_top(L, R);
   while (R->top > R->bot && point_d(R, R->top - 1) < 0) move_top(R, L);
-  w->pinned = 1;
-  w->at_jump[i] = 0;
   if (L->top == L->bot) return 0;
   if (R->top == R->bot) return w->B->C0;
   double xl = point_x(L, L->top - 1), dl = point_d(L, L->top - 1);
   double xr = point_x(R, R->top - 1), dr = point_d(R, R->top - 1);
-  w->at_jump[i] = L->jump[L->top - 1];
-  w->pinned = w->at_jump[i] != 0;
-  double x = w->pinned || !(xr > xl) ? xr : xl - dl * (xr - xl) / (dr - dl);
+  double x = xr > xl ? xl - dl * (xr - xl) / (dr - dl) : xr;
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 619 "paper/design.nw"
+#line 561 "paper/design.nw"
 static void backtrack(Work *w)
 {
-  double *X = w->X, delta = w->B->delta;
-  int last = w->n - 1, held = w->at_jump[last];
-  X[last] = w->xstar[last];
-  for (int i = last; i > 0; i--) {
-    
-#line 634 "paper/design.nw"
-double x = w->xstar[i - 1];
-signed char e;
-if (delta == 0) { e = 2; X[i - 1] = X[i]; }
-else if (held == i || held == -i) {
-  e = held > 0 ? 1 : -1;
-  X[i - 1] = x;
-  held = w->at_jump[i - 1];
+  double *X = w->X, delta = w->delta;
+  X[w->n - 1] = w->xstar[w->n - 1];
+  for (int i = w->n - 1; i > 0; i--)
+    X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-else if (x < X[i] - delta) { e = 1; X[i - 1] = X[i] - delta; }
-else if (x > X[i] + delta) { e = -1; X[i - 1] = X[i] + delta; }
-else { e = 0; X[i - 1] = x; held = w->at_jump[i - 1]; }
-w->edge[i - 1] = e;
-#line 626 "paper/design.nw"
+#line 592 "paper/design.nw"
+static void identify(Work *w)
+{
+  double zmax = 0, C0 = w->B->C0, delta = w->B->delta, *X = w->X;
+  for (int i = 0; i < w->n; i++) zmax = fmax(zmax, fabs(w->Z[i]));
+  double tau = 16 * w->n * DBL_EPSILON * (C0 + (w->n - 1) * delta + zmax);
+  for (int i = 0; i + 1 < w->n; i++) {
+    int up = X[i + 1] - X[i] >= delta - tau, down = X[i] - X[i + 1] >= delta - tau;
+    w->edge[i] = up && down ? 2 : up ? 1 : down ? -1 : 0;
   }
-  w->edge[last] = 0;
+  w->edge[w->n - 1] = 0;
   for (int i = 0; i < w->n; i++)
-    w->box[i] = X[i] == 0 ? -1 : X[i] == w->B->C0 ? 1 : 0;
+    w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 676 "paper/design.nw"
+#line 616 "paper/design.nw"
+static void polish_block(Work *w, int first, int last);
+
+static void polish(Work *w)
+{
+  for (int first = 0, last; first < w->n; first = last + 1) {
+    for (last = first; last < w->n - 1 && w->edge[last]; last++) ;
+    polish_block(w, first, last);
+  }
+}
+#line 628 "paper/design.nw"
+static void polish_block(Work *w, int first, int last)
+{
+  double *X = w->X, C0 = w->B->C0, t = 0, o = 0;
+  int anchor = -1;
+  for (int j = first; j <= last; j++) {
+    if (j > first) o += w->edge[j - 1] == 1 ? w->B->delta
+                      : w->edge[j - 1] == -1 ? -w->B->delta : 0;
+    X[j] = o;
+    if (anchor < 0 && w->box[j]) anchor = j;
+    t += w->Z[j] - o;
+  }
+  t = anchor >= 0 ? (w->box[anchor] > 0 ? C0 : 0) - X[anchor]
+                  : t / (last - first + 1);
+  for (int j = first; j <= last; j++)
+    X[j] = w->box[j] ? (w->box[j] > 0 ? C0 : 0) : fmin(fmax(t + X[j], 0), C0);
+}
+#line 674 "paper/design.nw"
 static void range_of_beta(const Work *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -329,7 +322,7 @@ static void range_of_nu(const Work *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 692 "paper/design.nw"
+#line 690 "paper/design.nw"
 static void sweep_forward(Work *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -344,7 +337,7 @@ static void sweep_forward(Work *w)
     w->hi[j] = hi;
   }
 }
-#line 711 "paper/design.nw"
+#line 709 "paper/design.nw"
 static void sweep_backward(const Work *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -360,7 +353,7 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
   }
   m->mu = w->mu;
 }
-#line 735 "paper/design.nw"
+#line 733 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st);
 static int check_point(const Design_set *B, const double *Y,
                        const char *what, Status *st);
@@ -386,7 +379,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   work_free(w);
   return rc;
 }
-#line 763 "paper/design.nw"
+#line 761 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st)
 {
   if (!B || B->N < 1)
@@ -414,7 +407,7 @@ static int check_point(const Design_set *B, const double *Y,
                         "is %g", i, what, Y[i]);
   return STATUS_OK;
 }
-#line 794 "paper/design.nw"
+#line 792 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
@@ -422,16 +415,16 @@ static Work *work_new(const Design_set *B, Status *st)
   w->B = B;
   w->n = B->N + 1;
   w->L.cap = w->R.cap = 2 * w->n + 2;
+  w->delta = fmin(B->delta, B->C0);
   w->Y = malloc((6 * (size_t) w->n + 4 * (size_t) w->L.cap) * sizeof *w->Y);
-  w->at_jump = malloc(((size_t) w->n + 2 * (size_t) w->L.cap) * sizeof *w->at_jump);
   w->edge = malloc(4 * (size_t) w->n);
-  if (!w->Y || !w->at_jump || !w->edge) {
+  if (!w->Y || !w->edge) {
     work_free(w);
     status_set(st, STATUS_SYSTEM, "design: out of memory for N = %d", B->N);
     return NULL;
   }
   
-#line 824 "paper/design.nw"
+#line 821 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -441,12 +434,10 @@ w->L.x = w->hi + w->n;
 w->L.d = w->L.x + w->L.cap;
 w->R.x = w->L.d + w->L.cap;
 w->R.d = w->R.x + w->R.cap;
-w->L.jump = w->at_jump + w->n;
-w->R.jump = w->L.jump + w->L.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 810 "paper/design.nw"
+#line 808 "paper/design.nw"
   return w;
 }
 
@@ -454,11 +445,10 @@ static void work_free(Work *w)
 {
   if (!w) return;
   free(w->Y);
-  free(w->at_jump);
   free(w->edge);
   free(w);
 }
-#line 841 "paper/design.nw"
+#line 836 "paper/design.nw"
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
 {
   if (check_set(B, st)) return NULL;
@@ -484,14 +474,14 @@ void design_multipliers_free(Design_multipliers *m)
   free(m->lower);
   free(m);
 }
-#line 895 "paper/design.nw"
+#line 890 "paper/design.nw"
 static double default_step(const Design_set *B, const double *G)
 {
   double Gmax = 0;
   for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
   return Gmax > 0 ? B->C0 / Gmax : 1;
 }
-#line 905 "paper/design.nw"
+#line 900 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f);
 
 int design_kkt(const Design_set *B, const double *X, const double *G,
@@ -514,7 +504,7 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
   free(Y);
   return rc;
 }
-#line 930 "paper/design.nw"
+#line 925 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f)
 {
   for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }

@@ -150,7 +150,14 @@ static double area_constraint(unsigned n, const double *z, double *grad,
   return (B->h * sum - B->area / B->C0) / L;
 }
 #line 298 "paper/optimize.nw"
-typedef struct { Evaluator *ev; nlopt_opt opt; double scale, best; int k; } Slsqp;
+typedef struct {
+  Evaluator *ev;
+  nlopt_opt opt;
+  double scale;           /* of the energy, see above */
+  double best;            /* the lowest E evaluated */
+  double *bestX;          /* n: where; the last accepted iterate */
+  int k;                  /* accepted iterates so far */
+} Slsqp;
 static void slsqp_accept(Slsqp *q);
 
 static double slsqp_objective(unsigned n, const double *z, double *grad,
@@ -165,7 +172,7 @@ static double slsqp_objective(unsigned n, const double *z, double *grad,
   if (ev->E < q->best) slsqp_accept(q);
   return ev->E / q->scale;
 }
-#line 316 "paper/optimize.nw"
+#line 323 "paper/optimize.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -176,6 +183,7 @@ static void slsqp_accept(Slsqp *q)
     return;
   }
   report_iterate(ev, q->k, pg);
+  memcpy(q->bestX, ev->X, ev->n * sizeof *ev->X);
   ev->rep->iterations = q->k;
   ev->rep->pgnorm = pg;
   const char *why = pg <= ev->s->opt_tol ? "converged"
@@ -186,22 +194,22 @@ static void slsqp_accept(Slsqp *q)
   }
   q->k++;
 }
-#line 346 "paper/optimize.nw"
+#line 354 "paper/optimize.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n;
   double z[n], f, tol[2 * (n - 1) + 1];
-  Slsqp q = { ev, nlopt_create(NLOPT_LD_SLSQP, n), 0, HUGE_VAL, 0 };
+  Slsqp q = { ev, nlopt_create(NLOPT_LD_SLSQP, n), 0, HUGE_VAL, X, 0 };
   if (!q.opt) return status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
   
-#line 368 "paper/optimize.nw"
+#line 376 "paper/optimize.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) {
   z[i] = X[i] / ev->B->C0;
   Gmax = fmax(Gmax, fabs(ev->G[i]));
 }
 q.scale = ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
-#line 353 "paper/optimize.nw"
+#line 361 "paper/optimize.nw"
   for (int i = 0; i < 2 * (n - 1) + 1; i++) tol[i] = 1e-14;
   nlopt_set_lower_bounds1(q.opt, 0.0);
   nlopt_set_upper_bounds1(q.opt, 1.0);
@@ -213,16 +221,16 @@ q.scale = ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   nlopt_result r = nlopt_optimize(q.opt, z, &f);
   nlopt_destroy(q.opt);
   
-#line 379 "paper/optimize.nw"
+#line 389 "paper/optimize.nw"
 if (ev->failed) return ev->failed;
 if (!ev->rep->stop_reason[0])
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
-for (int i = 0; i < n; i++) X[i] = ev->B->C0 * z[i];
+(void) f;
 return evaluate(ev, X);
-#line 364 "paper/optimize.nw"
+#line 372 "paper/optimize.nw"
 }
-#line 394 "paper/optimize.nw"
+#line 404 "paper/optimize.nw"
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
                  Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
 {

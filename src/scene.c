@@ -302,7 +302,7 @@ if (rc == -2 && !L->failed)
   L->line = 0;
   return L->failed;
 }
-#line 695 "paper/setting.nw"
+#line 698 "paper/setting.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -313,7 +313,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 708 "paper/setting.nw"
+#line 711 "paper/setting.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -326,7 +326,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 729 "paper/setting.nw"
+#line 734 "paper/setting.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -338,14 +338,16 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 720 "paper/setting.nw"
+#line 723 "paper/setting.nw"
   free(copy);
   if (L->failed) return L->failed;
-  if ((old = find(L, e.sec, e.key))) *old = e;
-  else add(L, &e);
+  if ((old = find(L, e.sec, e.key))) {
+    if (*e.val) *old = e;
+    else *old = L->e[--L->n];          /* unset: the last entry fills the gap */
+  } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 750 "paper/setting.nw"
+#line 755 "paper/setting.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -357,7 +359,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 765 "paper/setting.nw"
+#line 770 "paper/setting.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -371,7 +373,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 782 "paper/setting.nw"
+#line 787 "paper/setting.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -382,7 +384,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 798 "paper/setting.nw"
+#line 803 "paper/setting.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -402,7 +404,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 821 "paper/setting.nw"
+#line 826 "paper/setting.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -413,7 +415,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 834 "paper/setting.nw"
+#line 839 "paper/setting.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -424,7 +426,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 847 "paper/setting.nw"
+#line 852 "paper/setting.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -435,7 +437,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 862 "paper/setting.nw"
+#line 867 "paper/setting.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -446,7 +448,7 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 881 "paper/setting.nw"
+#line 886 "paper/setting.nw"
 /* [geometry]: a < b, and gamma */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -457,7 +459,7 @@ static int read_geometry(Loader *L, Scene *s)
   if (!(s->b > s->a)) return blame(L, "must exceed geometry.a = %g", s->a);
   return real(L, "geometry", "gamma", REQUIRED, &s->gamma);
 }
-#line 896 "paper/setting.nw"
+#line 901 "paper/setting.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -472,7 +474,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 916 "paper/setting.nw"
+#line 921 "paper/setting.nw"
 /* [mesh]: M, R >= 1, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
@@ -490,7 +492,7 @@ static int read_mesh(Loader *L, Scene *s)
                "= %g: the fixed part of the mesh needs a height", s->C0prime);
   return 0;
 }
-#line 957 "paper/setting.nw"
+#line 962 "paper/setting.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -501,14 +503,14 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->C0 * w);
 }
-#line 976 "paper/setting.nw"
+#line 981 "paper/setting.nw"
 /* x_i = a + i (b - a) / N */
 static double node_x(const Scene *s, int i)
 {
   double t = (double)i / s->N;
   return (1 - t) * s->a + t * s->b;
 }
-#line 989 "paper/setting.nw"
+#line 994 "paper/setting.nw"
 /* alpha0 = arc_x2 - sqrt(r^2 - (x - arc_x1)^2), the lower half-circle */
 static int fill_arc(Loader *L, Scene *s)
 {
@@ -528,7 +530,7 @@ static int fill_arc(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1012 "paper/setting.nw"
+#line 1017 "paper/setting.nw"
 /* alpha0 linear from line_start at x1 = a to line_end at x1 = b */
 static int fill_line(Loader *L, Scene *s)
 {
@@ -543,7 +545,7 @@ static int fill_line(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1029 "paper/setting.nw"
+#line 1034 "paper/setting.nw"
 /* alpha0 = constant */
 static int fill_constant(Loader *L, Scene *s)
 {
@@ -553,7 +555,7 @@ static int fill_constant(Loader *L, Scene *s)
   for (i = 0; i <= s->N; i++) s->alpha0[i] = c;
   return 0;
 }
-#line 1043 "paper/setting.nw"
+#line 1048 "paper/setting.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -564,7 +566,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1059 "paper/setting.nw"
+#line 1064 "paper/setting.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -580,7 +582,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1079 "paper/setting.nw"
+#line 1084 "paper/setting.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -601,7 +603,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->N + 1);
   return rc;
 }
-#line 1102 "paper/setting.nw"
+#line 1107 "paper/setting.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -611,7 +613,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1115 "paper/setting.nw"
+#line 1120 "paper/setting.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -623,7 +625,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->alpha0[i], i, node_x(s, i), s->C0prime);
   return 0;
 }
-#line 1132 "paper/setting.nw"
+#line 1137 "paper/setting.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -634,19 +636,19 @@ static int read_initial(Loader *L, Scene *s)
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1151 "paper/setting.nw"
+#line 1156 "paper/setting.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1142 "paper/setting.nw"
+#line 1147 "paper/setting.nw"
   if (!(s->alpha0 = malloc(((size_t)s->N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
                                   "for %d nodes", L->path, s->N + 1);
   if ((rc = fill[k](L, s))) return rc;
   return check_alpha0(L, s);
 }
-#line 1166 "paper/setting.nw"
+#line 1171 "paper/setting.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -663,7 +665,7 @@ static int read_material(Loader *L, Scene *s)
   s->model = (Plane_model)k;
   return 0;
 }
-#line 1192 "paper/setting.nw"
+#line 1197 "paper/setting.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -671,7 +673,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->side[id];
   int rc;
   
-#line 1211 "paper/setting.nw"
+#line 1216 "paper/setting.nw"
 double lo = id == SIDE_TOP ? s->a : s->C0prime;
 double hi = id == SIDE_TOP ? s->b : s->gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -686,7 +688,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1199 "paper/setting.nw"
+#line 1204 "paper/setting.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -695,7 +697,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1229 "paper/setting.nw"
+#line 1234 "paper/setting.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -707,7 +709,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return refuse_keys(L, sec, traction_keys, "bc", bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1250 "paper/setting.nw"
+#line 1255 "paper/setting.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -721,7 +723,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, scene_bc_name(s->side[0].kind),
               scene_bc_name(s->side[1].kind), scene_bc_name(s->side[2].kind));
 }
-#line 1266 "paper/setting.nw"
+#line 1271 "paper/setting.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -730,7 +732,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1285 "paper/setting.nw"
+#line 1290 "paper/setting.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -745,7 +747,7 @@ static int read_loads(Loader *L, Scene *s)
                  "frictionless)");
   return 0;
 }
-#line 1306 "paper/setting.nw"
+#line 1311 "paper/setting.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -764,7 +766,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1329 "paper/setting.nw"
+#line 1334 "paper/setting.nw"
 /* [optimizer]: the method, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -779,7 +781,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (s->opt_max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1353 "paper/setting.nw"
+#line 1358 "paper/setting.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -792,7 +794,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1370 "paper/setting.nw"
+#line 1375 "paper/setting.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -812,7 +814,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1392 "paper/setting.nw"
+#line 1397 "paper/setting.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

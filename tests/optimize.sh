@@ -37,11 +37,13 @@ kkt() { awk -v C0=0.05 -v d=0.00625 -v h=0.25 '
       g = G[i] < 0 ? -G[i] : G[i]; if (g > gmax) gmax = g
     }
     printf "%.1e\n", rmax / gmax; exit bad }' $1; }
+for model in plane_stress plane_strain; do
 for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene; do
-  name=$(basename $scene .scene)
+  name=$(basename $scene .scene)-$model
   for method in slsqp projgrad; do
     out=$TMP/$name-$method
-    if ! $BIN optimize $scene -o $out -s optimizer.method=$method >$TMP/log 2>$TMP/err; then
+    if ! $BIN optimize $scene -o $out -s optimizer.method=$method -s material.model=$model \
+         >$TMP/log 2>$TMP/err; then
       fail "$name $method: $(cat $TMP/err)"; continue
     fi
     check "$name $method: stops converged ($(value stop_reason $out), pg $(value projected_gradient $out))" \
@@ -66,5 +68,14 @@ for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat
     awk -v a=$(value energy $a) -v b=$(value energy $b) 'BEGIN { d = (a - b) / a; exit !(d < 1e-6 && d > -1e-6) }'
   check "$name: both optimisers reach the same shape to 1e-4 C0" \
     numdiff -q -a 5e-6 -r 0 $a/final/shape.dat $b/final/shape.dat
+  echo "# $name: E0 $(value initial_energy $a) -> slsqp $(value energy $a) ($(value iterations $a) it, $(value evaluations $a) solves), projgrad $(value energy $b) ($(value iterations $b) it, $(value evaluations $b) solves)"
 done
+done
+# a state solve that fails inside the optimisation stops it: exit 3, a
+# message naming the solver, nothing written
+rm -rf $TMP/fail
+$BIN optimize data/example-5.1.scene -o $TMP/fail -s solver.state=psor -s solver.max_iter=5 \
+  >/dev/null 2>$TMP/err; rc=$?
+check "a failed state solve stops the optimisation: exit $rc, $(cat $TMP/err)" \
+  sh -c "[ $rc -eq 3 ] && grep -q psor $TMP/err && [ ! -e $TMP/fail ]"
 finish
