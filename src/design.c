@@ -1,22 +1,22 @@
-#line 123 "paper/design.nw"
+#line 124 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design.h"
 
-#line 407 "paper/design.nw"
+#line 421 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
-  int bot, top, cap;          /* live points bot..top-1; top-1 nearest the zero */
-  double s, c, e;             /* point (xi, eta) is x = xi + s, d = eta + c xi + e */
+  int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
+  double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Group;
-#line 415 "paper/design.nw"
+#line 429 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
   double delta;               /* min(delta, C0): the slope bound of the pass */
-  double *Y;                  /* n: the point projected (a copy: X may alias Y) */
+  double *Y;                  /* n: the point, copied (X may alias Y) */
   double *Z;                  /* n: Y - mu w, projected onto C */
   double *xstar;              /* n: the minimiser of V_i over [0, C0] */
   double *X;                  /* n: P_C(Z) */
@@ -25,9 +25,10 @@ typedef struct {
                                  2 both (delta = 0); X_i -1 at 0, +1 at C0 */
   signed char *edge0, *box0;  /* n: those of the previous evaluation */
   Group L, R;                 /* the derivative left and right of its zero */
+  double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
 } Work;
-#line 143 "paper/design.nw"
+#line 144 "paper/design.nw"
 Design_set design_set(const Scene *s)
 {
   Design_set B;
@@ -42,7 +43,7 @@ Design_set design_set(const Scene *s)
     B.area = B.C0 * (B.N * B.h);
   return B;
 }
-#line 160 "paper/design.nw"
+#line 161 "paper/design.nw"
 static double weight(const Design_set *B, int i)
 {
   return i == 0 || i == B->N ? 0.5 * B->h : B->h;
@@ -54,7 +55,7 @@ double design_area(const Design_set *B, const double *X)
   for (int i = 1; i < B->N; i++) sum += X[i];
   return B->h * sum;
 }
-#line 175 "paper/design.nw"
+#line 176 "paper/design.nw"
 double design_violation(const Design_set *B, const double *X)
 {
   double v = 0;
@@ -66,8 +67,14 @@ double design_violation(const Design_set *B, const double *X)
     v = fmax(v, (fabs(X[i + 1] - X[i]) - B->delta) / B->C0);
   return fmax(v, fabs(design_area(B, X) - B->area) / (B->C0 * B->N * B->h));
 }
-#line 227 "paper/design.nw"
-static void evaluate(Work *w, double mu);
+#line 231 "paper/design.nw"
+static void evaluate_g(Work *w, double mu);
+
+static double area_rounding(const Work *w)
+{
+  return w->n * DBL_EPSILON * w->B->C0 * w->B->N * w->B->h;
+}
+
 static int newton_on_pieces(Work *w, double lo, double hi, Status *st);
 
 static int find_multiplier(Work *w, Status *st)
@@ -78,17 +85,16 @@ static int find_multiplier(Work *w, Status *st)
     lo = fmin(lo, (w->Y[i] - B->C0) / weight(B, i));
     hi = fmax(hi, w->Y[i] / weight(B, i));
   }
-  evaluate(w, lo);
-  if (w->g <= 0) return STATUS_OK;              /* S = C0 (b-a): X = C0 */
-  evaluate(w, hi);
-  if (w->g >= 0) return STATUS_OK;              /* S = 0: X = 0 */
+  double top = B->C0 * B->N * B->h;
+  if (B->area >= top - area_rounding(w)) { evaluate_g(w, lo); return STATUS_OK; }
+  if (B->area <= area_rounding(w)) { evaluate_g(w, hi); return STATUS_OK; }
   return newton_on_pieces(w, lo, hi, st);
 }
-#line 248 "paper/design.nw"
+#line 257 "paper/design.nw"
 static void chain_project(Work *w);
 static double piece_slope(const Work *w);
 
-static void evaluate(Work *w, double mu)
+static void evaluate_g(Work *w, double mu)
 {
   w->mu = mu;
   for (int i = 0; i < w->n; i++) w->Z[i] = w->Y[i] - mu * weight(w->B, i);
@@ -96,7 +102,7 @@ static void evaluate(Work *w, double mu)
   w->g = design_area(w->B, w->X) - w->B->area;
   w->slope = piece_slope(w);
 }
-#line 264 "paper/design.nw"
+#line 273 "paper/design.nw"
 static double piece_slope(const Work *w)
 {
   double slope = 0;
@@ -112,45 +118,44 @@ static double piece_slope(const Work *w)
   }
   return slope;
 }
-#line 297 "paper/design.nw"
+#line 311 "paper/design.nw"
 static int same_piece(const Work *w);
 static void keep_piece(Work *w);
 
 static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
 {
-  const int limit = 3 * (DBL_MAX_EXP - DBL_MIN_EXP + DBL_MANT_DIG);
+  const int limit = 3 * (DBL_MAX_EXP - DBL_MIN_EXP + 2 * DBL_MANT_DIG);
   double mu = lo < 0 && 0 < hi ? 0 : lo + 0.5 * (hi - lo);
-  double width1 = HUGE_VAL, width2 = HUGE_VAL;
+  double g1 = HUGE_VAL, g2 = HUGE_VAL;     /* |g| one and two evaluations ago */
   int newton = 0;
   for (int it = 0; it < limit; it++) {
-    evaluate(w, mu);
+    evaluate_g(w, mu);
     
-#line 318 "paper/design.nw"
-if (fabs(w->g) <= w->n * DBL_EPSILON * w->B->C0 * w->B->N * w->B->h
-    || (newton && same_piece(w)))
+#line 332 "paper/design.nw"
+if (fabs(w->g) <= area_rounding(w) || (newton && same_piece(w)))
   return STATUS_OK;
-#line 309 "paper/design.nw"
+#line 323 "paper/design.nw"
     
-#line 324 "paper/design.nw"
+#line 337 "paper/design.nw"
 if (w->g > 0) lo = mu; else hi = mu;
-int stalled = hi - lo > 0.5 * width2;
-width2 = width1;
-width1 = hi - lo;
+int stalled = fabs(w->g) > 0.5 * g2;
+g2 = g1;
+g1 = fabs(w->g);
 keep_piece(w);
-#line 310 "paper/design.nw"
+#line 324 "paper/design.nw"
     
-#line 333 "paper/design.nw"
+#line 346 "paper/design.nw"
 double mid = lo + 0.5 * (hi - lo);
 if (!(lo < mid && mid < hi)) return STATUS_OK;
 double step = w->slope < 0 ? mu - w->g / w->slope : mid;
 newton = w->slope < 0 && !stalled && lo < step && step < hi;
 mu = newton ? step : mid;
-#line 311 "paper/design.nw"
+#line 325 "paper/design.nw"
   }
   return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
                     "was not found in %d evaluations", limit);
 }
-#line 342 "paper/design.nw"
+#line 355 "paper/design.nw"
 static int same_piece(const Work *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
@@ -161,7 +166,7 @@ static void keep_piece(Work *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 433 "paper/design.nw"
+#line 448 "paper/design.nw"
 static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Group *G, int k)
 {
@@ -173,7 +178,7 @@ static void point_set(Group *G, int k, double x, double d)
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
-#line 448 "paper/design.nw"
+#line 463 "paper/design.nw"
 static void push(Group *G, double x, double d)
 {
   if (G->top == G->cap) {
@@ -191,8 +196,16 @@ static void move_top(Group *from, Group *to)
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
-#line 471 "paper/design.nw"
-static void add_linear(Group *G, double z) { G->c += 1; G->e += G->s - z; }
+#line 486 "paper/design.nw"
+static void rebase(Group *G);
+
+static void add_linear(Group *G, double z, double C0)
+{
+  G->c += 1;
+  G->e += G->s - z;
+  if (G->c > G->top - G->bot + 16 || fabs(G->s) > C0) rebase(G);
+}
+
 static double argmin_V(Work *w);
 static void step_V(Work *w, double xstar, double z);
 static void backtrack(Work *w);
@@ -206,8 +219,9 @@ static void chain_project(Work *w)
   L->s = L->c = L->e = R->s = R->c = R->e = 0;
   push(R, w->B->C0, 0);
   push(R, 0, 0);
-  add_linear(L, w->Z[0]);
-  add_linear(R, w->Z[0]);
+  w->M = 0;
+  add_linear(L, w->Z[0], w->B->C0);
+  add_linear(R, w->Z[0], w->B->C0);
   w->xstar[0] = argmin_V(w);
   for (int i = 1; i < w->n; i++) {
     step_V(w, w->xstar[i - 1], w->Z[i]);
@@ -217,7 +231,17 @@ static void chain_project(Work *w)
   identify(w);
   polish(w);
 }
-#line 501 "paper/design.nw"
+#line 529 "paper/design.nw"
+static void rebase(Group *G)
+{
+  for (int k = G->bot; k < G->top; k++) {
+    double x = point_x(G, k), d = point_d(G, k);
+    G->x[k] = x;
+    G->d[k] = d;
+  }
+  G->s = G->c = G->e = 0;
+}
+#line 543 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side);
 
 static void step_V(Work *w, double xstar, double z)
@@ -227,12 +251,12 @@ static void step_V(Work *w, double xstar, double z)
   push(R, xstar, 0);
   L->s -= w->delta;
   R->s += w->delta;
-  add_linear(L, z);
-  add_linear(R, z);
+  add_linear(L, z, w->B->C0);
+  add_linear(R, z, w->B->C0);
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 524 "paper/design.nw"
+#line 566 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -247,7 +271,13 @@ static void cut(Group *G, const Group *other, double bound, double side)
     return;
   }
 }
-#line 545 "paper/design.nw"
+#line 591 "paper/design.nw"
+static double terms(const Group *G, int k)
+{
+  return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
+       + fabs(G->x[k]) + fabs(G->s);
+}
+
 static double argmin_V(Work *w)
 {
   Group *L = &w->L, *R = &w->R;
@@ -257,10 +287,12 @@ static double argmin_V(Work *w)
   if (R->top == R->bot) return w->B->C0;
   double xl = point_x(L, L->top - 1), dl = point_d(L, L->top - 1);
   double xr = point_x(R, R->top - 1), dr = point_d(R, R->top - 1);
-  double x = xr > xl ? xl - dl * (xr - xl) / (dr - dl) : xr;
+  double x = !(xr > xl) ? xr
+           : dl >= 0 ? xl : xl + (xr - xl) * (-dl / (dr - dl));
+  w->M = fmax(w->M, terms(L, L->top - 1) + terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 561 "paper/design.nw"
+#line 615 "paper/design.nw"
 static void backtrack(Work *w)
 {
   double *X = w->X, delta = w->delta;
@@ -268,21 +300,21 @@ static void backtrack(Work *w)
   for (int i = w->n - 1; i > 0; i--)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-#line 592 "paper/design.nw"
+#line 649 "paper/design.nw"
 static void identify(Work *w)
 {
-  double zmax = 0, C0 = w->B->C0, delta = w->B->delta, *X = w->X;
-  for (int i = 0; i < w->n; i++) zmax = fmax(zmax, fabs(w->Z[i]));
-  double tau = 16 * w->n * DBL_EPSILON * (C0 + (w->n - 1) * delta + zmax);
+  double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
+  double tau = 8 * DBL_EPSILON * (w->n * C0 + w->M);
   for (int i = 0; i + 1 < w->n; i++) {
-    int up = X[i + 1] - X[i] >= delta - tau, down = X[i] - X[i + 1] >= delta - tau;
+    int up = X[i + 1] - X[i] >= delta - tau;
+    int down = X[i] - X[i + 1] >= delta - tau;
     w->edge[i] = up && down ? 2 : up ? 1 : down ? -1 : 0;
   }
   w->edge[w->n - 1] = 0;
   for (int i = 0; i < w->n; i++)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 616 "paper/design.nw"
+#line 673 "paper/design.nw"
 static void polish_block(Work *w, int first, int last);
 
 static void polish(Work *w)
@@ -292,24 +324,36 @@ static void polish(Work *w)
     polish_block(w, first, last);
   }
 }
-#line 628 "paper/design.nw"
+#line 690 "paper/design.nw"
+static double block_mean(const Work *w, int first, int last);
+
 static void polish_block(Work *w, int first, int last)
 {
-  double *X = w->X, C0 = w->B->C0, t = 0, o = 0;
+  double *X = w->X, C0 = w->B->C0, o = 0, t;
   int anchor = -1;
   for (int j = first; j <= last; j++) {
     if (j > first) o += w->edge[j - 1] == 1 ? w->B->delta
                       : w->edge[j - 1] == -1 ? -w->B->delta : 0;
     X[j] = o;
     if (anchor < 0 && w->box[j]) anchor = j;
-    t += w->Z[j] - o;
   }
   t = anchor >= 0 ? (w->box[anchor] > 0 ? C0 : 0) - X[anchor]
-                  : t / (last - first + 1);
+                  : block_mean(w, first, last);
   for (int j = first; j <= last; j++)
     X[j] = w->box[j] ? (w->box[j] > 0 ? C0 : 0) : fmin(fmax(t + X[j], 0), C0);
 }
-#line 674 "paper/design.nw"
+
+/* the mean of Z_j - X_j over the block, X holding the offsets */
+static double block_mean(const Work *w, int first, int last)
+{
+  double t = 0, r = 0;
+  int m = last - first + 1;
+  for (int j = first; j <= last; j++) t += w->Z[j] - w->X[j];
+  t /= m;
+  for (int j = first; j <= last; j++) r += w->Z[j] - w->X[j] - t;
+  return t + r / m;
+}
+#line 748 "paper/design.nw"
 static void range_of_beta(const Work *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -322,7 +366,7 @@ static void range_of_nu(const Work *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 690 "paper/design.nw"
+#line 764 "paper/design.nw"
 static void sweep_forward(Work *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -337,7 +381,7 @@ static void sweep_forward(Work *w)
     w->hi[j] = hi;
   }
 }
-#line 709 "paper/design.nw"
+#line 783 "paper/design.nw"
 static void sweep_backward(const Work *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -348,12 +392,15 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
     double beta = fmin(fmax(target - prev, blo), bhi);
     m->upper[j] = fmax(beta, 0);
     m->lower[j] = fmax(-beta, 0);
-    if (j > 0) { m->up[j - 1] = fmax(prev, 0); m->down[j - 1] = fmax(-prev, 0); }
+    if (j > 0) {
+      m->up[j - 1] = fmax(prev, 0);
+      m->down[j - 1] = fmax(-prev, 0);
+    }
     nu = prev;
   }
   m->mu = w->mu;
 }
-#line 733 "paper/design.nw"
+#line 810 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st);
 static int check_point(const Design_set *B, const double *Y,
                        const char *what, Status *st);
@@ -364,8 +411,8 @@ int design_project(const Design_set *B, const double *Y, double *X,
                    Design_multipliers *mult, Status *st)
 {
   int rc;
-  if ((rc = check_set(B, st)) || (rc = check_point(B, Y, "the point to project", st)))
-    return rc;
+  if ((rc = check_set(B, st))
+      || (rc = check_point(B, Y, "the point to project", st))) return rc;
   if (mult && mult->N != B->N)
     return status_set(st, STATUS_INPUT, "design: multipliers made for N = %d "
                       "passed with a design set of N = %d", mult->N, B->N);
@@ -379,7 +426,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   work_free(w);
   return rc;
 }
-#line 761 "paper/design.nw"
+#line 841 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st)
 {
   if (!B || B->N < 1)
@@ -387,14 +434,16 @@ static int check_set(const Design_set *B, Status *st)
   if (!(B->h > 0 && isfinite(B->h)))
     return status_set(st, STATUS_INPUT, "design: h = %g is not positive", B->h);
   if (!(B->C0 > 0 && isfinite(B->C0)))
-    return status_set(st, STATUS_INPUT, "design: C0 = %g is not positive", B->C0);
+    return status_set(st, STATUS_INPUT, "design: C0 = %g is not positive",
+                      B->C0);
   if (!(B->delta >= 0 && isfinite(B->delta)))
     return status_set(st, STATUS_INPUT, "design: the slope bound C1 h = %g "
                       "is negative", B->delta);
-  if (!(B->area >= 0 && B->area <= B->C0 * (B->N * B->h)))
-    return status_set(st, STATUS_INPUT, "design: B is empty: the area S = %g "
-                      "is outside [0, C0 (b-a)] = [0, %g]", B->area,
-                      B->C0 * (B->N * B->h));
+  double top = B->C0 * (B->N * B->h), slack = (B->N + 1) * DBL_EPSILON * top;
+  if (!(B->area >= -slack && B->area <= top + slack))
+    return status_set(st, STATUS_INPUT, "design: B is empty: the area S = "
+                      "%.17g is outside [0, C0 (b-a)] = [0, %.17g]",
+                      B->area, top);
   return STATUS_OK;
 }
 
@@ -407,11 +456,14 @@ static int check_point(const Design_set *B, const double *Y,
                         "is %g", i, what, Y[i]);
   return STATUS_OK;
 }
-#line 792 "paper/design.nw"
+#line 874 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
-  if (!w) { status_set(st, STATUS_SYSTEM, "design: out of memory"); return NULL; }
+  if (!w) {
+    status_set(st, STATUS_SYSTEM, "design: out of memory");
+    return NULL;
+  }
   w->B = B;
   w->n = B->N + 1;
   w->L.cap = w->R.cap = 2 * w->n + 2;
@@ -424,7 +476,7 @@ static Work *work_new(const Design_set *B, Status *st)
     return NULL;
   }
   
-#line 821 "paper/design.nw"
+#line 906 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -437,7 +489,7 @@ w->R.d = w->R.x + w->R.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 808 "paper/design.nw"
+#line 893 "paper/design.nw"
   return w;
 }
 
@@ -448,7 +500,7 @@ static void work_free(Work *w)
   free(w->edge);
   free(w);
 }
-#line 836 "paper/design.nw"
+#line 921 "paper/design.nw"
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
 {
   if (check_set(B, st)) return NULL;
@@ -474,14 +526,14 @@ void design_multipliers_free(Design_multipliers *m)
   free(m->lower);
   free(m);
 }
-#line 890 "paper/design.nw"
+#line 975 "paper/design.nw"
 static double default_step(const Design_set *B, const double *G)
 {
   double Gmax = 0;
   for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
   return Gmax > 0 ? B->C0 / Gmax : 1;
 }
-#line 900 "paper/design.nw"
+#line 985 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f);
 
 int design_kkt(const Design_set *B, const double *X, const double *G,
@@ -498,13 +550,13 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
   if (!(rc = design_project(B, Y, Q, mult, st))) {
     double r = 0;
     for (int i = 0; i < n; i++) r = fmax(r, fabs(X[i] - Q[i]));
-    *residual = r / t;
+    if (residual) *residual = r / t;
     if (mult) scale_multipliers(mult, 1 / t);
   }
   free(Y);
   return rc;
 }
-#line 925 "paper/design.nw"
+#line 1010 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f)
 {
   for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }

@@ -1,4 +1,4 @@
-#line 73 "paper/design.nw"
+#line 74 "paper/design.nw"
 #ifndef CONTACTOPT_DESIGN_H
 #define CONTACTOPT_DESIGN_H
 #include "status.h"
@@ -21,21 +21,21 @@ typedef struct {
   double mu;      /* of h sum (X_i + X_{i+1})/2 - S = 0, free */
 } Design_multipliers;
 
-#line 103 "paper/design.nw"
+#line 104 "paper/design.nw"
 Design_set design_set(const Scene *s);
 /* h sum_{i<N} (X_i + X_{i+1})/2, the trapezoid rule */
 double design_area(const Design_set *B, const double *X);
-/* largest violation: bounds, slopes / C0, area / (C0 (b-a)); HUGE_VAL for NaN */
+/* largest violation, relative to C0 (area: C0 (b-a)); HUGE_VAL on a NaN */
 double design_violation(const Design_set *B, const double *X);
 /* X = argmin ||X - Y||_2 over B; mult (may be NULL) its multipliers */
 int design_project(const Design_set *B, const double *Y, double *X,
                    Design_multipliers *mult, Status *st);
 /* P = P_B(X - tG), residual = ||X - P||_inf / t, mult = multipliers / t;
-   t <= 0 chooses t = C0 / ||G||_inf.  P and mult may be NULL. */
+   t <= 0 chooses t = C0 / ||G||_inf.  P, mult, residual may be NULL. */
 int design_kkt(const Design_set *B, const double *X, const double *G,
                double t, double *P, Design_multipliers *mult,
                double *residual, Status *st);
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st);
 void design_multipliers_free(Design_multipliers *m);
-#line 96 "paper/design.nw"
+#line 97 "paper/design.nw"
 #endif
