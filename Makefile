@@ -5,12 +5,13 @@
 # The parts of the paper, in the order of the argument (the driver first).
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
       paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
-      paper/optimize.nw paper/output.nw paper/main.nw \
-      paper/closing.nw
+      paper/optimize.nw paper/output.nw paper/main.nw paper/figures.nw \
+      paper/reproduction.nw paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
 MODULES := status scene mesh fem state model sensitivity design optimize output
-TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c
+SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh
+TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)
@@ -32,7 +33,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libopenblas0-pthread pkg-config lmodern texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures check bench clean
+.PHONY: all deps tangle tangle-check paper figures check bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -78,7 +79,7 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: $(PROGRAM) $(TEST_PROGS) tangle-check
+check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
 
 bench: bin/contactopt
@@ -86,7 +87,7 @@ bench: bin/contactopt
 
 # ---- the woven paper -------------------------------------------------------------
 paper: paper/contactopt.pdf
-paper/contactopt.pdf: $(NW) | deps
+paper/contactopt.pdf: $(NW) $(FIGURES) paper/bench-state.tex | deps
 	@mkdir -p build/paper
 	noweave -delay -index -autodefs c $(NW) > build/paper/contactopt.tex
 	cd build/paper && for i in 1 2 3 4; do \
@@ -95,10 +96,52 @@ paper/contactopt.pdf: $(NW) | deps
 	  grep -q 'Rerun' contactopt.log || break; done
 	cp build/paper/contactopt.pdf $@
 
-figures: bin/contactopt
-	@echo "make figures: not yet — the figures of Section 5 come with the optimiser (issue 4)."
-	@echo "Built bin/contactopt; 'bin/contactopt solve data/example-5.1.scene' solves the state."
-	@exit 1
+# ---- the figures of Section 5 ---------------------------------------------------
+# Every figure is drawn from the data files the program writes; each run is
+# a rule of its own, so a changed scene or source reruns exactly what
+# depends on it, and make -j2 runs them side by side.
+EXAMPLES := 5.1 5.2 5.2-flat
+RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
+        $(EXAMPLES:%=out/example-%-optimize/summary.dat) \
+        $(EXAMPLES:%=out/example-%-strain-optimize/summary.dat)
+FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
+           figures/reproduction.tex
+
+figures: $(FIGURES)
+	@echo "figures: $(words $(FIGURES)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction table)"
+
+out/example-%/summary.dat: data/example-%.scene bin/contactopt
+	bin/contactopt solve $< -o $(@D) > /dev/null
+out/example-%-optimize/summary.dat: data/example-%.scene bin/contactopt
+	@mkdir -p out
+	bin/contactopt optimize $< -o $(@D) > $(@D).log
+out/example-%-strain-optimize/summary.dat: data/example-%.scene bin/contactopt
+	@mkdir -p out
+	bin/contactopt optimize $< -o $(@D) -s material.model=plane_strain > $(@D).log
+
+# Fig. 5.1 and 5.3: the initial bodies; Fig. 5.2 and 5.4: the results.
+figures/fig-5.1.pdf figures/fig-5.1.png &: src/fig-body.gp out/example-5.1/summary.dat
+	@mkdir -p figures
+	gnuplot -e "solve='out/example-5.1'; out='figures/fig-5.1'; example='5.1'" $<
+figures/fig-5.3.pdf figures/fig-5.3.png &: src/fig-body.gp out/example-5.2/summary.dat
+	@mkdir -p figures
+	gnuplot -e "solve='out/example-5.2'; out='figures/fig-5.3'; example='5.2'" $<
+figures/fig-5.2.pdf figures/fig-5.2.png &: src/fig-results.gp out/example-5.1/summary.dat \
+                                           out/example-5.1-optimize/summary.dat
+	@mkdir -p figures
+	gnuplot -e "solve='out/example-5.1'; opt='out/example-5.1-optimize'; out='figures/fig-5.2'; example='5.1'" $<
+figures/fig-5.4.pdf figures/fig-5.4.png &: src/fig-results.gp out/example-5.2/summary.dat \
+                                           out/example-5.2-optimize/summary.dat
+	@mkdir -p figures
+	gnuplot -e "solve='out/example-5.2'; opt='out/example-5.2-optimize'; out='figures/fig-5.4'; example='5.2'" $<
+figures/reproduction.tex: src/reproduction.sh $(RUNS)
+	@mkdir -p figures
+	sh $< out > $@.partial && mv $@.partial $@
+
+# Reference values (data/reference/) are independent computations, made by
+# hand when a change is meant to change the results; see the script.
+reference: bin/contactopt
+	sh tests/reference/generate.sh
 
 clean:
 	rm -rf build bin out src/.tangled

@@ -194,7 +194,7 @@ static void slsqp_accept(Slsqp *q)
   }
   q->k++;
 }
-#line 354 "paper/optimize.nw"
+#line 355 "paper/optimize.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n;
@@ -202,14 +202,14 @@ static int slsqp(Evaluator *ev, double *X)
   Slsqp q = { ev, nlopt_create(NLOPT_LD_SLSQP, n), 0, HUGE_VAL, X, 0 };
   if (!q.opt) return status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
   
-#line 376 "paper/optimize.nw"
+#line 377 "paper/optimize.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) {
   z[i] = X[i] / ev->B->C0;
   Gmax = fmax(Gmax, fabs(ev->G[i]));
 }
 q.scale = ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
-#line 361 "paper/optimize.nw"
+#line 362 "paper/optimize.nw"
   for (int i = 0; i < 2 * (n - 1) + 1; i++) tol[i] = 1e-14;
   nlopt_set_lower_bounds1(q.opt, 0.0);
   nlopt_set_upper_bounds1(q.opt, 1.0);
@@ -221,16 +221,16 @@ q.scale = ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   nlopt_result r = nlopt_optimize(q.opt, z, &f);
   nlopt_destroy(q.opt);
   
-#line 389 "paper/optimize.nw"
+#line 390 "paper/optimize.nw"
 if (ev->failed) return ev->failed;
 if (!ev->rep->stop_reason[0])
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
 (void) f;
 return evaluate(ev, X);
-#line 372 "paper/optimize.nw"
+#line 373 "paper/optimize.nw"
 }
-#line 404 "paper/optimize.nw"
+#line 405 "paper/optimize.nw"
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
                  Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
 {

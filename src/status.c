@@ -1,4 +1,4 @@
-#line 73 "paper/contactopt.nw"
+#line 84 "paper/contactopt.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include "status.h"
