@@ -18,6 +18,14 @@ B       := $(if $(filter 1,$(SAN)),build/san,build)
 PROGRAM := $(if $(filter 1,$(SAN)),build/san/contactopt,bin/contactopt)
 OBJ     := $(MODULES:%=$(B)/%.o)
 
+# The runs behind the figures of Section 5, and the figures (see below).
+EXAMPLES := 5.1 5.2 5.2-flat
+RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
+        $(EXAMPLES:%=out/example-%-optimize/summary.dat) \
+        $(EXAMPLES:%=out/example-%-strain-optimize/summary.dat)
+FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
+           figures/reproduction.tex
+
 CC      ?= cc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
@@ -100,12 +108,6 @@ paper/contactopt.pdf: $(NW) $(FIGURES) paper/bench-state.tex | deps
 # Every figure is drawn from the data files the program writes; each run is
 # a rule of its own, so a changed scene or source reruns exactly what
 # depends on it, and make -j2 runs them side by side.
-EXAMPLES := 5.1 5.2 5.2-flat
-RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
-        $(EXAMPLES:%=out/example-%-optimize/summary.dat) \
-        $(EXAMPLES:%=out/example-%-strain-optimize/summary.dat)
-FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
-           figures/reproduction.tex
 
 figures: $(FIGURES)
 	@echo "figures: $(words $(FIGURES)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction table)"
