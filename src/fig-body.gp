@@ -27,6 +27,8 @@ stats shape using 2 every ::0::0 nooutput
 a_left = STATS_min
 stats shape using 2 every ::(nshape-1)::(nshape-1) nooutput
 a_right = STATS_min
+stats shape using 1:2 nooutput
+x_gap = STATS_pos_max_y; a_max = STATS_max_y
 do for [fmt in "pdf png"] {
   set encoding utf8
   px = dpcm * 2.54 / 72.0
@@ -35,10 +37,12 @@ do for [fmt in "pdf png"] {
         font "DejaVu Sans,".fontpt linewidth 1
   } else {
     set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
-        font "DejaVu Sans,".sprintf("%.1f", fontpt*px) linewidth px \
+        font "DejaVu Sans,".sprintf("%.1f", 0.75*fontpt*px) linewidth px \
         background "white"
   }
   set output out.".".fmt
+  fs = fmt eq "pdf" ? fontpt : 0.75*fontpt*px   # the font size in use
+  unset xlabel; unset ylabel; unset title   # left over from the other format
   set multiplot title sprintf("Example %s: {/:Italic Ω}({/:Italic α}^0) and the parts of its boundary", example)
   set lmargin at screen sx(left); set rmargin at screen sx(left + (xhi-xlo)*ucm)
   set tmargin at screen sy(top);  set bmargin at screen sy(top + (yhi-ylo)*ucm)
@@ -60,11 +64,11 @@ do for [fmt in "pdf png"] {
   }
   set arrow 19 from 2, 1.3 to 4, 1.3 nohead lw 1.5 lc "#b00000"
   set label 1 "{/:Italic P}_2 = −5.75·10^8 N/m^2" at 3, 1.41 center tc "#b00000"
-  set label 2 "{/:Italic Ω}({/:Italic α}^0)" at 1.1, 0.6 center font sprintf(",%g", 1.4*fontpt)
+  set label 2 "{/:Italic Ω}({/:Italic α}^0)" at 1.1, 0.6 center front font sprintf(",%g", 1.4*fs)
   set label 3 "{/:Italic Γ}_D" at -0.17, 0.6 right
   set label 4 "{/:Italic Γ}@^1_P" at 4.2, 0.6 left
   set label 5 "{/:Italic Γ}@^2_P" at 1.0, 1.09 center
-  set label 6 "{/:Italic Γ}_C({/:Italic α}^0)" at 0.75, 0.14 center
+  set label 6 "{/:Italic Γ}_C({/:Italic α}^0)" at 0.75, 0.14 center front
   set label 7 "rigid foundation  {/:Italic x}_2 ≤ 0" at 2, -0.1 center boxed
   set style textbox opaque noborder
   set arrow 3 from 0, a_left to 0, 1 nohead lw 2 lc "black" front
@@ -81,8 +85,9 @@ do for [fmt in "pdf png"] {
   set object 1 rect from xlo, slo to xhi, 0 fs pattern 5 noborder fc "gray40" back
   set arrow 1 from xlo, 0 to xhi, 0 nohead lw 2 lc "gray30" back
   set object 2 rect from -0.12, a_left to 0, shi fs pattern 4 noborder fc "gray40" back
-  set label 1 "{/:Italic Γ}_C({/:Italic α}^0)" at 1.0, 0.045 center
-  set label 2 "gap" at 0.35, 0.02 center font sprintf(",%g", 0.9*fontpt)
+  set label 1 "{/:Italic Γ}_C({/:Italic α}^0)" at 1.0, 0.045 center front
+  set label 2 "gap" at (x_gap < 2 ? x_gap + 0.3 : x_gap - 0.3), 0.4*a_max center front \
+      font sprintf(",%g", 0.9*fs)
   plot shape using 1:2 with filledcurves y=shi fc "#dce6f2" notitle, \
        shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc "black" notitle
   unset object; unset arrow; unset label

@@ -40,10 +40,12 @@ do for [fmt in "pdf png"] {
         font "DejaVu Sans,".fontpt linewidth 1
   } else {
     set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
-        font "DejaVu Sans,".sprintf("%.1f", fontpt*px) linewidth px \
+        font "DejaVu Sans,".sprintf("%.1f", 0.75*fontpt*px) linewidth px \
         background "white"
   }
   set output out.".".fmt
+  fs = fmt eq "pdf" ? fontpt : 0.75*fontpt*px   # the font size in use
+  unset xlabel; unset ylabel; unset title   # left over from the other format
   set multiplot title sprintf("Example %s: numerical results", example)
   do for [c=0:1] {
     dir = c == 0 ? solve : opt."/final"

@@ -1,0 +1,62 @@
+# tests/fuzz/fuzz.mk: fuzzing the scene parser and validator (scene_load,
+# paper/setting.nw) with libFuzzer, under AddressSanitizer, UBSan and
+# LeakSanitizer.  Included by the Makefile; it relies on nothing of it but
+# the tangled sources (src/scene.c, src/status.c and their headers, made by
+# the rule of src/.tangled).
+#
+#   make fuzz [FUZZ_SECONDS=60] [FUZZ_JOBS=1]
+#       fuzz for FUZZ_SECONDS seconds; the corpus grows in build/fuzz/corpus
+#       (seeded from tests/fuzz/corpus), a crash, leak, UB or broken
+#       contract is saved in build/fuzz/crashes/ and fails the target.
+#   make fuzz-replay
+#       run the harness once on the seed corpus and on every
+#       tests/scenes/fuzz-*.scene (the inputs fuzzing once found).
+#
+# The harness needs clang and libFuzzer (Debian 12: clang, libclang-rt-14-dev);
+# fuzz-deps installs them as root or says how.
+
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_JOBS    ?= 1
+FUZZ_DIR     := build/fuzz
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_CFLAGS  := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
+                -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+                -fno-omit-frame-pointer -Isrc
+# a value that broke the contract aborts; so does any UB (no recovery)
+FUZZ_ENV     := UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+                ASAN_OPTIONS=detect_leaks=1
+FUZZ_RUN     := -dict=tests/fuzz/scene.dict -max_len=8192 -timeout=10 \
+                -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+                -artifact_prefix=$(FUZZ_DIR)/crashes/
+
+.PHONY: fuzz fuzz-replay fuzz-deps
+fuzz: $(FUZZ_DIR)/fuzz_scene
+	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/crashes
+	$(FUZZ_ENV) $< $(FUZZ_RUN) -max_total_time=$(FUZZ_SECONDS) \
+	  $(if $(filter-out 1,$(FUZZ_JOBS)),-fork=$(FUZZ_JOBS)) \
+	  -print_final_stats=1 $(FUZZ_DIR)/corpus tests/fuzz/corpus
+
+fuzz-replay: $(FUZZ_DIR)/fuzz_scene
+	@mkdir -p $(FUZZ_DIR)/crashes
+	$(FUZZ_ENV) $< $(FUZZ_RUN) tests/fuzz/corpus/* $(wildcard tests/scenes/fuzz-*.scene)
+
+$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c src/scene.c src/status.c \
+                        src/scene.h src/status.h | fuzz-deps
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c src/scene.c \
+	  src/status.c -linih -lm
+
+fuzz-deps:
+	@missing=$$(for p in $(FUZZ_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; \
+	done); \
+	if [ -n "$$missing" ]; then \
+	  cmd="apt-get update && apt-get install -y --no-install-recommends $$(echo $$missing)"; \
+	  if [ "$$(id -u)" = 0 ]; then echo "fuzz-deps: installing $$(echo $$missing)"; \
+	    DEBIAN_FRONTEND=noninteractive sh -c "$$cmd" >build-fuzz-deps.log 2>&1 \
+	      || { echo "fuzz-deps: apt-get failed, see build-fuzz-deps.log"; exit 1; }; \
+	    rm -f build-fuzz-deps.log; \
+	  elif sudo -n true 2>/dev/null; then sudo sh -c "$$cmd"; \
+	  else echo "fuzz-deps: missing Debian packages; run as root:"; echo "  $$cmd"; exit 1; fi; \
+	fi

@@ -1,0 +1,164 @@
+/* fuzz_scene.c: libFuzzer harness for the scene parser and validator
+   (scene_load, paper/setting.nw).  Built and run by `make fuzz` (rules in
+   tests/fuzz/fuzz.mk) with AddressSanitizer, UBSan and LeakSanitizer.
+
+   An input is the text of a scene file, optionally followed by a line
+   "%%" and then override strings, one a line ("section.key=value", as
+   -s gives them).  The scene part is written to a file in a folder made
+   once (under /dev/shm when it exists: scene_load reads a path, not
+   memory), beside a shape file of 17 rows, shape.dat, that a scene may
+   name as design.file.  The file is then loaded without overrides, with
+   the overrides of the input, and with three fixed sets of overrides; after
+   each load the contract of scene_load (src/scene.h) is checked and any
+   breach aborts, which libFuzzer reports as a crash:
+   - success: status 0, N, M, R >= 1, a < b, C0 < C0prime < gamma, an
+     initial shape of N+1 finite values in [0, C0prime), and so on;
+   - failure: status 2 (bad input) or 4 (no memory), no memory held, and
+     one line of message that begins with the scene path (status 2).
+   scene_free is then called twice (the interface says it is harmless). */
+#define _GNU_SOURCE   /* memmem */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "scene.h"
+
+enum { MAX_OVERRIDES = 16 };
+
+static char dir[256];          /* the folder of the scene file */
+static char path[300];         /* the scene file written for each input */
+static char shape[300];        /* a shape file of 17 rows (N = 16) */
+
+/* remove the files and the folder made by init */
+static void cleanup(void)
+{
+  unlink(path);
+  unlink(shape);
+  rmdir(dir);
+}
+
+/* make the folder and the shape file, once */
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+  const char *base = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
+  FILE *fp;
+  int i;
+  (void)argc;
+  (void)argv;
+  snprintf(dir, sizeof dir, "%s/contactopt-fuzz.XXXXXX", base);
+  if (!mkdtemp(dir)) {
+    perror("fuzz_scene: mkdtemp");
+    exit(1);
+  }
+  snprintf(path, sizeof path, "%s/fuzz.scene", dir);
+  snprintf(shape, sizeof shape, "%s/shape.dat", dir);
+  if (!(fp = fopen(shape, "w"))) {
+    perror("fuzz_scene: shape.dat");
+    exit(1);
+  }
+  fprintf(fp, "# x1 alpha\n");
+  for (i = 0; i <= 16; i++) fprintf(fp, "%g %g\n", 0.25 * i, 0.003125 * i);
+  fclose(fp);
+  atexit(cleanup);
+  return 0;
+}
+
+/* the contract of scene_load after it returned rc; abort on a breach */
+static void check_contract(int rc, const Scene *s, const Status *st)
+{
+  int i;
+  if (rc == STATUS_OK) {
+    if (st->code != STATUS_OK || !s->alpha0 || s->N < 1 || s->M < 1
+        || s->R < 1 || !(s->a < s->b) || !(s->C0 > 0) || !(s->C1 >= 0)
+        || !(s->C2 > 0) || !(s->C0 < s->C0prime)
+        || !(s->C0prime < s->gamma) || !(s->E > 0) || !(s->nu > -1)
+        || !(s->nu < 0.5) || !(s->tol > 0 && s->tol < 1)
+        || s->max_iter < 1 || !(s->omega > 0 && s->omega < 2)
+        || !(s->opt_tol > 0 && s->opt_tol < 1) || s->opt_max_iter < 1
+        || strcmp(s->path, path) != 0)
+      abort();
+    for (i = 0; i <= s->N; i++)
+      if (!isfinite(s->alpha0[i]) || !(s->alpha0[i] >= 0)
+          || !(s->alpha0[i] < s->C0prime))
+        abort();
+    for (i = 0; i < SIDE_COUNT; i++)
+      if (s->side[i].kind == BC_TRACTION
+          && (!(s->side[i].from < s->side[i].to)
+              || (s->side[i].P[0] == 0 && s->side[i].P[1] == 0)))
+        abort();
+    if (strcmp(scene_state_name(s->state), "?") == 0
+        || strcmp(scene_opt_name(s->opt), "?") == 0
+        || strcmp(scene_model_name(s->model), "?") == 0)
+      abort();
+    return;
+  }
+  if ((rc != STATUS_INPUT && rc != STATUS_SYSTEM) || st->code != rc
+      || s->alpha0 || !st->msg[0] || strchr(st->msg, '\n'))
+    abort();
+  if (rc == STATUS_INPUT && strncmp(st->msg, path, strlen(path)) != 0)
+    abort();
+}
+
+/* load the scene file with the overrides, check, free */
+static void load(int n, char *const *override)
+{
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc = scene_load(&s, path, n, override, &st);
+  check_contract(rc, &s, &st);
+  scene_free(&s);
+  scene_free(&s);
+}
+
+/* the fixed sets of overrides, applied to every input */
+static char *const set1[] = {"design.N=3", "mesh.M=2"};
+static char *const set2[] = {"solver.state=psor", "material.model=plane_strain",
+                             "solver.max_iter=", "top.P1 = 1e3"};
+static char *const set3[] = {"design.initial=file", "design.file=shape.dat",
+                             "design.arc_x1=", "design.arc_x2=",
+                             "design.arc_radius=", "design.line_start=",
+                             "design.line_end=", "design.constant="};
+
+/* the length of the scene part of data: up to the line "%%", if any */
+static size_t scene_part(const unsigned char *data, size_t size)
+{
+  const unsigned char *at;
+  if (size >= 3 && memcmp(data, "%%\n", 3) == 0) return 0;
+  at = memmem(data, size, "\n%%\n", 4);
+  return at ? (size_t)(at - data) + 1 : size;
+}
+
+/* override[] = the lines of text (modified); return their number */
+static int split(char *text, char **override)
+{
+  char *line, *save = NULL;
+  int n = 0;
+  for (line = strtok_r(text, "\n", &save); line && n < MAX_OVERRIDES;
+       line = strtok_r(NULL, "\n", &save))
+    override[n++] = line;
+  return n;
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+  size_t m = scene_part(data, size);
+  char *text, *override[MAX_OVERRIDES];
+  FILE *fp;
+  int n = 0;
+  if (!(fp = fopen(path, "wb"))) abort();
+  if (fwrite(data, 1, m, fp) != m) abort();   /* NUL bytes included */
+  if (fclose(fp)) abort();
+  load(0, NULL);
+  if (m < size) {   /* the overrides: after the line "%%" */
+    if (!(text = malloc(size - m - 2))) return 0;
+    memcpy(text, data + m + 3, size - m - 3);
+    text[size - m - 3] = '\0';
+    if ((n = split(text, override))) load(n, override);
+    free(text);
+  }
+  load(2, set1);
+  load(4, set2);
+  load(8, set3);
+  return 0;
+}
