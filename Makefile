@@ -6,7 +6,7 @@
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
       paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
       paper/optimize.nw paper/output.nw paper/main.nw paper/figures.nw \
-      paper/reproduction.nw paper/closing.nw
+      paper/reproduction.nw paper/stability.nw paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
 MODULES := status scene mesh fem state model sensitivity design optimize output

@@ -1,11 +1,11 @@
-#line 51 "paper/model.nw"
+#line 52 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 63 "paper/model.nw"
+#line 64 "paper/model.nw"
 Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
 {
   Model *md = calloc(1, sizeof *md);
@@ -19,7 +19,7 @@ Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
     return NULL;
   }
   
-#line 82 "paper/model.nw"
+#line 83 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -30,19 +30,19 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 76 "paper/model.nw"
+#line 77 "paper/model.nw"
   
-#line 95 "paper/model.nw"
+#line 96 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
 Qp_options opt = { s->state, s->tol, s->max_iter, s->omega };
 if (!(md->solver = qp_alloc(&md->qp, &opt, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 77 "paper/model.nw"
+#line 78 "paper/model.nw"
   return md;
 }
-#line 107 "paper/model.nw"
+#line 108 "paper/model.nw"
 static double model_clock(void)
 {
   struct timespec t;
@@ -67,7 +67,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 137 "paper/model.nw"
+#line 141 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -92,7 +92,7 @@ double model_pressure_cv(const Model *md)
       double p = model_pressure(md, c);
       sum += p; sum2 += p * p; count++;
     }
-  if (count == 0) return NAN;
+  if (count == 0) return 0;                  /* no contact, no spread */
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }

@@ -30,7 +30,8 @@ typedef struct {
 Model *model_new(const Scene *s, cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
 double model_pressure(const Model *md, int c);
-/* standard deviation over mean of the pressure on the contact zone */
+/* standard deviation over mean of the pressure on the contact zone;
+   0 when no node presses */
 double model_pressure_cv(const Model *md);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);

@@ -1,0 +1,472 @@
+# hard_cases.sh: the hard cases of the woven section "Hard cases:
+# numerical stability" (paper/stability.nw): nu -> 1/2, units scaled by
+# 1e-9 and 1e9, a load that lifts the body and one that presses it flat,
+# designs at the bounds of B, a node touching with zero force, a mesh of
+# N = 1024, thin bodies, and optimisations started at the vertices of B.
+# Each case asserts converged, small-residual, NaN-free output that agrees
+# with a reference the program does not produce itself (an exact relation,
+# another solver or optimiser, or physics), or a clean failure: an exit
+# status, one line on stderr, nothing written.
+. tests/lib.sh
+value() { awk -v k=$1 '$1 == k { print $2 }' $2/summary.dat; }
+# le A B: A <= B;  near A B TOL: |A - B| <= TOL |B|;  rel A B: |A - B| / |B|
+le() { awk -v a=$1 -v b=$2 'BEGIN { exit !(a <= b) }'; }
+near() { awk -v a=$1 -v b=$2 -v t=$3 'BEGIN { d = a - b; if (d < 0) d = -d
+  if (b < 0) b = -b; exit !(d <= t * b) }'; }
+rel() { awk -v a=$1 -v b=$2 'BEGIN { d = (a - b) / b; printf "%.1e", (d < 0 ? -d : d + 0) }'; }
+# finite DIR: no NaN or Inf (any case, any sign) among the words of any file
+finite() { ! grep -r -q -i -E "(^|[[:space:]\"'>=])[-+]?(nan|inf)" "$1"; }
+# umax DIR: max |u1|, |u2| over nodes.dat;  udiff DIR1 DIR2 [FACTOR]: max
+# |u - u'/FACTOR| over the nodes, relative to umax DIR1 (same mesh)
+umax() { awk '!/^#/ { for (c = 6; c <= 7; c++) { v = $c < 0 ? -$c : $c; if (v > m) m = v } }
+              END { printf "%.6e", m }' $1/nodes.dat; }
+udiff() { paste $1/nodes.dat $2/nodes.dat | awk -v f=${3:-1} -v u=$(umax $1) '!/^#/ {
+  for (c = 6; c <= 7; c++) { d = $c - $(c + 7) / f; if (d < 0) d = -d; if (d > m) m = d } }
+  END { printf "%.1e", (u > 0 ? m / u : m) }'; }
+
+# solve NAME SCENE ARGS...: the state into $TMP/NAME; a FAIL line if it fails
+# (the helpers' own variables begin with _, so that they leave the caller's alone)
+solve() { _n=$1 _sc=$2; shift 2
+  $BIN solve $_sc -o $TMP/$_n "$@" >/dev/null 2>$TMP/err && return 0
+  fail "$_n: solve failed: $(cat $TMP/err)"; return 1; }
+optimize() { _n=$1 _sc=$2; shift 2
+  $BIN optimize $_sc -o $TMP/$_n "$@" >$TMP/$_n.log 2>$TMP/err && return 0
+  fail "$_n: optimize failed: $(cat $TMP/err)"; return 1; }
+# state_ok NAME TOL: the solve converged to TOL, and wrote no NaN or Inf
+state_ok() {
+  _k=$(value kkt_residual $TMP/$1)
+  check "$1: KKT residual $_k <= $2 after $(value iterations $TMP/$1) $(value state_solver $TMP/$1) iterations" le $_k $2
+  check "$1: no NaN or Inf in any output file" finite $TMP/$1; }
+# work DIR GAMMA FROM TO P1 P2 [F1 F2]: -1/2 <L, u> + 1/2 sum_i T_i u2_i,
+# from the files alone: at a solution of (4.3), Q'AQ = b'Q + sum T_i Q_i,
+# so that E = 1/2 Q'AQ - b'Q is this (Clapeyron's theorem with the contact
+# forces).  <L, u>: the traction (P1, P2) on [FROM, TO] of the top x2 =
+# GAMMA against the piecewise linear u there, and the body force F against
+# u on every triangle (area/3 times the sum of its vertex values).
+work() {
+  tri=/dev/null; [ "${7:-0}${8:-0}" != 00 ] && tri=$1/triangles.dat
+  awk -v g=$2 -v from=$3 -v to=$4 -v P1=$5 -v P2=$6 -v F1=${7:-0} -v F2=${8:-0} '
+  FILENAME ~ /nodes.dat$/ { if (!/^#/ && $5 == g) { n++; X[n] = $4; U1[n] = $6; U2[n] = $7 }; next }
+  FILENAME ~ /contact.dat$/ { if (!/^#/) tu += $5 * $3; next }
+  /^#/ { next }
+  NF == 0 { k = 0; next }
+  { if (k < 3) { x[k] = $1; y[k] = $2; v1[k] = $3; v2[k] = $4 }
+    if (++k == 3) { A = ((x[1]-x[0]) * (y[2]-y[0]) - (x[2]-x[0]) * (y[1]-y[0])) / 2
+      if (A < 0) A = -A
+      body += A / 3 * (F1 * (v1[0] + v1[1] + v1[2]) + F2 * (v2[0] + v2[1] + v2[2])) } }
+  END {
+    for (i = 1; i < n; i++) {
+      lo = X[i] > from ? X[i] : from; hi = X[i+1] < to ? X[i+1] : to
+      if (hi <= lo) continue
+      s = (lo - X[i]) / (X[i+1] - X[i]); t = (hi - X[i]) / (X[i+1] - X[i])
+      top += (hi - lo) / 2 * P1 * (2 * U1[i] + (s + t) * (U1[i+1] - U1[i]))
+      top += (hi - lo) / 2 * P2 * (2 * U2[i] + (s + t) * (U2[i+1] - U2[i])) }
+    printf "%.15g\n", -(top + body) / 2 + tu / 2 }' $1/nodes.dat $1/contact.dat $tri; }
+# energy_is_work NAME GAMMA FROM TO P1 P2 [F1 F2]: the summary's E agrees,
+# to WTOL (1e-9 unless set): the identity holds to the residual of the state
+energy_is_work() {
+  _n=$1; shift; _w=$(work $TMP/$_n "$@"); _e=$(value energy $TMP/$_n)
+  check "$_n: E = $_e is the work of the loads and the contact forces, $_w (rel. $(rel $_w $_e) <= ${WTOL:-1e-9})" \
+    near $_w $_e ${WTOL:-1e-9}; }
+# agrees NAME REF: another solver's state agrees with REF's: E to 1e-9,
+# the displacements to 1e-6 of their largest
+agrees() {
+  _a=$(value energy $TMP/$2); _b=$(value energy $TMP/$1); _d=$(udiff $TMP/$2 $TMP/$1)
+  check "$1: agrees with $2: E $_b (rel. $(rel $_b $_a) <= 1e-9), u (rel. $_d <= 1e-6)" \
+    sh -c "awk -v a=$_a -v b=$_b -v d=$_d 'BEGIN { e = (a - b) / a; if (e < 0) e = -e; exit !(e <= 1e-9 && d <= 1e-6) }'"; }
+# refused NAME CODE PATTERN COMMAND...: the command exits with CODE, says
+# one line on stderr that matches PATTERN, and writes nothing into $TMP/NAME
+refused() {
+  _n=$1 _code=$2 _pat=$3; shift 3
+  rm -rf $TMP/$_n; "$@" -o $TMP/$_n >/dev/null 2>$TMP/err; _rc=$?
+  check "$_n: refused: exit $_rc, '$(head -1 $TMP/err)'" \
+    sh -c "[ $_rc -eq $_code ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q -E '$_pat' $TMP/err && [ ! -e $TMP/$_n ]"; }
+# solver_or_refused NAME REF SOLVER SCENE ARGS...: SOLVER converges and
+# agrees with REF, or fails cleanly (exit 3, one line naming it, no output)
+solver_or_refused() {
+  _n=$1 _ref=$2 _solver=$3 _sc=$4; shift 4
+  rm -rf $TMP/$_n
+  if $BIN solve $_sc -o $TMP/$_n -s solver.state=$_solver "$@" >/dev/null 2>$TMP/err; then
+    state_ok $_n 1e-10; agrees $_n $_ref
+  else
+    _rc=$?
+    check "$_n: fails cleanly: exit $_rc, '$(head -1 $TMP/err)'" \
+      sh -c "[ $_rc -eq 3 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q $_solver $TMP/err && [ ! -e $TMP/$_n ]"
+  fi; }
+# violation FILE C0 d S L h: the largest violation of B (4.4) by an
+# iterate of iterates.dat, relative to C0 (to C0 (b - a) for the area)
+violation() { awk -v C0=$2 -v d=$3 -v S=$4 -v L=$5 -v h=$6 '
+  function up(v) { if (v > w) w = v }
+  /^#/ { next }
+  NF == 0 { if (n) done(); next }
+  { if ($2 == 0) { n = 0; area = 0 } x[n++] = $4 }
+  function done(  i) {
+    for (i = 0; i < n; i++) {
+      up(-x[i] / C0); up(x[i] / C0 - 1)
+      if (i > 0) { up((x[i] - x[i-1] - d) / C0); up((x[i-1] - x[i] - d) / C0)
+                   area += h * (x[i] + x[i-1]) / 2 }
+    }
+    up((area - S) / (C0 * L)); up((S - area) / (C0 * L))
+    n = 0 }
+  END { if (n) done(); printf "%.1e", w }' $1; }
+# kkt FILE C0 d h: the KKT conditions of min E over B from multipliers.dat
+# (the awk of tests/optimize.sh, with the constants of the scene): prints
+# the stationarity relative to max |dE/dX|, fails on a sign or a
+# complementarity violated
+kkt() { awk -v C0=$2 -v d=$3 -v h=$4 '
+  /^#/ { split($0, a, "mu = "); mu = a[2]; next }
+  { i = $1; x[i] = $3; G[i] = $4; lo[i] = $5; up[i] = $6; ri[i] = $7; fa[i] = $8; n = i + 1 }
+  END {
+    for (i = 0; i < n; i++) {
+      if (lo[i] < 0 || up[i] < 0 || ri[i] < 0 || fa[i] < 0) bad = 1
+      if (lo[i] > 0 && x[i] > 1e-9 * C0) bad = 1
+      if (up[i] > 0 && x[i] < C0 * (1 - 1e-9)) bad = 1
+      if (i + 1 < n && ri[i] > 0 && x[i+1] - x[i] < d - 1e-9 * C0) bad = 1
+      if (i + 1 < n && fa[i] > 0 && x[i] - x[i+1] < d - 1e-9 * C0) bad = 1
+      w = (i == 0 || i == n - 1) ? h / 2 : h
+      r = G[i] - lo[i] + up[i] + (i > 0 ? ri[i-1] - fa[i-1] : 0) - ri[i] + fa[i] + mu * w
+      if (r < 0) r = -r; if (r > rmax) rmax = r
+      g = G[i] < 0 ? -G[i] : G[i]; if (g > gmax) gmax = g
+    }
+    printf "%.1e\n", (gmax > 0 ? rmax / gmax : rmax); exit bad }' $1; }
+# opt_ok NAME C0 d S L h: converged, every iterate in B, a KKT point, no NaN
+opt_ok() {
+  _o=$TMP/$1
+  check "$1: stops converged ($(value stop_reason $_o), pi $(value projected_gradient $_o), $(value iterations $_o) iterations)" \
+    [ "$(value stop_reason $_o)" = converged ]
+  kkt_point $1 $2 $3 $6
+  in_B $1 $2 $3 $4 $5 $6
+  check "$1: no NaN or Inf in any output file" finite $_o; }
+# in_B NAME C0 d S L h: every iterate lies in B, to 1e-12 for Algorithm 4.1
+# (its iterates are exact projections) and 1e-11 for SLSQP (the rounding of
+# its QP subproblems: 1.2e-12 on the thin body in plane strain)
+in_B() {
+  _v=$(violation $TMP/$1/iterates.dat $2 $3 $4 $5 $6)
+  case $1 in *slsqp*) _t=1e-11 ;; *) _t=1e-12 ;; esac
+  check "$1: every iterate lies in B (largest violation $_v <= $_t)" le $_v $_t; }
+kkt_point() {
+  _r=$(kkt $TMP/$1/multipliers.dat $2 $3 $4); _rc=$?
+  check "$1: the final design is a KKT point (signs, complementarity; stationarity $_r <= 1e-4)" \
+    awk -v r=$_r -v rc=$_rc 'BEGIN { exit !(rc == 0 && r <= 1e-4) }'; }
+
+# Example 5.1's constants, for the checks of B: C0, d = C1 h, S, b - a, h
+ex51="0.05 0.00625 0.09 4 0.25"
+ex=data/example-5.1.scene
+
+# ---- N = 1024 (started first, in the background: the longest case) -------
+# pdas on N = 256, 512, 1024 (M = N/16, R = 3N/16; 5.3e5 unknowns at the
+# end), one plane model per core.  /usr/bin/time, if there, measures the
+# last run.
+timer=; [ -x /usr/bin/time ] && /usr/bin/time -v true >/dev/null 2>&1 && timer="/usr/bin/time -v -o"
+big() {
+  for N in 256 512 1024; do
+    if [ $N = 1024 ] && [ -n "$timer" ]; then t="$timer $TMP/big-$1.time"; else t=; fi
+    $t $BIN solve $ex -o $TMP/big-$1-$N -s material.model=$1 -s design.N=$N \
+      -s mesh.M=$((N / 16)) -s mesh.R=$((3 * N / 16)) >/dev/null 2>$TMP/big-$1-$N.err
+    echo $? > $TMP/big-$1-$N.rc
+  done; }
+big plane_stress & p1=$!
+big plane_strain & p2=$!
+
+# ---- nu -> 1/2: plane strain locks, plane stress does not ------------------
+# On the article's mesh every solver is run; pdas must converge, and the
+# others agree with it or fail cleanly (exit 3, one line).
+for model in plane_strain plane_stress; do
+  for nu in 0.45 0.499 0.4999; do
+    n=nu$nu-$model
+    solve $n-pdas $ex -s material.model=$model -s material.nu=$nu || continue
+    state_ok $n-pdas 1e-10
+    energy_is_work $n-pdas 1 2 4 0 -5.75e8
+    for solver in cgssor psor; do
+      solver_or_refused $n-$solver $n-pdas $solver $ex -s material.model=$model -s material.nu=$nu
+    done
+    echo "# $n: E $(value energy $TMP/$n-pdas) J/m, u2 at (4, 1) $(awk '$2 == 16 && $3 == 4 { print $7 }' $TMP/$n-pdas/nodes.dat) m"
+  done
+done
+# Refined, plane strain at nu = 0.4999 is locked and ill-conditioned: on
+# N = 128 the rounding of A u alone is about the tolerance 1e-10.  pdas
+# converges or says so (exit 3, one line); at tol = 1e-9 it converges.
+n=nu0.4999-plane_strain-N128; refine="-s design.N=128 -s mesh.M=8 -s mesh.R=24"
+rm -rf $TMP/$n
+if $BIN solve $ex -o $TMP/$n -s material.model=plane_strain -s material.nu=0.4999 $refine \
+     >/dev/null 2>$TMP/err; then
+  state_ok $n 1e-10
+else
+  rc=$?
+  check "$n pdas: converges or fails cleanly: exit $rc, '$(head -1 $TMP/err)'" \
+    sh -c "[ $rc -eq 3 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q 'pdas.*ill-conditioned' $TMP/err && [ ! -e $TMP/$n ]"
+fi
+if solve $n-tol9 $ex -s material.model=plane_strain -s material.nu=0.4999 $refine -s solver.tol=1e-9; then
+  state_ok $n-tol9 1e-9
+  WTOL=1e-8; energy_is_work $n-tol9 1 2 4 0 -5.75e8; WTOL=
+fi
+
+# ---- units: E and the loads times 1e-9, 1e9, 2^-30, 2^30 ---------------------
+# The state is invariant, the energy and the contact forces scale with the
+# factor, and every solver takes the same steps (its stopping test is
+# scale-free).  A power of two scales every rounding exactly too: then the
+# files of displacements and iterates must be identical, byte for byte.
+# A body force (steel's weight, rho g = 7.7e4 N/m^3) is loaded as well.
+scaled() { awk -v f=$1 -v v=$2 'BEGIN { printf "%.17g", f * v }'; }
+units() { echo "-s material.E=$(scaled $1 2.15e11) -s top.P2=$(scaled $1 -5.75e8) -s body_force.F2=$(scaled $1 -7.7e4)"; }
+for f in 1 1e-9 1e9 9.31322574615478515625e-10 1073741824; do
+  for solver in pdas cgssor psor; do
+    solve units$f-$solver $ex $(units $f) -s solver.state=$solver
+  done
+  for method in slsqp projgrad; do
+    optimize units$f-$method $ex $(units $f) -s optimizer.method=$method
+  done
+done
+for f in 1 1e-9 1e9 9.31322574615478515625e-10 1073741824; do
+  for solver in pdas cgssor psor; do
+    [ -f $TMP/units$f-$solver/summary.dat ] && state_ok units$f-$solver 1e-10
+  done
+done
+energy_is_work units1-pdas 1 2 4 0 -5.75e8 0 -7.7e4
+for f in 1e-9 1e9 9.31322574615478515625e-10 1073741824; do
+  for solver in pdas cgssor psor; do
+    a=$TMP/units1-$solver; b=$TMP/units$f-$solver
+    [ -f $a/summary.dat ] && [ -f $b/summary.dat ] || continue
+    check "units x $f $solver: the same iterations ($(value iterations $a), $(value iterations $b))" \
+      [ "$(value iterations $a)" = "$(value iterations $b)" ]
+    d=$(udiff $a $b)
+    check "units x $f $solver: the same displacements (rel. $d <= 1e-12)" le $d 1e-12
+    e=$(scaled $f $(value energy $a))
+    check "units x $f $solver: E scales with the factor (rel. $(rel $(value energy $b) $e) <= 1e-12)" \
+      near $(value energy $b) $e 1e-12
+    t=$(paste $a/contact.dat $b/contact.dat | awk -v f=$f '!/^#/ { d = $5 * f - $11; if (d < 0) d = -d
+          if (d > m) m = d; v = $5 < 0 ? -$5 : $5; if (v > u) u = v } END { printf "%.1e", m / (u * f) }')
+    check "units x $f $solver: the contact forces scale with the factor (rel. $t <= 1e-12)" le $t 1e-12
+    case $f in 1e*) ;; *)
+      check "units x $f $solver: nodes.dat identical (a power of two scales exactly)" cmp -s $a/nodes.dat $b/nodes.dat ;;
+    esac
+  done
+  for method in slsqp projgrad; do
+    a=$TMP/units1-$method; b=$TMP/units$f-$method
+    [ -f $a/summary.dat ] && [ -f $b/summary.dat ] || continue
+    check "units x $f $method: the same iterations and state solves ($(value iterations $a)/$(value evaluations $a), $(value iterations $b)/$(value evaluations $b))" \
+      [ "$(value iterations $a) $(value evaluations $a)" = "$(value iterations $b) $(value evaluations $b)" ]
+    e=$(scaled $f $(value energy $a))
+    check "units x $f $method: E* scales with the factor (rel. $(rel $(value energy $b) $e) <= 1e-12)" \
+      near $(value energy $b) $e 1e-12
+    d=$(paste $a/final/shape.dat $b/final/shape.dat | awk '!/^#/ { d = $2 - $4; if (d < 0) d = -d; if (d > m) m = d }
+          END { printf "%.1e", m / 0.05 }')
+    check "units x $f $method: the same final shape ($d C0 <= 1e-12 C0)" le $d 1e-12
+    case $f in 1e*) ;; *)
+      check "units x $f $method: iterates.dat identical (a power of two scales exactly)" cmp -s $a/iterates.dat $b/iterates.dat ;;
+    esac
+  done
+done
+
+# ---- a load that lifts the body ----------------------------------------------
+# Clamped on the left, the top pulled up: nothing touches.  No contact
+# force, every gap open, and the state is that of a linear problem: twice
+# the load, twice the displacement and four times the energy.
+for solver in pdas cgssor psor; do
+  solve lift-$solver $ex -s top.P2=5.75e8 -s solver.state=$solver
+done
+solve lift2 $ex -s top.P2=1.15e9
+if [ -f $TMP/lift-pdas/summary.dat ]; then
+  state_ok lift-pdas 1e-10
+  check "lift-pdas: no contact node is active ($(value active_contact_nodes $TMP/lift-pdas))" \
+    [ "$(value active_contact_nodes $TMP/lift-pdas)" = 0 ]
+  g=$(awk '!/^#/ && (m == "" || $4 < m) { m = $4 } END { print m }' $TMP/lift-pdas/contact.dat)
+  check "lift-pdas: every gap is open (smallest $g m)" awk -v g=$g 'BEGIN { exit !(g > 0) }'
+  t=$(awk '!/^#/ { v = $5 < 0 ? -$5 : $5; if (v > m) m = v } END { printf "%.1e", m / 1.15e9 }' $TMP/lift-pdas/contact.dat)
+  check "lift-pdas: no contact force (max |T| = $t of the load 1.15e9 N/m <= 1e-10)" le $t 1e-10
+  energy_is_work lift-pdas 1 2 4 0 5.75e8
+  for solver in cgssor psor; do [ -f $TMP/lift-$solver/summary.dat ] && agrees lift-$solver lift-pdas; done
+  if [ -f $TMP/lift2/summary.dat ]; then
+    d=$(udiff $TMP/lift-pdas $TMP/lift2 2)
+    check "lift: twice the load, twice the displacements (rel. $d <= 1e-12)" le $d 1e-12
+    e=$(scaled 4 $(value energy $TMP/lift-pdas))
+    check "lift: twice the load, four times E (rel. $(rel $(value energy $TMP/lift2) $e) <= 1e-12)" \
+      near $(value energy $TMP/lift2) $e 1e-12
+  fi
+fi
+for method in slsqp projgrad; do
+  optimize lift-$method $ex -s top.P2=5.75e8 -s optimizer.method=$method && opt_ok lift-$method $ex51
+done
+# On rollers alone nothing holds the lifted body: (4.3) has no solution.
+for solver in pdas cgssor psor; do
+  refused lift-rollers-$solver 3 "$solver.*(not held|lifts it off)" \
+    $BIN solve $ex -s top.P2=5.75e8 -s left.bc=roller -s solver.state=$solver
+done
+refused lift-rollers-optimize 3 "not held" $BIN optimize $ex -s top.P2=5.75e8 -s left.bc=roller
+
+# ---- a load that presses the body flat -------------------------------------
+# Example 5.1's arc on rollers, the whole top pressed with 1e10 Pa: every
+# contact node touches and pushes, and (no side holds u2) the contact
+# forces carry the whole load, 4e10 N/m.
+press="-s left.bc=roller -s top.from=0 -s top.P2=-1e10"
+for solver in pdas cgssor psor; do solve press-$solver $ex $press -s solver.state=$solver; done
+if [ -f $TMP/press-pdas/summary.dat ]; then
+  o=$TMP/press-pdas
+  state_ok press-pdas 1e-10
+  check "press-pdas: every contact node is active ($(value active_contact_nodes $o) of $(value contact_nodes $o))" \
+    [ "$(value active_contact_nodes $o)" = "$(value contact_nodes $o)" ]
+  check "press-pdas: every gap is zero and every contact force positive" \
+    awk '!/^#/ { if ($4 != 0 || !($5 > 0)) bad = 1 } END { exit bad }' $o/contact.dat
+  s=$(awk '!/^#/ { s += $5 } END { printf "%.15g", s }' $o/contact.dat)
+  check "press-pdas: the contact forces carry the load: sum T = $s N/m (rel. $(rel $s 4e10) <= 1e-10)" near $s 4e10 1e-10
+  energy_is_work press-pdas 1 0 4 0 -1e10
+  for solver in cgssor psor; do [ -f $TMP/press-$solver/summary.dat ] && agrees press-$solver press-pdas; done
+fi
+
+# ---- designs at the bounds ---------------------------------------------------
+# alpha = 0 and alpha = C0 everywhere, solved; then B made a single point,
+# so that optimize must return it at once: C2 = gamma (b - a) (alpha = 0),
+# C2 = gamma (b - a) - C0 (b - a) (alpha = C0), C1 = 0 (alpha constant,
+# S/(b - a) = 0.0225), and C1 = 1e-12 (a point to rounding: B lies within
+# N C1 h = 4e-12 m of it).  Each with the point, the slope bound d = C1 h
+# and how far (in C0) B reaches from the point.
+noarc="-s design.arc_x1= -s design.arc_x2= -s design.arc_radius="
+for c in 0 0.05; do
+  for solver in pdas cgssor; do
+    solve alpha$c-$solver $ex $noarc -s design.initial=constant -s design.constant=$c -s solver.state=$solver
+  done
+  [ -f $TMP/alpha$c-pdas/summary.dat ] || continue
+  state_ok alpha$c-pdas 1e-10
+  energy_is_work alpha$c-pdas 1 2 4 0 -5.75e8
+  [ -f $TMP/alpha$c-cgssor/summary.dat ] && agrees alpha$c-cgssor alpha$c-pdas
+done
+for point in "design.C2=4 0 0.00625 0" "design.C2=3.8 0.05 0.00625 0" "design.C1=0 0.0225 0 0" \
+             "design.C1=1e-12 0.0225 2.5e-13 8e-11"; do
+  set -- $point; key=$1 X=$2 d=$3 reach=$4
+  for method in slsqp projgrad; do
+    n=point-${key#design.}-$method
+    optimize $n $ex -s $key -s optimizer.method=$method || continue
+    o=$TMP/$n
+    check "$n: converged at once ($(value stop_reason $o), $(value iterations $o) iterations)" \
+      [ "$(value stop_reason $o) $(value iterations $o)" = "converged 0" ]
+    m=$(awk -v X=$X '!/^#/ { d = $2 - X; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.1e", m / 0.05 }' $o/final/shape.dat)
+    t=$(awk -v r=$reach 'BEGIN { printf "%.1e", r + 1e-12 }')
+    check "$n: the final design is the point alpha = $X of B (max dev. $m C0 <= $t C0)" le $m $t
+    kkt_point $n 0.05 $d 0.25
+    check "$n: no NaN or Inf in any output file" finite $o
+  done
+done
+
+# ---- a node touching with zero force ---------------------------------------
+# tests/test_hard.c solves at a weakly active node of Examples 5.1 and 5.2
+# with every solver (and tests/test_gradient.c checks (4.8) there).  The
+# extreme case: no load at all, alpha = 0 on rollers, so that every
+# contact node touches with zero force.  The answer is u = 0, E = 0,
+# exactly; the KKT residual is 0/0, taken as 0.
+noload="-s top.bc=free -s top.from= -s top.to= -s top.P1= -s top.P2="
+for solver in pdas cgssor psor; do
+  n=noload-$solver
+  solve $n tests/scenes/flat-punch.scene $noload -s solver.state=$solver || continue
+  state_ok $n 0
+  check "$n: u = 0 and E = 0 exactly (max |u| $(umax $TMP/$n), E $(value energy $TMP/$n))" \
+    awk -v u=$(umax $TMP/$n) -v e=$(value energy $TMP/$n) 'BEGIN { exit !(u == 0 && e == 0) }'
+done
+for method in slsqp projgrad; do
+  n=noload-$method
+  optimize $n $ex $noload -s optimizer.method=$method || continue
+  check "$n: converged at once with E = 0 ($(value stop_reason $TMP/$n), $(value iterations $TMP/$n) iterations, E $(value energy $TMP/$n))" \
+    [ "$(value stop_reason $TMP/$n) $(value iterations $TMP/$n) $(value energy $TMP/$n)" = "converged 0 0" ]
+  check "$n: no NaN or Inf in any output file" finite $TMP/$n
+done
+
+# ---- thin bodies -----------------------------------------------------------
+# gamma = 0.1 and 0.02 (tests/scenes/hard-thin*.scene).  pdas converges,
+# cgssor agrees or fails cleanly, psor agrees or fails cleanly; SLSQP
+# converges to a KKT point; Algorithm 4.1 converges, or stops with
+# no_progress at a KKT point with SLSQP's energy (its line search works on
+# differences of E, which reach the rounding of E before pi reaches 1e-6).
+for thin in thin thinner; do
+  sc=tests/scenes/hard-$thin.scene
+  case $thin in thin) B="0.01 0.0015625 0.02 4 0.0625" ;; *) B="0.002 0.00015625 0.004 4 0.03125" ;; esac
+  set -- $B; C0=$1 d=$2 h=$5
+  g=$(awk '$1 == "gamma" { print $3 }' $sc)
+  for model in plane_stress plane_strain; do
+    n=$thin-$model
+    solve $n-pdas $sc -s material.model=$model || continue
+    state_ok $n-pdas 1e-10
+    energy_is_work $n-pdas $g 2 4 0 -5.75e8
+    for solver in cgssor psor; do solver_or_refused $n-$solver $n-pdas $solver $sc -s material.model=$model; done
+    optimize $n-slsqp $sc -s material.model=$model && opt_ok $n-slsqp $B
+    optimize $n-projgrad $sc -s material.model=$model -s optimizer.method=projgrad || continue
+    o=$TMP/$n-projgrad; why=$(value stop_reason $o)
+    check "$n-projgrad: converged, or no_progress ($why, pi $(value projected_gradient $o), $(value iterations $o) iterations)" \
+      sh -c "[ $why = converged ] || [ $why = no_progress ]"
+    kkt_point $n-projgrad $C0 $d $h
+    in_B $n-projgrad $B
+    check "$n-projgrad: no NaN or Inf in any output file" finite $o
+    [ -f $TMP/$n-slsqp/summary.dat ] || continue
+    a=$(value energy $TMP/$n-slsqp); b=$(value energy $o)
+    check "$n: both optimisers reach the same E* to 1e-9 ($a, $b)" near $b $a 1e-9
+  done
+done
+
+# ---- optimisations started at the vertices of B -----------------------------
+# Four extreme starts of Example 5.1's B (C0 = 0.05, C1 = 0.025, area 0.09):
+# zero on the left then rising at the largest slope C1 up to C0, its
+# mirror, a V (zero in the middle, rising at C1 to both sides) and a
+# Lambda (a peak p = sqrt(0.09 C1) in the middle, falling at C1 to zero),
+# written at the nodes; the program projects them onto B.  Every run must
+# end converged at a KKT point; in plane stress at the optimum of
+# data/reference/example-5.1.dat (an independent run: Algorithm 4.1, the
+# state by cgssor), in plane strain all at the same energy.
+awk 'BEGIN { C0 = 0.05; C1 = 0.025; w = 2 - sqrt(3.6); p = sqrt(0.09 * C1)
+  for (i = 0; i <= 16; i++) { x = i / 4
+    r = C1 * (x - 1.2); r = r < 0 ? 0 : r > C0 ? C0 : r
+    f = C1 * (2.8 - x); f = f < 0 ? 0 : f > C0 ? C0 : f
+    a = x < 2 ? 2 - x : x - 2
+    v = C1 * (a - w); v = v < 0 ? 0 : v > C0 ? C0 : v
+    l = p - C1 * a; l = l < 0 ? 0 : l
+    printf "%g %.17g\n", x, r > "'$TMP/rise.dat'"; printf "%g %.17g\n", x, f > "'$TMP/fall.dat'"
+    printf "%g %.17g\n", x, v > "'$TMP/V.dat'"; printf "%g %.17g\n", x, l > "'$TMP/Lambda.dat'" } }'
+ref=$(awk '$1 == "energy_final" { print $2 }' data/reference/example-5.1.dat)
+for model in plane_stress plane_strain; do
+  for start in rise fall V Lambda; do
+    for method in slsqp projgrad; do
+      n=vertex-$start-$model-$method
+      optimize $n $ex $noarc -s design.initial=file -s design.file=$TMP/$start.dat \
+        -s material.model=$model -s optimizer.method=$method || continue
+      opt_ok $n $ex51
+      e=$(value energy $TMP/$n)
+      if [ $model = plane_stress ]; then
+        check "$n: E* = $e is the reference optimum $ref (rel. $(rel $e $ref) <= 1e-8)" near $e $ref 1e-8
+        check "$n: the final shape is the reference optimum's to 1e-7 m" \
+          sh -c "sed 's/#.*//; /^ *\$/d' data/reference/example-5.1-shape.dat > $TMP/ref.shape
+                 sed '/^#/d' $TMP/$n/final/shape.dat > $TMP/got.shape
+                 numdiff -q -a 1e-7 -r 0 $TMP/ref.shape $TMP/got.shape"
+      else
+        echo "$e" >> $TMP/vertex-strain.E
+      fi
+    done
+  done
+done
+if [ -f $TMP/vertex-strain.E ]; then
+  s=$(awk '{ if (NR == 1 || $1 < lo) lo = $1; if (NR == 1 || $1 > hi) hi = $1 } END { printf "%.1e", (hi - lo) / -lo }' $TMP/vertex-strain.E)
+  check "vertex starts, plane strain: all $(wc -l < $TMP/vertex-strain.E) runs end at the same E* (spread $s <= 1e-8)" le $s 1e-8
+fi
+
+# ---- N = 1024: the results ----------------------------------------------------
+wait $p1 $p2
+for model in plane_stress plane_strain; do
+  n=big-$model-1024; o=$TMP/$n
+  for N in 256 512 1024; do
+    [ "$(cat $TMP/big-$model-$N.rc)" = 0 ] || fail "big-$model-$N: solve failed: $(cat $TMP/big-$model-$N.err)"
+  done
+  [ -f $o/summary.dat ] || continue
+  state_ok $n 1e-10
+  energy_is_work $n 1 2 4 0 -5.75e8
+  # the observed rate of E_h on N = 256, 512, 1024 (tests/convergence.sh
+  # finds 1.86 in plane stress on the coarser meshes)
+  r=$(for N in 256 512 1024; do value energy $TMP/big-$model-$N; done | awk '{ E[NR] = $1 }
+      END { printf "%.3f", log((E[1] - E[2]) / (E[2] - E[3])) / log(2) }')
+  check "$n: E_h = $(value energy $o) continues the convergence of N = 256, 512: observed rate $r in [1.7, 2.3]" \
+    awk -v r=$r 'BEGIN { exit !(r >= 1.7 && r <= 2.3) }'
+  if [ -f $TMP/big-$model.time ]; then
+    rss=$(awk -F': ' '/Maximum resident/ { printf "%d", $2 / 1024 }' $TMP/big-$model.time)
+    wall=$(awk -F': ' '/Elapsed/ { print $2 }' $TMP/big-$model.time)
+    echo "# $n: $(value dofs $o) unknowns, $(value iterations $o) pdas iterations, solve $(value seconds $o) s, run $wall (wall, beside the other model), max RSS $rss MB"
+    # AddressSanitizer (make SAN=1) doubles the memory: 1.9 GB there
+    case $BIN in */san/*) limit=4096 ;; *) limit=2048 ;; esac
+    check "$n: the run fits in $limit MB (max RSS $rss MB)" le $rss $limit
+  fi
+done
+finish

@@ -1,0 +1,124 @@
+/* test_hard: the state solvers at a weakly active node, one that touches
+   the foundation with zero contact force.  There the complementarity
+   conditions are degenerate (gap = 0 and T = 0 at once), the case in which
+   an active set method may cycle and a projected iteration may stall.  The
+   design is found as in test_gradient.c, by bisection on alpha_i between a
+   design where node i is free and one where it presses; then every solver
+   must converge there, and just above and just below it, to the same
+   state as the active set method started cold. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cholmod.h>
+#include "check.h"
+#include "scene.h"
+#include "model.h"
+
+static const char *name[] = { "pdas", "psor", "cgssor" };
+
+/* a model of scene s solved at X by method m from a cold start; NULL on failure */
+static Model *solve_cold(Scene *s, State_method m, const double *X,
+                         cholmod_common *cm, Status *st)
+{
+  s->state = m;
+  s->max_iter = m == STATE_PDAS ? 100 : 100000;
+  Model *md = model_new(s, cm, st);
+  if (md && model_solve(md, X, st)) { model_free(md); md = NULL; }
+  return md;
+}
+
+/* node i next to the contact zone, made weakly active by bisection on X[i];
+   c is its contact DOF; 0 if there is none */
+static int weakly_active(Model *md, const Scene *s, double *X, int *i, int *c)
+{
+  Status st;
+  *i = *c = -1;
+  for (int k = 0; k + 1 < md->dofs->nc; k++) {
+    int col = md->dofs->contact_col[k];
+    if (md->Q[md->dofs->contact[k]] > -X[col]
+        && md->Q[md->dofs->contact[k + 1]] <= -X[col + 1]) *i = col, *c = k;
+  }
+  if (*i < 0) return 0;
+  double hi = X[*i], lo = 0;          /* free at hi, pressing at lo = 0 */
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * s->C0; it++) {
+    X[*i] = 0.5 * (lo + hi);
+    if (model_solve(md, X, &st)) return 0;
+    if (md->Q[md->dofs->contact[*c]] > -X[*i]) hi = X[*i]; else lo = X[*i];
+  }
+  X[*i] = hi;
+  return !model_solve(md, X, &st);
+}
+
+/* every solver at X agrees with pdas from a cold start */
+static void agree(Scene *s, const char *tag, const double *X, cholmod_common *cm)
+{
+  Status st;
+  Model *ref = solve_cold(s, STATE_PDAS, X, cm, &st);
+  if (!check(ref != NULL, "%s: pdas converges%s%s", tag, ref ? "" : ": ",
+             ref ? "" : st.msg)) return;
+  int n = ref->dofs->n;
+  double umax = 0;
+  for (int j = 0; j < n; j++) umax = fmax(umax, fabs(ref->Q[j]));
+  check(ref->report.kkt <= s->tol, "%s: pdas KKT residual %.1e <= %.0e after %d "
+        "iterations", tag, ref->report.kkt, s->tol, ref->report.iterations);
+  for (int m = STATE_PSOR; m <= STATE_CGSSOR; m++) {
+    Model *md = solve_cold(s, (State_method) m, X, cm, &st);
+    if (!check(md != NULL, "%s: %s converges%s%s", tag, name[m], md ? "" : ": ",
+               md ? "" : st.msg)) continue;
+    double du = 0;
+    for (int j = 0; j < n; j++) du = fmax(du, fabs(md->Q[j] - ref->Q[j]));
+    check(fabs(md->energy - ref->energy) <= 1e-9 * fabs(ref->energy)
+          && du <= 1e-6 * umax, "%s: %s agrees with pdas (E %.1e, Q %.1e "
+          "relative) after %d iterations", tag, name[m],
+          fabs(md->energy - ref->energy) / fabs(ref->energy), du / umax,
+          md->report.iterations);
+    model_free(md);
+  }
+  model_free(ref);
+}
+
+static void weakly_active_node(const char *path, Plane_model model)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  cholmod_start(&cm);
+  cm.print = 0;
+  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
+  s.model = model;
+  s.tol = 1e-11;
+  const char *mname = scene_model_name(model);
+  double *X = malloc((s.N + 1) * sizeof *X);
+  memcpy(X, s.alpha0, (s.N + 1) * sizeof *X);
+  Model *md = solve_cold(&s, STATE_PDAS, X, &cm, &st);
+  int i = -1, c = -1;
+  if (check(md && weakly_active(md, &s, X, &i, &c), "%s %s: a weakly active "
+            "design found by bisection (pdas warm starts throughout)", path, mname)) {
+    double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0;
+    for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
+    check(fabs(gap) <= 1e-12 * s.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+          "%s %s: node %d touches (gap %.1e m) with force %.1e max T", path,
+          mname, i, gap, fabs(md->T[c]) / Tmax);
+    char tag[600];
+    double x0 = X[i];
+    for (int side = -1; side <= 1; side++) {
+      X[i] = x0 + side * 1e-9 * s.C0;
+      snprintf(tag, sizeof tag, "%s %s, node %d %s", path, mname, i,
+               side < 0 ? "pressed by 1e-9 C0" : side > 0 ? "lifted by 1e-9 C0"
+               : "weakly active");
+      agree(&s, tag, X, &cm);
+    }
+  }
+  model_free(md);
+  free(X);
+  scene_free(&s);
+  cholmod_finish(&cm);
+}
+
+int main(void)
+{
+  weakly_active_node("data/example-5.1.scene", MODEL_PLANE_STRESS);
+  weakly_active_node("data/example-5.1.scene", MODEL_PLANE_STRAIN);
+  weakly_active_node("data/example-5.2.scene", MODEL_PLANE_STRESS);
+  return check_done();
+}
