@@ -33,13 +33,15 @@ CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
            -I/usr/include/suitesparse -Isrc
 LDLIBS  := -lcholmod -lnlopt -lgsl -lgslcblas -linih -lm
 ifeq ($(SAN),1)
-CFLAGS  += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer
+CFLAGS  += -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+           -fno-omit-frame-pointer
 LDFLAGS += -fsanitize=address,undefined
 endif
 
 # Debian packages the package needs, and the command that proves each one.
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
-            libsuitesparse-dev libopenblas0-pthread pkg-config lmodern texlive-latex-base \
+            libsuitesparse-dev libopenblas0-pthread pkg-config lmodern valgrind \
+            texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
 .PHONY: all deps tangle tangle-check paper figures check bench reference clean
@@ -156,3 +158,6 @@ reference: bin/contactopt
 
 clean:
 	rm -rf build bin out src/.tangled
+
+# make fuzz: libFuzzer on the scene parser and validator (tests/fuzz/).
+include tests/fuzz/fuzz.mk

@@ -1,4 +1,4 @@
-#line 283 "paper/setting.nw"
+#line 288 "paper/setting.nw"
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <ini.h>
 #include "scene.h"
-#line 303 "paper/setting.nw"
+#line 308 "paper/setting.nw"
 static const char *const geometry_keys[] = {"a", "b", "gamma", NULL};
 static const char *const design_keys[] = {"N", "C0", "C1", "C2", "initial",
   "arc_x1", "arc_x2", "arc_radius", "line_start", "line_end", "constant",
@@ -28,7 +28,7 @@ static const char *const section_names[] = {"geometry", "design", "mesh",
 static const char *const *const section_keys[] = {geometry_keys,
   design_keys, mesh_keys, material_keys, side_keys, side_keys, side_keys,
   body_force_keys, contact_keys, solver_keys, optimizer_keys};
-#line 326 "paper/setting.nw"
+#line 331 "paper/setting.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const bc_names[] = {"free", "clamped", "roller",
   "traction", NULL};
@@ -46,7 +46,7 @@ static const char *const file_keys[] = {"file", NULL};
 static const char *const *const initial_keys[] = {arc_keys, line_keys,
   constant_keys, file_keys};
 static const char *const traction_keys[] = {"from", "to", "P1", "P2", NULL};
-#line 410 "paper/setting.nw"
+#line 415 "paper/setting.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 
 typedef struct {
@@ -55,7 +55,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 424 "paper/setting.nw"
+#line 429 "paper/setting.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -69,13 +69,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 450 "paper/setting.nw"
+#line 455 "paper/setting.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 346 "paper/setting.nw"
+#line 351 "paper/setting.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -84,7 +84,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 358 "paper/setting.nw"
+#line 363 "paper/setting.nw"
 /* buf = the names, comma-separated (truncated to size) */
 static const char *name_list(const char *const *names, char *buf,
                              size_t size)
@@ -97,7 +97,7 @@ static const char *name_list(const char *const *names, char *buf,
                              i ? ", " : "", names[i]);
   return buf;
 }
-#line 374 "paper/setting.nw"
+#line 379 "paper/setting.nw"
 /* the name of entry k of a list of n names, or "?" */
 static const char *enum_name(const char *const *names, int n, int k)
 {
@@ -123,7 +123,7 @@ const char *scene_bc_name(Bc_kind k)
 {
   return enum_name(bc_names, 4, (int)k);
 }
-#line 458 "paper/setting.nw"
+#line 463 "paper/setting.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -142,7 +142,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 479 "paper/setting.nw"
+#line 484 "paper/setting.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -160,7 +160,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 500 "paper/setting.nw"
+#line 505 "paper/setting.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -180,7 +180,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 529 "paper/setting.nw"
+#line 534 "paper/setting.nw"
 /* e = sec.key = val at L's current origin, if the schema has the names */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -189,7 +189,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   int s = name_index(section_names, sec);
   origin(L, L->override, where, sizeof where);
   
-#line 551 "paper/setting.nw"
+#line 556 "paper/setting.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -199,7 +199,7 @@ if (s < 0)
 if (name_index(section_keys[s], key) < 0)
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, name_list(section_keys[s], list, sizeof list));
-#line 537 "paper/setting.nw"
+#line 542 "paper/setting.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -210,7 +210,7 @@ if (name_index(section_keys[s], key) < 0)
   e->override = L->override;
   return 0;
 }
-#line 563 "paper/setting.nw"
+#line 568 "paper/setting.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -231,22 +231,35 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 597 "paper/setting.nw"
+#line 608 "paper/setting.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
   Loader *L = user;
-  if (L->failed || !fgets(buf, size, L->fp)) return NULL;
+  int c = EOF, n = 0;
+  if (L->failed) return NULL;
+  while (n < size - 1 && (c = getc(L->fp)) != EOF)
+    if ((buf[n++] = (char)c) == '\n') break;
+  if (n == 0) return NULL;
+  buf[n] = '\0';
   L->line++;
   L->indented = buf[0] == ' ' || buf[0] == '\t';
-  if (!strchr(buf, '\n') && !feof(L->fp)) {
-    fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
-         size - 2);
-    return NULL;
-  }
+  
+#line 628 "paper/setting.nw"
+if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)) {
+  fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
+       size - 2);
+  return NULL;
+}
+if (strlen(buf) < (size_t)n) {
+  fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or UTF-8, "
+       "not UTF-16)", L->path, L->line);
+  return NULL;
+}
+#line 621 "paper/setting.nw"
   return buf;
 }
-#line 618 "paper/setting.nw"
+#line 645 "paper/setting.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -257,7 +270,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 635 "paper/setting.nw"
+#line 662 "paper/setting.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -265,18 +278,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 628 "paper/setting.nw"
+#line 655 "paper/setting.nw"
   
-#line 645 "paper/setting.nw"
+#line 672 "paper/setting.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 629 "paper/setting.nw"
+#line 656 "paper/setting.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 657 "paper/setting.nw"
+#line 684 "paper/setting.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -291,18 +304,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 678 "paper/setting.nw"
+#line 705 "paper/setting.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 671 "paper/setting.nw"
+#line 698 "paper/setting.nw"
   L->line = 0;
   return L->failed;
 }
-#line 698 "paper/setting.nw"
+#line 725 "paper/setting.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -313,7 +326,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 711 "paper/setting.nw"
+#line 738 "paper/setting.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -326,7 +339,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 734 "paper/setting.nw"
+#line 761 "paper/setting.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -338,7 +351,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 723 "paper/setting.nw"
+#line 750 "paper/setting.nw"
   free(copy);
   if (L->failed) return L->failed;
   if ((old = find(L, e.sec, e.key))) {
@@ -347,7 +360,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 755 "paper/setting.nw"
+#line 782 "paper/setting.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -359,7 +372,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 770 "paper/setting.nw"
+#line 797 "paper/setting.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -373,7 +386,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 787 "paper/setting.nw"
+#line 814 "paper/setting.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -384,7 +397,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 803 "paper/setting.nw"
+#line 830 "paper/setting.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -404,7 +417,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 826 "paper/setting.nw"
+#line 853 "paper/setting.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -415,7 +428,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 839 "paper/setting.nw"
+#line 866 "paper/setting.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -426,7 +439,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 852 "paper/setting.nw"
+#line 879 "paper/setting.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -437,7 +450,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 867 "paper/setting.nw"
+#line 894 "paper/setting.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -448,8 +461,8 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 886 "paper/setting.nw"
-/* [geometry]: a < b, and gamma */
+#line 913 "paper/setting.nw"
+/* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
   int rc;
@@ -457,9 +470,14 @@ static int read_geometry(Loader *L, Scene *s)
       || (rc = real(L, "geometry", "b", REQUIRED, &s->b)))
     return rc;
   if (!(s->b > s->a)) return blame(L, "must exceed geometry.a = %g", s->a);
-  return real(L, "geometry", "gamma", REQUIRED, &s->gamma);
+  if (!isfinite(s->b - s->a))
+    return blame(L, "the width b - a overflows a double");
+  if ((rc = real(L, "geometry", "gamma", REQUIRED, &s->gamma))) return rc;
+  if (!isfinite(s->gamma * (s->b - s->a)))
+    return blame(L, "the area gamma (b - a) overflows a double");
+  return 0;
 }
-#line 901 "paper/setting.nw"
+#line 938 "paper/setting.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -474,8 +492,8 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 921 "paper/setting.nw"
-/* [mesh]: M, R >= 1, C0 < C0prime < gamma */
+#line 958 "paper/setting.nw"
+/* [mesh]: M, R >= 1, 72 N (M + R) <= INT_MAX, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
   int rc;
@@ -483,6 +501,15 @@ static int read_mesh(Loader *L, Scene *s)
   if (s->M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
   if ((rc = integer(L, "mesh", "R", REQUIRED, &s->R))) return rc;
   if (s->R < 1) return blame(L, "must be >= 1 (fixed rows of cells)");
+  
+#line 988 "paper/setting.nw"
+if (!(72.0 * s->N * ((double)s->M + s->R) <= INT_MAX))
+  return blame(L, "with design.N = %d and mesh.M = %d the mesh has 2 N "
+               "(M + R) = %.0f triangles, more than INT_MAX / 36 = %d: the "
+               "stiffness matrix has 36 entries a triangle, counted in C "
+               "ints", s->N, s->M, 2.0 * s->N * ((double)s->M + s->R),
+               INT_MAX / 36);
+#line 967 "paper/setting.nw"
   if ((rc = real(L, "mesh", "C0prime", REQUIRED, &s->C0prime))) return rc;
   if (!(s->C0prime > s->C0))
     return blame(L, "must exceed design.C0 = %g: the moving boundary must "
@@ -492,7 +519,7 @@ static int read_mesh(Loader *L, Scene *s)
                "= %g: the fixed part of the mesh needs a height", s->C0prime);
   return 0;
 }
-#line 962 "paper/setting.nw"
+#line 1018 "paper/setting.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -503,14 +530,14 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->C0 * w);
 }
-#line 981 "paper/setting.nw"
+#line 1037 "paper/setting.nw"
 /* x_i = a + i (b - a) / N */
 static double node_x(const Scene *s, int i)
 {
   double t = (double)i / s->N;
   return (1 - t) * s->a + t * s->b;
 }
-#line 994 "paper/setting.nw"
+#line 1050 "paper/setting.nw"
 /* alpha0 = arc_x2 - sqrt(r^2 - (x - arc_x1)^2), the lower half-circle */
 static int fill_arc(Loader *L, Scene *s)
 {
@@ -530,7 +557,7 @@ static int fill_arc(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1017 "paper/setting.nw"
+#line 1073 "paper/setting.nw"
 /* alpha0 linear from line_start at x1 = a to line_end at x1 = b */
 static int fill_line(Loader *L, Scene *s)
 {
@@ -545,7 +572,7 @@ static int fill_line(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1034 "paper/setting.nw"
+#line 1090 "paper/setting.nw"
 /* alpha0 = constant */
 static int fill_constant(Loader *L, Scene *s)
 {
@@ -555,7 +582,7 @@ static int fill_constant(Loader *L, Scene *s)
   for (i = 0; i <= s->N; i++) s->alpha0[i] = c;
   return 0;
 }
-#line 1048 "paper/setting.nw"
+#line 1104 "paper/setting.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -566,7 +593,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1064 "paper/setting.nw"
+#line 1120 "paper/setting.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -582,18 +609,22 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1084 "paper/setting.nw"
+#line 1142 "paper/setting.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
   FILE *fp;
   char *line = NULL;
   size_t cap = 0;
+  ssize_t len;
   int rc = 0, row = 0, lineno = 0;
   if (!(fp = fopen(path, "r")))
     return blame(L, "cannot read %s: %s", path, strerror(errno));
-  while (!rc && getline(&line, &cap, fp) != -1)
-    rc = read_row(L, s, path, ++lineno, line, &row);
+  while (!rc && (len = getline(&line, &cap, fp)) != -1)
+    rc = strlen(line) < (size_t)len
+      ? blame(L, "%s line %d: a NUL byte: a shape file is text", path,
+              ++lineno)
+      : read_row(L, s, path, ++lineno, line, &row);
   if (!rc && ferror(fp))
     rc = blame(L, "cannot read %s: %s", path, strerror(errno));
   free(line);
@@ -603,7 +634,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->N + 1);
   return rc;
 }
-#line 1107 "paper/setting.nw"
+#line 1169 "paper/setting.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -613,7 +644,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1120 "paper/setting.nw"
+#line 1182 "paper/setting.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -625,7 +656,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->alpha0[i], i, node_x(s, i), s->C0prime);
   return 0;
 }
-#line 1137 "paper/setting.nw"
+#line 1199 "paper/setting.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -636,19 +667,19 @@ static int read_initial(Loader *L, Scene *s)
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1156 "paper/setting.nw"
+#line 1218 "paper/setting.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1147 "paper/setting.nw"
+#line 1209 "paper/setting.nw"
   if (!(s->alpha0 = malloc(((size_t)s->N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
                                   "for %d nodes", L->path, s->N + 1);
   if ((rc = fill[k](L, s))) return rc;
   return check_alpha0(L, s);
 }
-#line 1171 "paper/setting.nw"
+#line 1233 "paper/setting.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -665,7 +696,7 @@ static int read_material(Loader *L, Scene *s)
   s->model = (Plane_model)k;
   return 0;
 }
-#line 1197 "paper/setting.nw"
+#line 1259 "paper/setting.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -673,7 +704,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->side[id];
   int rc;
   
-#line 1216 "paper/setting.nw"
+#line 1278 "paper/setting.nw"
 double lo = id == SIDE_TOP ? s->a : s->C0prime;
 double hi = id == SIDE_TOP ? s->b : s->gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -688,7 +719,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1204 "paper/setting.nw"
+#line 1266 "paper/setting.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -697,7 +728,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1234 "paper/setting.nw"
+#line 1296 "paper/setting.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -709,7 +740,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return refuse_keys(L, sec, traction_keys, "bc", bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1255 "paper/setting.nw"
+#line 1317 "paper/setting.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -723,7 +754,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, scene_bc_name(s->side[0].kind),
               scene_bc_name(s->side[1].kind), scene_bc_name(s->side[2].kind));
 }
-#line 1271 "paper/setting.nw"
+#line 1333 "paper/setting.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -732,7 +763,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1290 "paper/setting.nw"
+#line 1352 "paper/setting.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -747,7 +778,7 @@ static int read_loads(Loader *L, Scene *s)
                  "frictionless)");
   return 0;
 }
-#line 1311 "paper/setting.nw"
+#line 1373 "paper/setting.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -766,7 +797,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1334 "paper/setting.nw"
+#line 1396 "paper/setting.nw"
 /* [optimizer]: the method, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -781,7 +812,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (s->opt_max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1358 "paper/setting.nw"
+#line 1420 "paper/setting.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -794,7 +825,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1375 "paper/setting.nw"
+#line 1437 "paper/setting.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -814,7 +845,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1397 "paper/setting.nw"
+#line 1459 "paper/setting.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

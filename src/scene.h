@@ -1,4 +1,4 @@
-#line 189 "paper/setting.nw"
+#line 194 "paper/setting.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"

@@ -59,4 +59,9 @@ bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 printf '[geometry\na = 0\n' > $TMP/broken.scene
 bad "a syntax error" broken.scene line -- $TMP/broken.scene
+# found by make fuzz (tests/fuzz/): a NUL byte on the last line, which has
+# no newline, cut the line silently; with a non-zero traction the scene
+# loaded.  Its line 26 is "\0...\0[right]P2e.slo".
+bad "a NUL byte cutting the last line (fuzzing)" fuzz-nul-byte.scene 'line 26' 'NUL byte' -- \
+  tests/scenes/fuzz-nul-byte.scene -s top.P1=1e3
 finish

@@ -39,6 +39,19 @@ static void write_file(const char *name, const char *text, char *path,
   if (nmade < 128) snprintf(made[nmade++], sizeof made[0], "%s", path);
 }
 
+/* write the n bytes of data (NUL bytes too) to tmpdir/name; path = it */
+static void write_bytes(const char *name, const char *data, size_t n,
+                        char *path, size_t size)
+{
+  FILE *fp;
+  snprintf(path, size, "%s/%s", tmpdir, name);
+  if (!(fp = fopen(path, "wb")) || fwrite(data, 1, n, fp) != n || fclose(fp)) {
+    fprintf(stderr, "test_scene: cannot write %s\n", path);
+    exit(1);
+  }
+  if (nmade < 128) snprintf(made[nmade++], sizeof made[0], "%s", path);
+}
+
 /* out = base with its first `old` replaced by `with`; 0 if old not found */
 static int edit(char *out, size_t size, const char *old, const char *with)
 {
@@ -196,6 +209,35 @@ static void test_shape_file(void)
   }
 }
 
+/* NUL bytes: in a line (which would otherwise look overlong), in the
+   last line without a newline (which inih would cut silently), a file in
+   UTF-16, and a shape file with a NUL after a number */
+static void test_nul_bytes(void)
+{
+  static const char u16[] = "\xff\xfe[\0g\0e\0o\0]\0\n\0";
+  static const char dat[] = "0 0\n1 0.01\0 x\n";
+  const char *line = "initial = line\nline_start = 0\nline_end = 0.05\n";
+  char text[4096], path[256];
+  size_t n;
+  n = strlen(base);
+  memcpy(text, base, n);
+  memcpy(text + 4, "\0junk", 5);           /* [geo\0junk... on line 1 */
+  write_bytes("nul.scene", text, n, path, sizeof path);
+  expect("NUL byte in a line", path, 0, NULL, "line 1", "NUL byte");
+  memcpy(text, base, n);
+  memcpy(text + n, " \0 oops", 7);          /* P2 = -5.75e8 \0 oops, no \n */
+  text[n - 1] = ' ';
+  write_bytes("nul-last.scene", text, n + 7, path, sizeof path);
+  expect("NUL byte in the last line, no newline", path, 0, NULL, "line 28",
+         "NUL byte");
+  write_bytes("utf16.scene", u16, sizeof u16 - 1, path, sizeof path);
+  expect("a scene in UTF-16", path, 0, NULL, "line 1", "not UTF-16");
+  write_bytes("nul.dat", dat, sizeof dat - 1, path, sizeof path);
+  expect_edit("shape file with a NUL byte", line,
+              "initial = file\nfile = nul.dat\n", "design.file",
+              "nul.dat line 2: a NUL byte");
+}
+
 /* the errors of the file's syntax and names */
 static void test_syntax_errors(void)
 {
@@ -221,6 +263,7 @@ static void test_syntax_errors(void)
   expect_edit("duplicate key", "\nM = 1\n", "\nM = 1\nM = 2\n", "mesh.M",
               "duplicate");
   expect_edit("missing required key", "\nR = 3\n", "\n", "mesh.R", "missing");
+  test_nul_bytes();
 }
 
 /* malformed numbers and integers */
@@ -262,6 +305,14 @@ static void test_range_errors(void)
   expect_edit("M < 1", "\nM = 1\n", "\nM = 0\n", "mesh.M", ">= 1");
   expect_edit("R < 1", "\nR = 3\n", "\nR = 0\n", "mesh.R", ">= 1");
   expect_edit("b <= a", "\nb = 4\n", "\nb = 0\n", "geometry.b", "exceed");
+  expect_edit("b - a overflows", "\na = 0\nb = 4\n",
+              "\na = -1e308\nb = 1e308\n", "geometry.b", "overflows");
+  expect_edit("gamma (b - a) overflows", "\ngamma = 1\n",
+              "\ngamma = 1e308\n", "geometry.gamma", "overflows");
+  expect_edit("a mesh too large for int indices", "\nR = 3\n",
+              "\nR = 2147483647\n", "mesh.R", "INT_MAX / 36");
+  expect_edit("a mesh too large, N = 8 million", "\nN = 16\n",
+              "\nN = 8000000\n", "mesh.R", "64000000 triangles");
   expect_edit("C0 <= 0", "\nC0 = 0.05\n", "\nC0 = 0\n", "design.C0", "> 0");
   expect_edit("C1 < 0", "\nC1 = 0.025\n", "\nC1 = -0.1\n", "design.C1", ">= 0");
   expect_edit("C2 <= 0", "\nC2 = 3.91\n", "\nC2 = 0\n", "design.C2", "> 0");

@@ -11,12 +11,16 @@
    the overrides of the input, and with three fixed sets of overrides; after
    each load the contract of scene_load (src/scene.h) is checked and any
    breach aborts, which libFuzzer reports as a crash:
-   - success: status 0, N, M, R >= 1, a < b, C0 < C0prime < gamma, an
-     initial shape of N+1 finite values in [0, C0prime), and so on;
+   - success: status 0, N, M, R >= 1, a mesh whose 2 N (M + R) triangles
+     have 36 stiffness entries each that an int counts, a < b with a
+     finite area gamma (b - a), C0 < C0prime < gamma, an initial shape of
+     N+1 finite values in [0, C0prime), and so on;
+     a scene with a NUL byte is not text and must be refused;
    - failure: status 2 (bad input) or 4 (no memory), no memory held, and
      one line of message that begins with the scene path (status 2).
    scene_free is then called twice (the interface says it is harmless). */
 #define _GNU_SOURCE   /* memmem */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +33,7 @@ enum { MAX_OVERRIDES = 16 };
 static char dir[256];          /* the folder of the scene file */
 static char path[300];         /* the scene file written for each input */
 static char shape[300];        /* a shape file of 17 rows (N = 16) */
+static int binary;             /* the scene part holds a NUL byte */
 
 /* remove the files and the folder made by init */
 static void cleanup(void)
@@ -69,9 +74,11 @@ static void check_contract(int rc, const Scene *s, const Status *st)
 {
   int i;
   if (rc == STATUS_OK) {
-    if (st->code != STATUS_OK || !s->alpha0 || s->N < 1 || s->M < 1
-        || s->R < 1 || !(s->a < s->b) || !(s->C0 > 0) || !(s->C1 >= 0)
-        || !(s->C2 > 0) || !(s->C0 < s->C0prime)
+    if (binary || st->code != STATUS_OK || !s->alpha0 || s->N < 1
+        || s->M < 1 || s->R < 1
+        || !(72.0 * s->N * ((double)s->M + s->R) <= INT_MAX)
+        || !(s->a < s->b) || !isfinite(s->gamma * (s->b - s->a))
+        || !(s->C0 > 0) || !(s->C1 >= 0) || !(s->C2 > 0) || !(s->C0 < s->C0prime)
         || !(s->C0prime < s->gamma) || !(s->E > 0) || !(s->nu > -1)
         || !(s->nu < 0.5) || !(s->tol > 0 && s->tol < 1)
         || s->max_iter < 1 || !(s->omega > 0 && s->omega < 2)
@@ -93,7 +100,7 @@ static void check_contract(int rc, const Scene *s, const Status *st)
       abort();
     return;
   }
-  if ((rc != STATUS_INPUT && rc != STATUS_SYSTEM) || st->code != rc
+  if ((rc != STATUS_INPUT && rc != STATUS_SYSTEM) || (int)st->code != rc
       || s->alpha0 || !st->msg[0] || strchr(st->msg, '\n'))
     abort();
   if (rc == STATUS_INPUT && strncmp(st->msg, path, strlen(path)) != 0)
@@ -148,6 +155,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
   int n = 0;
   if (!(fp = fopen(path, "wb"))) abort();
   if (fwrite(data, 1, m, fp) != m) abort();   /* NUL bytes included */
+  binary = memchr(data, '\0', m) != NULL;
   if (fclose(fp)) abort();
   load(0, NULL);
   if (m < size) {   /* the overrides: after the line "%%" */

@@ -1,0 +1,49 @@
+# valgrind.sh: Memcheck on the program, as the figures run it: solve and
+# optimize of the three shipped scenes (the article's mesh), gradcheck of
+# one, and three failure paths (a malformed scene: exit 2; a state solver
+# stopped by its iteration limit: exit 3; an optimiser stopped by its own,
+# which is still a result: exit 0).  Each must end with its usual status,
+# no memory error and no definite or indirect leak (a leak of either kind
+# is an error: --errors-for-leak-kinds).  Valgrind cannot run the
+# sanitizer build, so this runs bin/contactopt, the ordinary build, under
+# make SAN=1 check too.  Library noise only is suppressed, in
+# tests/valgrind.supp, each entry with the reason.  About 15 s.
+. tests/lib.sh
+VG_BIN=bin/contactopt
+if ! command -v valgrind > /dev/null; then
+  fail "valgrind is installed (Debian package valgrind)"
+  finish; exit
+fi
+# vg DESCRIPTION STATUS ARGS...: run ARGS under Memcheck, expect STATUS
+vg() {
+  desc=$1; want=$2; shift 2
+  rm -rf $TMP/run
+  valgrind -q --error-exitcode=99 --leak-check=full \
+    --errors-for-leak-kinds=definite,indirect \
+    --suppressions=tests/valgrind.supp --log-file=$TMP/vg.log \
+    $VG_BIN "$@" -o $TMP/run > /dev/null 2> $TMP/stderr
+  rc=$?
+  if [ $rc -eq $want ] && ! grep -q 'lost in' $TMP/vg.log; then
+    ok "valgrind: $desc: exit $rc, no memory error, no leak"
+  else
+    fail "valgrind: $desc: exit $rc (expected $want): $(grep -m3 -E '(Invalid|uninitiali|lost in|Mismatched)' $TMP/vg.log | tr '\n' ' ')"
+    sed 's/^/# /' $TMP/vg.log | head -60
+  fi
+}
+for e in 5.1 5.2 5.2-flat; do
+  vg "solve example-$e" 0 solve data/example-$e.scene
+  vg "optimize example-$e" 0 optimize data/example-$e.scene
+done
+vg "gradcheck example-5.1" 0 gradcheck data/example-5.1.scene
+vg "projgrad (Algorithm 4.1) on example-5.2, 20 iterations" 0 optimize \
+  data/example-5.2.scene -s optimizer.method=projgrad -s optimizer.max_iter=20
+vg "cgssor state solver" 0 solve data/example-5.1.scene \
+  -s solver.state=cgssor
+vg "psor state solver" 0 solve data/example-5.1.scene -s solver.state=psor
+printf '[geometry]\na = 0\nb = 4\n[design]\nN = 0x\n' > $TMP/bad.scene
+vg "a malformed scene" 2 solve $TMP/bad.scene
+vg "a state solver at its iteration limit" 3 solve data/example-5.1.scene \
+  -s solver.max_iter=1
+vg "an optimiser at its iteration limit" 0 optimize data/example-5.1.scene \
+  -s optimizer.max_iter=2
+finish
