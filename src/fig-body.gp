@@ -14,10 +14,10 @@ xlo = -0.45; xhi = 4.55               # room for the clamp and the rollers
 ylo = -0.2;  yhi = 1.5                # the foundation and the load arrows
 slo = -0.01; shi = 0.07; exag = 10    # the bottom strip, x2 times exag
 ucm = 4.4                             # cm per metre
-left = 2.0; top = 1.4; gap = 2.2      # margins (cm)
+left = 2.6; top = 1.4; gap = 2.2      # margins (cm)
 Wcm = left + (xhi - xlo)*ucm + 0.6
 Hcm = top + (yhi - ylo)*ucm + gap + (shi - slo)*exag*ucm + 1.6
-dpcm = 1600.0 / Wcm; fontpt = 11
+dpcm = 1600.0 / Wcm; fontpt = 12
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 shape = solve."/shape.dat"
@@ -30,25 +30,26 @@ a_right = STATS_min
 stats shape using 1:2 nooutput
 x_gap = STATS_pos_max_y; a_max = STATS_max_y
 do for [fmt in "pdf png"] {
-  set encoding utf8
-  px = dpcm * 2.54 / 72.0
+  set encoding utf8; set minussign
+  dpi = dpcm * 2.54
+  kfont = fmt eq "pdf" ? 1.5 : dpi/96.0     # nominal font size per point
+  klw = fmt eq "pdf" ? 1.0 : 0.5*dpi/72.0   # nominal line width per half point
+  fsz = kfont * fontpt
   if (fmt eq "pdf") {
     set terminal pdfcairo enhanced color size Wcm/2.54, Hcm/2.54 \
-        font "DejaVu Sans,".fontpt linewidth 1
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw
   } else {
     set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
-        font "DejaVu Sans,".sprintf("%.1f", 0.75*fontpt*px) linewidth px \
-        background "white"
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw background "white"
   }
   set output out.".".fmt
-  fs = fmt eq "pdf" ? fontpt : 0.75*fontpt*px   # the font size in use
   unset xlabel; unset ylabel; unset title   # left over from the other format
-  set multiplot title sprintf("Example %s: {/:Italic Ω}({/:Italic α}^0) and the parts of its boundary", example)
+  set multiplot title sprintf("Example %s: Ω({/:Italic α}^0) and the parts of its boundary", example)
   set lmargin at screen sx(left); set rmargin at screen sx(left + (xhi-xlo)*ucm)
   set tmargin at screen sy(top);  set bmargin at screen sy(top + (yhi-ylo)*ucm)
   set xrange [xlo:xhi]; set yrange [ylo:yhi]
   set xtics 0, 1, 4 out nomirror; set ytics 0, 0.5, 1 out nomirror
-  set xlabel "{/:Italic x}_1 [m]" offset 0, 0.5; set ylabel "{/:Italic x}_2 [m]"
+  set format y "%.1f"; set ylabel "{/:Italic x}_2 [m]"
   set border 3
   set object 1 rect from xlo, ylo to xhi, 0 fs pattern 5 noborder fc "gray40" back
   set arrow 1 from xlo, 0 to xhi, 0 nohead lw 2 lc "gray30" back
@@ -64,11 +65,11 @@ do for [fmt in "pdf png"] {
   }
   set arrow 19 from 2, 1.3 to 4, 1.3 nohead lw 1.5 lc "#b00000"
   set label 1 "{/:Italic P}_2 = −5.75·10^8 N/m^2" at 3, 1.41 center tc "#b00000"
-  set label 2 "{/:Italic Ω}({/:Italic α}^0)" at 1.1, 0.6 center front font sprintf(",%g", 1.4*fs)
-  set label 3 "{/:Italic Γ}_D" at -0.17, 0.6 right
-  set label 4 "{/:Italic Γ}@^1_P" at 4.2, 0.6 left
-  set label 5 "{/:Italic Γ}@^2_P" at 1.0, 1.09 center
-  set label 6 "{/:Italic Γ}_C({/:Italic α}^0)" at 0.75, 0.14 center front
+  set label 2 "Ω({/:Italic α}^0)" at 1.1, 0.6 center front font sprintf(",%g", 1.4*fsz)
+  set label 3 "Γ_D" at -0.17, 0.6 right
+  set label 4 "Γ@^{/*0.7 1}_{/*0.7 P}" at 4.2, 0.6 left
+  set label 5 "Γ@^{/*0.7 2}_{/*0.7 P}" at 1.0, 1.09 center
+  set label 6 "Γ_C({/:Italic α}^0)" at 0.75, 0.14 center front
   set label 7 "rigid foundation  {/:Italic x}_2 ≤ 0" at 2, -0.1 center boxed
   set style textbox opaque noborder
   set arrow 3 from 0, a_left to 0, 1 nohead lw 2 lc "black" front
@@ -80,14 +81,17 @@ do for [fmt in "pdf png"] {
   stop = top + (yhi-ylo)*ucm + gap
   set tmargin at screen sy(stop); set bmargin at screen sy(stop + (shi-slo)*exag*ucm)
   set yrange [slo:shi]; set ytics 0, 0.02, 0.06 out nomirror format "%.2f"
-  set title sprintf("the bottom strip %g ≤ {/:Italic x}_2 ≤ %g, vertical scale exaggerated ×%g", \
-                    slo, shi, exag) offset 0, -0.3
+  set xlabel "{/:Italic x}_1 [m]" offset 0, 0.5
+  set title sprintf("the bottom strip −%g ≤ {/:Italic x}_2 ≤ %g, vertical scale exaggerated ×%g", \
+                    -slo, shi, exag) offset 0, -0.3
   set object 1 rect from xlo, slo to xhi, 0 fs pattern 5 noborder fc "gray40" back
   set arrow 1 from xlo, 0 to xhi, 0 nohead lw 2 lc "gray30" back
   set object 2 rect from -0.12, a_left to 0, shi fs pattern 4 noborder fc "gray40" back
-  set label 1 "{/:Italic Γ}_C({/:Italic α}^0)" at 1.0, 0.045 center front
+  set arrow 3 from 0, a_left to 0, shi nohead lw 2 lc "black" front
+  set arrow 4 from 4, a_right to 4, shi nohead lw 2 lc "black" front
+  set label 1 "Γ_C({/:Italic α}^0)" at 1.0, 0.045 center front
   set label 2 "gap" at (x_gap < 2 ? x_gap + 0.3 : x_gap - 0.3), 0.4*a_max center front \
-      font sprintf(",%g", 0.9*fs)
+      font sprintf(",%g", 0.9*fsz)
   plot shape using 1:2 with filledcurves y=shi fc "#dce6f2" notitle, \
        shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc "black" notitle
   unset object; unset arrow; unset label

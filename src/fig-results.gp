@@ -15,13 +15,13 @@ if (!exists("opt")) {
   exit error "the variable opt (the folder of contactopt optimize) is required"
 }
 bxlo = -0.1; bxhi = 4.1; bylo = -0.25; byhi = 1.1
-left = 2.0; colw = 10.8; colgap = 2.4    # cm
-top = 1.8; rowgap = 1.5; graphh = 5.0     # cm
+left = 2.8; colw = 10.8; colgap = 2.4    # cm
+top = 2.4; rowgap = 2.3; graphh = 5.0     # cm
 ucm = colw / (bxhi - bxlo)                # cm per metre in the body panels
 bodyh = (byhi - bylo) * ucm
 Wcm = left + 2*colw + colgap + 0.5
-Hcm = top + 3*bodyh + 4*rowgap + graphh + 1.2
-dpcm = 1600.0 / Wcm; fontpt = 10
+Hcm = top + 3*bodyh + 3*rowgap + graphh + 1.6
+dpcm = 1600.0 / Wcm; fontpt = 12
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 colx(c) = left + c*(colw + colgap)        # left edge of column c = 0, 1
@@ -33,24 +33,25 @@ S0 = round_down(umax / STATS_max)
 stats opt."/final/nodes.dat" using (sqrt($6**2 + $7**2)) nooutput
 S1 = round_down(umax / STATS_max)
 do for [fmt in "pdf png"] {
-  set encoding utf8
-  px = dpcm * 2.54 / 72.0
+  set encoding utf8; set minussign
+  dpi = dpcm * 2.54
+  kfont = fmt eq "pdf" ? 1.5 : dpi/96.0     # nominal font size per point
+  klw = fmt eq "pdf" ? 1.0 : 0.5*dpi/72.0   # nominal line width per half point
+  fsz = kfont * fontpt
   if (fmt eq "pdf") {
     set terminal pdfcairo enhanced color size Wcm/2.54, Hcm/2.54 \
-        font "DejaVu Sans,".fontpt linewidth 1
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw
   } else {
     set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
-        font "DejaVu Sans,".sprintf("%.1f", 0.75*fontpt*px) linewidth px \
-        background "white"
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw background "white"
   }
   set output out.".".fmt
-  fs = fmt eq "pdf" ? fontpt : 0.75*fontpt*px   # the font size in use
   unset xlabel; unset ylabel; unset title   # left over from the other format
   set multiplot title sprintf("Example %s: numerical results", example)
   do for [c=0:1] {
     dir = c == 0 ? solve : opt."/final"
     S = c == 0 ? S0 : S1
-    name = c == 0 ? "{/:Italic Ω}({/:Italic α}^0)" : "{/:Italic Ω}({/:Italic α}^*)"
+    name = c == 0 ? "Ω({/:Italic α}^0)" : "Ω({/:Italic α}^*)"
     do for [r=0:2] {
       set lmargin at screen sx(colx(c)); set rmargin at screen sx(colx(c) + colw)
       set tmargin at screen sy(rowy(r)); set bmargin at screen sy(rowy(r) + bodyh)
@@ -82,19 +83,20 @@ do for [fmt in "pdf png"] {
   set tmargin at screen sy(rowy(3)); set bmargin at screen sy(rowy(3) + graphh)
   set title "(d) {/:Italic E_h} against iteration"
   set xlabel "iteration" offset 0, 0.4
-  set ylabel "{/:Italic E_h} [10^7 J/m]" offset 1, 0
-  set autoscale xy; set offsets 0.5, 0.5, 0, 0; set xtics 0, 5 out nomirror
-  set key top right
+  set ylabel "{/:Italic E_h} [10^7 J/m]"
+  set xrange [*:*]; set autoscale xfix; set yrange [*:*]; set offsets 0.5, 0.5, 0, 0
+  set xtics 0, 5 out nomirror; set ytics autofreq out nomirror
+  set key top right spacing 1.2
   plot opt."/history.dat" using 1:($2/1e7) with linespoints pt 7 ps 0.6 lw 1.5 \
-           lc "#1f4e99" title "iterates (from the projection of {/:Italic α}^0 onto {/:Italic B})", \
+           lc "#1f4e99" title "iterates, from {/:Italic α}^0 projected onto {/:Italic B}", \
        solve."/summary.dat" using (0):(strcol(1) eq "energy" ? $2/1e7 : NaN) \
-           with points pt 6 ps 1.2 lc "black" title "{/:Italic α}^0 as given (not in {/:Italic B})"
+           with points pt 6 ps 1.2 lc "black" title "{/:Italic α}^0 as given, outside {/:Italic B}"
   set offsets 0, 0, 0, 0
   set lmargin at screen sx(colx(1)); set rmargin at screen sx(colx(1) + colw)
-  set title "(h) contact pressure along {/:Italic Γ}_C"
+  set title "(h) contact pressure along Γ_C"
   set xlabel "{/:Italic x}_1 [m]" offset 0, 0.4
-  set ylabel "−{/:Italic T}_2 [10^8 N/m^2]" offset 1, 0
-  set xrange [0:4]; set autoscale y; set xtics 0, 1, 4 out nomirror
+  set ylabel "−{/:Italic T}_2 [10^8 N/m^2]"
+  set xrange [0:4]; set yrange [-0.5:*]; set xtics 0, 1, 4 out nomirror
   set key top left
   plot solve."/contact.dat" using 1:($6/1e8) with linespoints pt "▷" ps 1.3 lw 1.2 \
            lc "#b00000" title "initial {/:Italic α}^0", \
