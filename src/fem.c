@@ -224,26 +224,25 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 #line 380 "paper/fem.nw"
-void fem_multiply(const cholmod_sparse *A, const double *x, double *y)
+/* (Ax)_j: column j is row j, A being stored symmetric */
+static double fem_row_dot(const cholmod_sparse *A, size_t j, const double *x)
 {
   const int *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x;
-  for (size_t j = 0; j < A->ncol; j++) {
-    double s = 0;
-    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * x[Ai[p]];
-    y[j] = s;       /* column j is row j: A is stored symmetric */
-  }
+  double s = 0;
+  for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * x[Ai[p]];
+  return s;
+}
+
+void fem_multiply(const cholmod_sparse *A, const double *x, double *y)
+{
+  for (size_t j = 0; j < A->ncol; j++) y[j] = fem_row_dot(A, j, x);
 }
 
 double fem_energy(const cholmod_sparse *A, const double *b, const double *Q)
 {
   double e = 0;
-  const int *Ap = A->p, *Ai = A->i;
-  const double *Ax = A->x;
-  for (size_t j = 0; j < A->ncol; j++) {
-    double s = 0;
-    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * Q[Ai[p]];
-    e += Q[j] * (0.5 * s - b[j]);
-  }
+  for (size_t j = 0; j < A->ncol; j++)
+    e += Q[j] * (0.5 * fem_row_dot(A, j, Q) - b[j]);
   return e;
 }

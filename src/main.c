@@ -70,18 +70,16 @@ static const char usage_optimize[] =
 #line 86 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
-  const char *command;                 /* solve, gradcheck or optimize */
   const char *scene;                   /* the scene file */
   const char *outdir;                  /* -o, or NULL for out/NAME */
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
-#line 98 "paper/main.nw"
+#line 97 "paper/main.nw"
 static int args_read(int argc, char **argv, Args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
-  a->command = argv[1];
   for (int k = 2; k < argc; k++) {
     const char *s = argv[k];
     int more = k + 1 < argc;
@@ -100,7 +98,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 125 "paper/main.nw"
+#line 123 "paper/main.nw"
 static void output_dir(const Args *a, const char *suffix, char *dir,
                        size_t size)
 {
@@ -111,7 +109,7 @@ static void output_dir(const Args *a, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 144 "paper/main.nw"
+#line 142 "paper/main.nw"
 static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
 {
   FILE *f = output_open(o, "summary.dat", st);
@@ -127,7 +125,7 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
           md->seconds);
   return output_close(o, f, st);
 }
-#line 163 "paper/main.nw"
+#line 161 "paper/main.nw"
 static int write_matrix_market(const char *path, cholmod_sparse *A,
                                cholmod_common *cm, Status *st)
 {
@@ -143,7 +141,7 @@ static int write_matrix_market(const char *path, cholmod_sparse *A,
   }
   return STATUS_OK;
 }
-#line 181 "paper/main.nw"
+#line 179 "paper/main.nw"
 static int solve_write(const Args *a, const Scene *s, Model *md,
                        cholmod_common *cm, Status *st)
 {
@@ -182,7 +180,7 @@ static int command_solve(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 235 "paper/main.nw"
+#line 233 "paper/main.nw"
 static int energy_at(Model *md, const double *X, double *E, Status *st)
 {
   int rc = model_solve(md, X, st);
@@ -207,7 +205,7 @@ static int finite_difference(Model *md, double *X, int i, double s,
   if (!rc) *fd = central ? (E1 - E0) / (2 * s) : (-3 * E0 + 4 * E1 - E2) / (2 * s);
   return rc;
 }
-#line 262 "paper/main.nw"
+#line 260 "paper/main.nw"
 static int best_differences(Model *md, const Scene *s, const double *G,
                             double *best, double *err, Status *st)
 {
@@ -228,7 +226,7 @@ static int best_differences(Model *md, const Scene *s, const double *G,
   free(X);
   return rc;
 }
-#line 285 "paper/main.nw"
+#line 283 "paper/main.nw"
 static int write_gradient(Output *o, const Model *md, const double *G,
                           const double *best, const double *err, Status *st)
 {
@@ -265,7 +263,7 @@ static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
          s->path, err[worst], worst, dir);
   return STATUS_OK;
 }
-#line 325 "paper/main.nw"
+#line 323 "paper/main.nw"
 static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
 {
   Scene s;
@@ -276,19 +274,17 @@ static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
   if (!md) rc = st->code;
   else if (!G) rc = status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
   else if (!(rc = model_solve(md, s.alpha0, st)) && !(rc = grad_energy(md, G, st))) {
-    double *best = G + s.N + 1, *err = best + s.N + 1, E = md->energy;
+    double *best = G + s.N + 1, *err = best + s.N + 1;
     if (!(rc = best_differences(md, &s, G, best, err, st))
-        && !(rc = model_solve(md, s.alpha0, st))) {
-      md->energy = E;
+        && !(rc = model_solve(md, s.alpha0, st)))
       rc = gradcheck_write(a, &s, md, G, best, err, st);
-    }
   }
   free(G);
   model_free(md);
   scene_free(&s);
   return rc;
 }
-#line 357 "paper/main.nw"
+#line 353 "paper/main.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -320,7 +316,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
   h->p[h->n++] = *p;
 }
-#line 393 "paper/main.nw"
+#line 389 "paper/main.nw"
 static int feasible_start(const Scene *s, const Design_set *B, double *X,
                           double *moved, Status *st)
 {
@@ -337,7 +333,7 @@ static int feasible_start(const Scene *s, const Design_set *B, double *X,
          s->path, v, *moved);
   return STATUS_OK;
 }
-#line 412 "paper/main.nw"
+#line 408 "paper/main.nw"
 static int write_history(Output *o, const Scene *s, const History *h,
                          Status *st)
 {
@@ -358,7 +354,7 @@ static int write_history(Output *o, const Scene *s, const History *h,
   return output_close(o, f, st);
 }
 
-#line 441 "paper/main.nw"
+#line 437 "paper/main.nw"
 static int write_multipliers(Output *o, const Scene *s, const Model *md,
                              const double *X, double *mu, Status *st)
 {
@@ -406,8 +402,8 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
           md->report.active, md->report.kkt, mu);
   return output_close(o, f, st);
 }
-#line 492 "paper/main.nw"
-static int optimize_run(const Args *a, const Scene *s, Model *md, double *X,
+#line 488 "paper/main.nw"
+static int optimize_run(const Scene *s, Model *md, double *X,
                         Output *o, Status *st)
 {
   Design_set B = design_set(s);
@@ -431,7 +427,6 @@ static int optimize_run(const Args *a, const Scene *s, Model *md, double *X,
     printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
            "projected gradient %.2e (%s) -> %s/\n", s->path, E0, r.energy,
            r.iterations, r.evaluations, r.pgnorm, r.stop_reason, o->dir);
-  (void) a;
   free(h.p);
   free(h.X);
   return rc;
@@ -450,7 +445,7 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   if (!md) rc = st->code;
   else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
   else if (!(rc = output_begin(&o, dir, st))) {
-    if ((rc = optimize_run(a, &s, md, X, &o, st)) || (rc = output_commit(&o, st)))
+    if ((rc = optimize_run(&s, md, X, &o, st)) || (rc = output_commit(&o, st)))
       output_abort(&o);
   }
   free(X);
@@ -458,7 +453,7 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 550 "paper/main.nw"
+#line 545 "paper/main.nw"
 typedef struct {
   const char *name;
   const char *usage;
