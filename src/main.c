@@ -388,21 +388,22 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
 {
   FILE *f = output_open(o, "summary.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# name value\nscene %s\noptimizer %s\nstate_solver %s\nmodel %s\n",
-          s->path, scene_opt_name(s->opt), scene_state_name(s->state),
-          scene_model_name(s->model));
+  fprintf(f, "# name value\nscene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
+          "model %s\n", s->path, scene_opt_name(s->opt), scene_metric_name(s->metric),
+          scene_state_name(s->state), scene_model_name(s->model));
   fprintf(f, "N %d\nM %d\nR %d\ninitial_projected %d\ninitial_moved %.6e\n",
           s->N, s->M, s->R, moved > 0, moved);
   fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",
           E0, r->energy, r->iterations, r->evaluations);
   fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
+  fprintf(f, "seconds %.6f\nmetric_seconds %.6f\n", r->seconds, r->metric_seconds);
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           cv0, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
   return output_close(o, f, st);
 }
-#line 488 "paper/main.nw"
+#line 489 "paper/main.nw"
 static int optimize_run(const Scene *s, Model *md, double *X,
                         Output *o, Status *st)
 {
@@ -453,7 +454,7 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 545 "paper/main.nw"
+#line 546 "paper/main.nw"
 typedef struct {
   const char *name;
   const char *usage;

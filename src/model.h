@@ -35,5 +35,8 @@ double model_pressure(const Model *md, int c);
 double model_pressure_cv(const Model *md);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);
+/* S (N+1 x N+1, row-major): the stiffness of the body seen from its
+   contact nodes at the last design solved (see below) */
+int model_contact_stiffness(Model *md, double *S, Status *st);
 void model_free(Model *md);
 #endif

@@ -1,13 +1,15 @@
-#line 93 "paper/optimize.nw"
+#line 95 "paper/optimize.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <nlopt.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
 #include "optimize.h"
 #include "sensitivity.h"
 
-#line 112 "paper/optimize.nw"
+#line 116 "paper/optimize.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -26,7 +28,25 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 133 "paper/optimize.nw"
+#line 294 "paper/optimize.nw"
+typedef struct {
+  int n;                  /* N+1 */
+  double *X0;             /* n: the start */
+  double *R;              /* n x n, row-major: X = X0 + C0 R y */
+  double scale;           /* sigma: the objective is E / sigma */
+} Metric;
+#line 381 "paper/optimize.nw"
+typedef struct {
+  Evaluator *ev;
+  nlopt_opt opt;
+  Metric metric;
+  double best;            /* the lowest E evaluated */
+  double *bestX;          /* n: where; the last accepted iterate */
+  int k;                  /* accepted iterates so far */
+  int stalled;            /* evaluations since the last accepted one */
+} Slsqp;
+enum { STALL = 10 };
+#line 137 "paper/optimize.nw"
 static double opt_clock(void)
 {
   struct timespec t;
@@ -47,7 +67,7 @@ static int evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 156 "paper/optimize.nw"
+#line 160 "paper/optimize.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -56,14 +76,14 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 167 "paper/optimize.nw"
+#line 171 "paper/optimize.nw"
 static void report_iterate(Evaluator *ev, int iteration, double pg)
 {
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, opt_clock() - ev->start };
   if (ev->monitor) ev->monitor(&p, ev->X, ev->data);
 }
-#line 187 "paper/optimize.nw"
+#line 191 "paper/optimize.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
@@ -91,7 +111,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 217 "paper/optimize.nw"
+#line 221 "paper/optimize.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -104,7 +124,7 @@ static int projgrad(Evaluator *ev, double *X)
     report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 239 "paper/optimize.nw"
+#line 243 "paper/optimize.nw"
 const char *why = pg <= ev->s->opt_tol ? "converged"
                 : !accepted ? "no_progress"
                 : k >= ev->s->opt_max_iter ? "max_iter" : NULL;
@@ -112,7 +132,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 229 "paper/optimize.nw"
+#line 233 "paper/optimize.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -120,64 +140,103 @@ if (why) {
   free(work);
   return rc;
 }
-#line 259 "paper/optimize.nw"
-static void slope_constraints(unsigned m, double *c, unsigned n,
-                              const double *z, double *grad, void *data)
+#line 303 "paper/optimize.nw"
+/* X = X0 + C0 R y, unclipped: the design the constraints see */
+static void metric_design(const Metric *mt, double C0, const double *y,
+                          double *X)
 {
-  const Design_set *B = data;
-  double d = B->delta / B->C0;           /* the slope bound in units of C0 */
-  if (grad) memset(grad, 0, m * n * sizeof *grad);
-  for (unsigned i = 0; i + 1 < n; i++) {
-    c[2 * i] = z[i + 1] - z[i] - d;       /* rising at most C1 h */
-    c[2 * i + 1] = z[i] - z[i + 1] - d;   /* falling at most C1 h */
-    if (grad) {
-      grad[2 * i * n + i + 1] = 1; grad[2 * i * n + i] = -1;
-      grad[(2 * i + 1) * n + i] = 1; grad[(2 * i + 1) * n + i + 1] = -1;
-    }
+  int n = mt->n;
+  for (int i = 0; i < n; i++) {
+    double s = 0;
+    for (int j = 0; j < n; j++) s += mt->R[(size_t) i * n + j] * y[j];
+    X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 278 "paper/optimize.nw"
-static double area_constraint(unsigned n, const double *z, double *grad,
+#line 318 "paper/optimize.nw"
+static void linear_constraints(unsigned m, double *c, unsigned n,
+                               const double *y, double *grad, void *data)
+{
+  const Slsqp *q = data;
+  const Design_set *B = q->ev->B;
+  const double *R = q->metric.R;
+  double X[n], d = B->delta / B->C0;
+  metric_design(&q->metric, B->C0, y, X);
+  for (unsigned i = 0; i < n; i++) {
+    c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
+    c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
+  }
+  for (unsigned i = 0; i + 1 < n; i++) {
+    double rise = (X[i + 1] - X[i]) / B->C0;
+    c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
+    c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
+  }
+  if (grad)
+    for (unsigned j = 0; j < n; j++) {
+      for (unsigned i = 0; i < n; i++) {
+        grad[2 * i * n + j] = -R[i * n + j];
+        grad[(2 * i + 1) * n + j] = R[i * n + j];
+      }
+      for (unsigned i = 0; i + 1 < n; i++) {
+        double rise = R[(i + 1) * n + j] - R[i * n + j];
+        grad[(2 * n + 2 * i) * n + j] = rise;
+        grad[(2 * n + 2 * i + 1) * n + j] = -rise;
+      }
+    }
+  (void) m;
+}
+#line 353 "paper/optimize.nw"
+static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
-  const Design_set *B = data;
-  double L = B->h * B->N, sum = 0;
-  for (unsigned i = 0; i < n; i++) {
-    double w = (i == 0 || i + 1 == n) ? 0.5 : 1.0;
-    sum += w * z[i];
-    if (grad) grad[i] = w * B->h / L;
-  }
-  return (B->h * sum - B->area / B->C0) / L;
+  const Slsqp *q = data;
+  const Design_set *B = q->ev->B;
+  double L = B->h * B->N, X[n], sum = 0;
+  metric_design(&q->metric, B->C0, y, X);
+  for (unsigned i = 0; i < n; i++) sum += (i == 0 || i + 1 == n ? 0.5 : 1.0) * X[i];
+  if (grad)
+    for (unsigned j = 0; j < n; j++) {
+      double g = 0;
+      for (unsigned i = 0; i < n; i++)
+        g += (i == 0 || i + 1 == n ? 0.5 : 1.0) * q->metric.R[i * n + j];
+      grad[j] = g * B->h / L;
+    }
+  return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 298 "paper/optimize.nw"
-typedef struct {
-  Evaluator *ev;
-  nlopt_opt opt;
-  double scale;           /* of the energy, see above */
-  double best;            /* the lowest E evaluated */
-  double *bestX;          /* n: where; the last accepted iterate */
-  int k;                  /* accepted iterates so far */
-} Slsqp;
+#line 394 "paper/optimize.nw"
 static void slsqp_accept(Slsqp *q);
+static void slsqp_stop(Slsqp *q, const char *why)
+{
+  snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
+  nlopt_force_stop(q->opt);
+}
 
-static double slsqp_objective(unsigned n, const double *z, double *grad,
+static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
 {
   Slsqp *q = data;
   Evaluator *ev = q->ev;
-  double X[n];
-  for (unsigned i = 0; i < n; i++) X[i] = ev->B->C0 * z[i];
+  const double *R = q->metric.R;
+  double X[n], C0 = ev->B->C0;
+  metric_design(&q->metric, C0, y, X);
+  for (unsigned i = 0; i < n; i++) X[i] = fmin(fmax(X[i], 0), C0);
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
-  if (grad) for (unsigned i = 0; i < n; i++) grad[i] = ev->B->C0 * ev->G[i] / q->scale;
+  if (grad)
+    for (unsigned j = 0; j < n; j++) {
+      double g = 0;
+      for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
+      grad[j] = C0 * g / q->metric.scale;
+    }
   if (ev->E < q->best) slsqp_accept(q);
-  return ev->E / q->scale;
+  else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
+  return ev->E / q->metric.scale;
 }
-#line 323 "paper/optimize.nw"
+#line 424 "paper/optimize.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
   double pg;
   q->best = ev->E;
+  q->stalled = 0;
   if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) {
     nlopt_force_stop(q->opt);
     return;
@@ -186,51 +245,91 @@ static void slsqp_accept(Slsqp *q)
   memcpy(q->bestX, ev->X, ev->n * sizeof *ev->X);
   ev->rep->iterations = q->k;
   ev->rep->pgnorm = pg;
-  const char *why = pg <= ev->s->opt_tol ? "converged"
-                  : q->k >= ev->s->opt_max_iter ? "max_iter" : NULL;
-  if (why) {
-    snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
-    nlopt_force_stop(q->opt);
-  }
+  if (pg <= ev->s->opt_tol) slsqp_stop(q, "converged");
+  else if (q->k >= ev->s->opt_max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 355 "paper/optimize.nw"
+#line 448 "paper/optimize.nw"
+static int metric_setup(Evaluator *ev, Metric *mt)
+{
+  int n = ev->n, rc = STATUS_OK;
+  double C0 = ev->B->C0, Gmax = 0;
+  memset(mt->R, 0, (size_t) n * n * sizeof *mt->R);
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i]));
+  if (ev->s->metric == METRIC_EUCLIDEAN) {
+    for (int i = 0; i < n; i++) mt->R[(size_t) i * n + i] = 1;
+    mt->scale = C0 * (Gmax > 0 ? Gmax : 1.0);
+    return STATUS_OK;
+  }
+  double start = opt_clock();
+  if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
+  
+#line 468 "paper/optimize.nw"
+gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
+gsl_matrix *Linv = gsl_matrix_alloc(n, n);
+gsl_vector *g = gsl_vector_alloc(n);
+if (!Linv || !g) rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+else if (gsl_linalg_cholesky_decomp1(&S.matrix))
+  rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
+                  "is not positive definite");
+else {
+  for (int i = 0; i < n; i++) gsl_vector_set(g, i, ev->G[i]);
+  gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, &S.matrix, g);
+  double sigma = pow(gsl_blas_dnrm2(g), 2);
+  mt->scale = sigma > 0 ? sigma : 1.0;
+  gsl_matrix_set_identity(Linv);                    /* Linv = L^{-T} */
+  gsl_blas_dtrsm(CblasLeft, CblasLower, CblasTrans, CblasNonUnit, 1.0,
+                 &S.matrix, Linv);
+  double c = sqrt(mt->scale) / C0;
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) mt->R[(size_t) i * n + j] = c * gsl_matrix_get(Linv, i, j);
+}
+gsl_matrix_free(Linv);
+gsl_vector_free(g);
+#line 462 "paper/optimize.nw"
+  ev->rep->metric_seconds = opt_clock() - start;
+  return rc;
+}
+#line 498 "paper/optimize.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
-  int n = ev->n;
-  double z[n], f, tol[2 * (n - 1) + 1];
-  Slsqp q = { ev, nlopt_create(NLOPT_LD_SLSQP, n), 0, HUGE_VAL, X, 0 };
-  if (!q.opt) return status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
-  
-#line 377 "paper/optimize.nw"
-double Gmax = 0;
-for (int i = 0; i < n; i++) {
-  z[i] = X[i] / ev->B->C0;
-  Gmax = fmax(Gmax, fabs(ev->G[i]));
+  int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
+  double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
+  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, X, 0, 0 };
+  if (!work) return status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+  q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
+  double *y = q.metric.X0 + n, *tol = y + n, f;
+  memcpy(q.metric.X0, X, n * sizeof *X);
+  if (!(rc = metric_setup(ev, &q.metric))) {
+    
+#line 516 "paper/optimize.nw"
+q.opt = nlopt_create(NLOPT_LD_SLSQP, n);
+if (!q.opt) {
+  free(work);
+  return status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
 }
-q.scale = ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
-#line 362 "paper/optimize.nw"
-  for (int i = 0; i < 2 * (n - 1) + 1; i++) tol[i] = 1e-14;
-  nlopt_set_lower_bounds1(q.opt, 0.0);
-  nlopt_set_upper_bounds1(q.opt, 1.0);
-  nlopt_add_inequality_mconstraint(q.opt, 2 * (n - 1), slope_constraints,
-                                   (void *) ev->B, tol);
-  nlopt_add_equality_constraint(q.opt, area_constraint, (void *) ev->B, 1e-14);
-  nlopt_set_min_objective(q.opt, slsqp_objective, &q);
-  nlopt_set_maxeval(q.opt, 50 * (ev->s->opt_max_iter + 1));
-  nlopt_result r = nlopt_optimize(q.opt, z, &f);
-  nlopt_destroy(q.opt);
-  
-#line 390 "paper/optimize.nw"
-if (ev->failed) return ev->failed;
-if (!ev->rep->stop_reason[0])
-  snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
-           r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
+for (int i = 0; i < m; i++) tol[i] = 1e-14;
+for (int i = 0; i < n; i++) y[i] = 0;
+nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
+nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
+nlopt_set_min_objective(q.opt, slsqp_objective, &q);
+nlopt_set_maxeval(q.opt, 50 * (ev->s->opt_max_iter + 1));
+nlopt_result r = nlopt_optimize(q.opt, y, &f);
+nlopt_destroy(q.opt);
+#line 537 "paper/optimize.nw"
+if (!(rc = ev->failed)) {
+  if (!ev->rep->stop_reason[0])
+    snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
+             r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
+  rc = evaluate(ev, X);
+}
 (void) f;
-return evaluate(ev, X);
-#line 373 "paper/optimize.nw"
+#line 509 "paper/optimize.nw"
+  }
+  free(work);
+  return rc;
 }
-#line 405 "paper/optimize.nw"
+#line 553 "paper/optimize.nw"
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
                  Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
 {
@@ -247,6 +346,7 @@ int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
     rc = s->opt == OPT_SLSQP ? slsqp(&ev, X) : projgrad(&ev, X);
   }
   if (!rc) rep->energy = md->energy;
+  rep->seconds = opt_clock() - ev.start;
   free(ev.X);
   return rc;
 }

@@ -24,6 +24,8 @@ typedef struct {
   double energy;          /* E at the final design */
   double pgnorm;          /* pi at the final design */
   char stop_reason[32];   /* "converged", "max_iter", "no_progress" */
+  double seconds;         /* wall time of the whole optimisation */
+  double metric_seconds;  /* of it, setting up SLSQP's metric */
 } Opt_report;
 
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,

@@ -1,4 +1,4 @@
-#line 194 "paper/setting.nw"
+#line 195 "paper/setting.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"
@@ -19,6 +19,7 @@ typedef struct {
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
 typedef enum { STATE_PDAS, STATE_PSOR, STATE_CGSSOR } State_method;
 typedef enum { OPT_SLSQP, OPT_PROJGRAD } Opt_method;
+typedef enum { METRIC_SCHUR, METRIC_EUCLIDEAN } Opt_metric;
 
 typedef struct {
   char path[512];      /* the scene file, as given: every message names it */
@@ -47,6 +48,7 @@ typedef struct {
   double omega;        /* relaxation of PSOR and of the SSOR preconditioner */
   /* [optimizer]  the shape optimisation (Section 4.4, Algorithm 4.1) */
   Opt_method opt;      /* slsqp (NLopt) or projgrad (Algorithm 4.1) */
+  Opt_metric metric;   /* the metric of the design space SLSQP starts in */
   double opt_tol;      /* projected-gradient norm at which it stops */
   int opt_max_iter;    /* iteration limit of the optimiser */
 } Scene;
@@ -60,6 +62,7 @@ void scene_free(Scene *s);
 /* a printable name of a state method, of a plane model, of a condition */
 const char *scene_state_name(State_method m);
 const char *scene_opt_name(Opt_method m);
+const char *scene_metric_name(Opt_metric m);
 const char *scene_model_name(Plane_model m);
 const char *scene_bc_name(Bc_kind k);
 #endif

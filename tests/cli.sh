@@ -55,6 +55,9 @@ bad "a missing scene" missing.scene -- $TMP/missing.scene
 bad "an unknown key" solver.frobnicate -- $scene -s solver.frobnicate=1
 bad "nu = 0.5" material.nu 0.5 -- $scene -s material.nu=0.5
 bad "a malformed number" mesh.M -- $scene -s mesh.M=4x
+bad "the schur metric with Algorithm 4.1" optimizer.metric schur slsqp -- $scene \
+  -s optimizer.method=projgrad -s optimizer.metric=schur
+bad "an unknown metric" optimizer.metric sobolev -- $scene -s optimizer.metric=sobolev
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 printf '[geometry\na = 0\n' > $TMP/broken.scene

@@ -52,6 +52,31 @@ for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat
   echo "# $name: E0 $(value initial_energy $a) -> slsqp $(value energy $a) ($(value iterations $a) it, $(value evaluations $a) solves), projgrad $(value energy $b) ($(value iterations $b) it, $(value evaluations $b) solves)"
 done
 done
+# SLSQP in the metric of the contact stiffness (optimizer.metric = schur,
+# the default) against the euclidean one, N = 16, 32, 64 (M = N/16,
+# R = 3N/16): the same E* to 1e-9 and the same shape to 1e-4 C0; the
+# iterations must not grow with N more than by half from N = 16 to 64 (they
+# were 22, 24, 28), while the euclidean metric's grow about linearly (26,
+# 46, 75), so that at N = 64 it needs more than twice the schur iterations.
+for N in 16 32 64; do
+  for metric in schur euclidean; do
+    $BIN optimize data/example-5.1.scene -o $TMP/m$N-$metric -s design.N=$N -s mesh.M=$((N / 16)) \
+      -s mesh.R=$((3 * N / 16)) -s optimizer.metric=$metric >/dev/null 2>$TMP/err \
+      || fail "N = $N, metric $metric: $(cat $TMP/err)"
+  done
+  a=$TMP/m$N-schur; b=$TMP/m$N-euclidean
+  check "N = $N: both metrics converge ($(value stop_reason $a), $(value stop_reason $b))" \
+    [ "$(value stop_reason $a) $(value stop_reason $b)" = "converged converged" ]
+  check "N = $N: both metrics reach the same E* to 1e-9 ($(value energy $a), $(value energy $b))" \
+    awk -v a=$(value energy $a) -v b=$(value energy $b) 'BEGIN { d = (a - b) / a; exit !(d < 1e-9 && d > -1e-9) }'
+  check "N = $N: both metrics reach the same shape to 1e-4 C0" \
+    numdiff -q -a 5e-6 -r 0 $a/final/shape.dat $b/final/shape.dat
+  echo "# N = $N: schur $(value iterations $a) it / $(value evaluations $a) solves, euclidean $(value iterations $b) it / $(value evaluations $b) solves"
+done
+check "schur iterations grow by at most half from N = 16 to 64 ($(value iterations $TMP/m16-schur) -> $(value iterations $TMP/m64-schur))" \
+  [ $((2 * $(value iterations $TMP/m64-schur))) -le $((3 * $(value iterations $TMP/m16-schur))) ]
+check "at N = 64 the euclidean metric needs more than twice the schur iterations ($(value iterations $TMP/m64-euclidean) vs $(value iterations $TMP/m64-schur))" \
+  [ $(value iterations $TMP/m64-euclidean) -gt $((2 * $(value iterations $TMP/m64-schur))) ]
 # a state solve that fails inside the optimisation stops it: exit 3, a
 # message naming the solver, nothing written
 rm -rf $TMP/fail
