@@ -6,11 +6,12 @@
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
       paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
       paper/optimize.nw paper/output.nw paper/main.nw paper/figures.nw \
-      paper/reproduction.nw paper/stability.nw paper/closing.nw
+      paper/reproduction.nw paper/stability.nw paper/accuracy.nw paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
 MODULES := status scene mesh fem state model sensitivity design optimize output
-SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh
+SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh \
+           src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
@@ -44,7 +45,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures check bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -93,12 +94,78 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
 
-bench: bin/contactopt
+# make bench: the state-solver table, then the performance tables (issue 5;
+# BENCH_NMAX=256 shortens the latter).  bench_cholmod links the modules
+# like a test program; walltime times a whole run of the program.
+build/bench/bench_cholmod: tests/bench/bench_cholmod.c $(OBJ)
+	@mkdir -p build/bench
+	$(CC) $(CFLAGS) -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
+build/bench/walltime: tests/bench/walltime.c
+	@mkdir -p build/bench
+	$(CC) $(CFLAGS) -o $@ $<
+-include $(wildcard build/bench/*.d)
+
+bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/state.sh
+	@sh tests/bench/performance.sh
+
+# ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
+# Every point of the sweep is one optimisation of Example 5.1 in a folder of
+# its own, out/accuracy/N<N>_<state>_<solver.tol>_<method>_<optimizer.tol>,
+# its settings read from the name by src/accuracy-run.sh; so make -j2 runs
+# the points side by side and reruns only what changed. A family is a list
+# of points drawn as one curve; the first, the mesh sweep (a), gives E_inf.
+# ACCURACY_NMAX caps every N (make figures ACCURACY_NMAX=256 for a short sweep);
+# the table and the figure say which NMAX made them. make paper depends on the
+# sweep too: export ACCURACY_NMAX to keep a cap for later commands.
+ACCURACY_NMAX ?= 1024
+ACC_N := $(shell awk 'BEGIN { for (n = 16; n <= $(ACCURACY_NMAX); n *= 2) print n }')
+$(if $(filter $(ACCURACY_NMAX),$(wordlist 3,99,$(ACC_N))),,\
+  $(error ACCURACY_NMAX=$(ACCURACY_NMAX): must be 16 times a power of two, at least 64))
+# $(call acc_points,Ns,state,solver.tols,method,optimizer.tols): all combinations
+acc_points = $(foreach n,$(filter $(1),$(ACC_N)),$(foreach t,$(3),$(foreach o,$(5),N$(n)_$(2)_$(t)_$(4)_$(o))))
+ACC_TOL := 1e-4 1e-6 1e-8 1e-10 1e-12
+ACC.mesh            := $(call acc_points,$(ACC_N),pdas,1e-10,slsqp,1e-6)
+ACC.pdas-64         := $(call acc_points,64,pdas,$(ACC_TOL),slsqp,1e-6)
+ACC.cgssor-64       := $(call acc_points,64,cgssor,$(ACC_TOL),slsqp,1e-6)
+ACC.pdas-128        := $(call acc_points,128,pdas,$(ACC_TOL),slsqp,1e-6)
+ACC.cgssor-128      := $(call acc_points,128,cgssor,$(ACC_TOL),slsqp,1e-6)
+ACC.projgrad        := $(call acc_points,16 32 64 128,pdas,1e-10,projgrad,1e-6)
+ACC.slsqp-euclidean := $(call acc_points,16 32 64 128,pdas,1e-10,slsqp-euclidean,1e-6)
+ACC.opttol-64       := $(call acc_points,64,pdas,1e-10,slsqp,1e-3 1e-4 1e-5 1e-6)
+ACC.opttol-128      := $(call acc_points,128,pdas,1e-10,slsqp,1e-3 1e-4 1e-5 1e-6)
+ACC_FAMILIES := $(foreach f,mesh pdas-64 cgssor-64 pdas-128 cgssor-128 projgrad \
+                  slsqp-euclidean opttol-64 opttol-128,$(if $(ACC.$(f)),$(f)))
+ACC_RUNS := $(patsubst %,out/accuracy/%/summary.dat,$(sort $(foreach f,$(ACC_FAMILIES),$(ACC.$(f)))))
+ACCURACY_FIGS := figures/accuracy-time.pdf figures/accuracy-time.png figures/accuracy.tex
+
+accuracy: $(ACCURACY_FIGS)
+	@awk '$$2 == "nmax" { n = $$3 } $$2 == "E_inf" { e = $$3 } $$2 == "p" { p = $$3 } \
+	  !/^#/ && NF && !seen[$$2]++ { k++ } END { printf "accuracy: %d runs to N = %d," \
+	  " E_inf = %.10g J/m, p = %.2f\n", k, n, e, p }' out/accuracy/sweep.dat
+out/accuracy/%/summary.dat: src/accuracy-run.sh data/example-5.1.scene bin/contactopt
+	@sh $< bin/contactopt data/example-5.1.scene $* $(@D)
+# The plan, the families and their points, is rewritten only when it changes.
+.PHONY: accuracy-plan
+out/accuracy/plan.dat: accuracy-plan
+	@mkdir -p $(@D)
+	@{ echo '# family points: the plan of make accuracy, ACCURACY_NMAX=$(ACCURACY_NMAX)'; \
+	  $(foreach f,$(ACC_FAMILIES),echo '$(f) $(ACC.$(f))';) } > $@.new
+	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
+out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS)
+	sh $< out/accuracy > $@.partial && mv $@.partial $@
+figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat
+	@mkdir -p figures
+	sh $< out/accuracy/sweep.dat > $@.partial && mv $@.partial $@
+figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/accuracy/sweep.dat
+	@mkdir -p figures
+	gnuplot -e "sweep='out/accuracy/sweep.dat'; out='figures/accuracy-time'" $<
+# ---- end of the accuracy block ----------------------------------------------------
 
 # ---- the woven paper -------------------------------------------------------------
 paper: paper/contactopt.pdf
-paper/contactopt.pdf: $(NW) $(FIGURES) paper/bench-state.tex | deps
+paper/contactopt.pdf: $(NW) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex \
+                      paper/performance.tex paper/bench-performance.tex | deps
 	@mkdir -p build/paper
 	noweave -delay -index -autodefs c $(NW) > build/paper/contactopt.tex
 	cd build/paper && for i in 1 2 3 4; do \
@@ -112,8 +179,8 @@ paper/contactopt.pdf: $(NW) $(FIGURES) paper/bench-state.tex | deps
 # a rule of its own, so a changed scene or source reruns exactly what
 # depends on it, and make -j2 runs them side by side.
 
-figures: $(FIGURES)
-	@echo "figures: $(words $(FIGURES)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction table)"
+figures: $(FIGURES) $(ACCURACY_FIGS)
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction table, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) > /dev/null

@@ -1,4 +1,4 @@
-#line 195 "paper/setting.nw"
+#line 196 "paper/setting.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"

@@ -1,0 +1,36 @@
+#!/bin/sh
+# accuracy-run.sh PROGRAM SCENE POINT DIR: one point of the accuracy sweep,
+# PROGRAM optimize SCENE with the settings that POINT names,
+# N<N>_<state>_<solver.tol>_<method>[-<metric>]_<optimizer.tol>, into DIR;
+# the wall time of the run goes to DIR/wall.dat.  Exit 1 if the run fails,
+# unless it stopped at its iteration limit.
+# Tangled from paper/accuracy.nw; do not edit.
+prog=$1 scene=$2 point=$3 dir=$4
+case $point in
+  N[0-9]*_*_*_*_*) ;;
+  *) echo "accuracy-run.sh: $point: not N<N>_<state>_<tol>_<method>_<tol>" >&2; exit 2 ;;
+esac
+set -- $(echo "$point" | tr _ ' ')
+n=${1#N} state=$2 tol=$3 method=$4 otol=$5
+metric=
+case $method in
+  *-*) metric="-s optimizer.metric=${method#*-}"; method=${method%%-*} ;;
+esac
+rm -rf "$dir" && mkdir -p "$dir" || exit 1
+t0=$(date +%s.%N)
+"$prog" optimize "$scene" -o "$dir" -s design.N=$n -s mesh.M=$((n / 16)) \
+  -s mesh.R=$((3 * n / 16)) -s solver.state=$state -s solver.tol=$tol \
+  -s optimizer.method=$method $metric -s optimizer.tol=$otol \
+  > "$dir/optimize.log" 2>&1
+rc=$?
+t1=$(date +%s.%N)
+wall=$(awk -v a=$t0 -v b=$t1 'BEGIN { printf "%.3f", b - a }')
+printf '# name value\nwall_seconds %s\n' $wall > "$dir/wall.dat"
+stop=$(awk '$1 == "stop_reason" { print $2 }' "$dir/summary.dat" 2>/dev/null)
+if [ $rc -ne 0 ] && [ "$stop" != max_iter ]; then
+  echo "accuracy: $point FAILED (exit $rc); the end of $dir/optimize.log:" >&2
+  tail -n 5 "$dir/optimize.log" >&2
+  rm -f "$dir/summary.dat"
+  exit 1
+fi
+echo "accuracy: $point: $stop in $wall s"
