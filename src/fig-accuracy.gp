@@ -50,7 +50,8 @@ do for [fmt in "pdf png"] {
         font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw background "white"
   }
   set output out.".".fmt
-  unset xlabel; unset ylabel; unset title; unset label
+  unset xlabel; unset ylabel; unset title   # left over from the other format
+  unset label                      # the labels of N, set for the other format
   set multiplot title sprintf("Example 5.1: accuracy against time (ACCURACY\\_NMAX = %d)", nmax)
   c = 0
   set lmargin at screen sx(left + c*(panelw + gap))

@@ -153,19 +153,21 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
   int n = d->n, nc = d->nc, N1 = md->scene->N + 1, first = n - nc;
-  cholmod_factor *L = nc > 0 ? contact_last_factor(md, st) : NULL;
-  if (nc > 0 && !L) return st->code;
-  gsl_matrix *Lcc = gsl_matrix_calloc(nc > 0 ? nc : 1, nc > 0 ? nc : 1);
-  gsl_matrix *Scc = gsl_matrix_alloc(nc > 0 ? nc : 1, nc > 0 ? nc : 1);
+  if (nc == 0)                         /* every contact node held: nothing to see */
+    return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
+                      "free to move; use optimizer.metric = euclidean");
+  cholmod_factor *L = contact_last_factor(md, st);
+  if (!L) return st->code;
+  gsl_matrix *Lcc = gsl_matrix_calloc(nc, nc), *Scc = gsl_matrix_alloc(nc, nc);
   int *col = malloc((n + 1) * sizeof *col), rc = STATUS_OK;
   if (!Lcc || !Scc || !col) rc = status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
   else {
     
-#line 280 "paper/model.nw"
+#line 282 "paper/model.nw"
 for (int k = 0; k < n; k++) col[k] = -1;
 for (int c = 0; c < nc; c++) col[d->contact[c]] = d->contact_col[c];
 int ok = 1;
-for (int k = first; k < n && L; k++) {
+for (int k = first; k < n; k++) {
   const int *Lp = L->p, *Li = L->i, *perm = L->Perm;
   const double *Lx = L->x;
   ok = ok && col[perm[k]] >= 0;          /* CAMD kept the contact unknowns last */
@@ -176,21 +178,21 @@ if (!ok)
                   "not put the contact unknowns last");
 else
   
-#line 297 "paper/model.nw"
+#line 299 "paper/model.nw"
 {
   const int *perm = L->Perm;
   gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, Lcc, 0.0, Scc);
   double mean = 0;
   for (int k = 0; k < nc; k++) mean += gsl_matrix_get(Scc, k, k) / nc;
   memset(S, 0, (size_t) N1 * N1 * sizeof *S);
-  for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = nc > 0 ? mean : 1.0;
+  for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
   for (int k = 0; k < nc; k++)
     for (int l = 0; l <= k; l++) {
       int i = col[perm[first + k]], j = col[perm[first + l]];
       S[(size_t) i * N1 + j] = S[(size_t) j * N1 + i] = gsl_matrix_get(Scc, k, l);
     }
 }
-#line 272 "paper/model.nw"
+#line 274 "paper/model.nw"
   }
   cholmod_free_factor(&L, md->cm);
   gsl_matrix_free(Lcc); gsl_matrix_free(Scc); free(col);

@@ -301,13 +301,11 @@ static int slsqp(Evaluator *ev, double *X)
   double *y = q.metric.X0 + n, *tol = y + n, f;
   memcpy(q.metric.X0, X, n * sizeof *X);
   if (!(rc = metric_setup(ev, &q.metric))) {
-    
-#line 516 "paper/optimize.nw"
-q.opt = nlopt_create(NLOPT_LD_SLSQP, n);
-if (!q.opt) {
-  free(work);
-  return status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
-}
+    if (!(q.opt = nlopt_create(NLOPT_LD_SLSQP, n)))
+      rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
+    else {
+      
+#line 520 "paper/optimize.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -316,7 +314,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->s->opt_max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 537 "paper/optimize.nw"
+#line 536 "paper/optimize.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -324,12 +322,13 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 509 "paper/optimize.nw"
+#line 512 "paper/optimize.nw"
+    }
   }
   free(work);
   return rc;
 }
-#line 553 "paper/optimize.nw"
+#line 552 "paper/optimize.nw"
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
                  Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
 {
