@@ -32,7 +32,7 @@ CC      ?= cc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
            -I/usr/include/suitesparse -Isrc
-LDLIBS  := -lcholmod -lnlopt -lgsl -lgslcblas -linih -lm
+LDLIBS  := -lcholmod -lnlopt -lgsl -lblas -linih -lm
 ifeq ($(SAN),1)
 CFLAGS  += -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
            -fno-omit-frame-pointer
@@ -41,7 +41,7 @@ endif
 
 # Debian packages the package needs, and the command that proves each one.
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
-            libsuitesparse-dev libopenblas0-pthread pkg-config lmodern valgrind \
+            libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 

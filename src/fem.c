@@ -223,7 +223,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-#line 380 "paper/fem.nw"
+#line 391 "paper/fem.nw"
 /* (Ax)_j: column j is row j, A being stored symmetric */
 static double fem_row_dot(const cholmod_sparse *A, size_t j, const double *x)
 {
@@ -241,8 +241,13 @@ void fem_multiply(const cholmod_sparse *A, const double *x, double *y)
 
 double fem_energy(const cholmod_sparse *A, const double *b, const double *Q)
 {
-  double e = 0;
-  for (size_t j = 0; j < A->ncol; j++)
-    e += Q[j] * (0.5 * fem_row_dot(A, j, Q) - b[j]);
-  return e;
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  long double e = 0;
+  for (size_t j = 0; j < A->ncol; j++) {
+    long double s = 0;
+    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += (long double) Ax[p] * Q[Ai[p]];
+    e += Q[j] * (s / 2 - b[j]);
+  }
+  return (double) e;
 }

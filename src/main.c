@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cholmod.h>
+#include <gsl/gsl_errno.h>
 #include "status.h"
 #include "scene.h"
 #include "model.h"
@@ -12,7 +13,7 @@
 #include "design.h"
 #include "optimize.h"
 
-#line 29 "paper/main.nw"
+#line 30 "paper/main.nw"
 static const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
@@ -67,7 +68,7 @@ static const char usage_optimize[] =
   "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
   "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
   "multipliers.dat, and initial/ and final/ with the files of solve.\n";
-#line 86 "paper/main.nw"
+#line 87 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -76,7 +77,7 @@ typedef struct {
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
-#line 97 "paper/main.nw"
+#line 98 "paper/main.nw"
 static int args_read(int argc, char **argv, Args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -98,7 +99,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 123 "paper/main.nw"
+#line 124 "paper/main.nw"
 static void output_dir(const Args *a, const char *suffix, char *dir,
                        size_t size)
 {
@@ -109,7 +110,7 @@ static void output_dir(const Args *a, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 142 "paper/main.nw"
+#line 143 "paper/main.nw"
 static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
 {
   FILE *f = output_open(o, "summary.dat", st);
@@ -125,7 +126,7 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
           md->seconds);
   return output_close(o, f, st);
 }
-#line 161 "paper/main.nw"
+#line 162 "paper/main.nw"
 static int write_matrix_market(const char *path, cholmod_sparse *A,
                                cholmod_common *cm, Status *st)
 {
@@ -141,7 +142,7 @@ static int write_matrix_market(const char *path, cholmod_sparse *A,
   }
   return STATUS_OK;
 }
-#line 179 "paper/main.nw"
+#line 180 "paper/main.nw"
 static int solve_write(const Args *a, const Scene *s, Model *md,
                        cholmod_common *cm, Status *st)
 {
@@ -180,7 +181,7 @@ static int command_solve(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 233 "paper/main.nw"
+#line 234 "paper/main.nw"
 static int energy_at(Model *md, const double *X, double *E, Status *st)
 {
   int rc = model_solve(md, X, st);
@@ -205,7 +206,7 @@ static int finite_difference(Model *md, double *X, int i, double s,
   if (!rc) *fd = central ? (E1 - E0) / (2 * s) : (-3 * E0 + 4 * E1 - E2) / (2 * s);
   return rc;
 }
-#line 260 "paper/main.nw"
+#line 261 "paper/main.nw"
 static int best_differences(Model *md, const Scene *s, const double *G,
                             double *best, double *err, Status *st)
 {
@@ -226,7 +227,7 @@ static int best_differences(Model *md, const Scene *s, const double *G,
   free(X);
   return rc;
 }
-#line 283 "paper/main.nw"
+#line 284 "paper/main.nw"
 static int write_gradient(Output *o, const Model *md, const double *G,
                           const double *best, const double *err, Status *st)
 {
@@ -263,7 +264,7 @@ static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
          s->path, err[worst], worst, dir);
   return STATUS_OK;
 }
-#line 323 "paper/main.nw"
+#line 324 "paper/main.nw"
 static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
 {
   Scene s;
@@ -284,7 +285,7 @@ static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 353 "paper/main.nw"
+#line 354 "paper/main.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -316,7 +317,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
   h->p[h->n++] = *p;
 }
-#line 389 "paper/main.nw"
+#line 390 "paper/main.nw"
 static int feasible_start(const Scene *s, const Design_set *B, double *X,
                           double *moved, Status *st)
 {
@@ -333,7 +334,7 @@ static int feasible_start(const Scene *s, const Design_set *B, double *X,
          s->path, v, *moved);
   return STATUS_OK;
 }
-#line 408 "paper/main.nw"
+#line 409 "paper/main.nw"
 static int write_history(Output *o, const Scene *s, const History *h,
                          Status *st)
 {
@@ -354,7 +355,7 @@ static int write_history(Output *o, const Scene *s, const History *h,
   return output_close(o, f, st);
 }
 
-#line 437 "paper/main.nw"
+#line 438 "paper/main.nw"
 static int write_multipliers(Output *o, const Scene *s, const Model *md,
                              const double *X, double *mu, Status *st)
 {
@@ -396,14 +397,15 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
   fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",
           E0, r->energy, r->iterations, r->evaluations);
   fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
-  fprintf(f, "seconds %.6f\nmetric_seconds %.6f\n", r->seconds, r->metric_seconds);
+  fprintf(f, "seconds %.6f\nmetric_seconds %.6f\nstate_seconds %.6f\n",
+          r->seconds, r->metric_seconds, r->state_seconds);
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           cv0, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
   return output_close(o, f, st);
 }
-#line 489 "paper/main.nw"
+#line 491 "paper/main.nw"
 static int optimize_run(const Scene *s, Model *md, double *X,
                         Output *o, Status *st)
 {
@@ -454,7 +456,7 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   scene_free(&s);
   return rc;
 }
-#line 546 "paper/main.nw"
+#line 548 "paper/main.nw"
 typedef struct {
   const char *name;
   const char *usage;
@@ -498,6 +500,7 @@ int main(int argc, char **argv)
   cholmod_common cm;
   cholmod_start(&cm);
   cm.print = 0;             /* the library reports through Status, not stderr */
+  gsl_set_error_handler_off();  /* likewise GSL: its codes are checked */
   int rc = args_read(argc, argv, &a, &st);
   if (!rc) rc = c->run(&a, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);

@@ -3,10 +3,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <gsl/gsl_blas.h>
 #include "model.h"
 
-#line 68 "paper/model.nw"
+#line 67 "paper/model.nw"
 Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
 {
   Model *md = calloc(1, sizeof *md);
@@ -20,7 +19,7 @@ Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
     return NULL;
   }
   
-#line 87 "paper/model.nw"
+#line 86 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -31,19 +30,19 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 81 "paper/model.nw"
+#line 80 "paper/model.nw"
   
-#line 100 "paper/model.nw"
+#line 99 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
 Qp_options opt = { s->state, s->tol, s->max_iter, s->omega };
 if (!(md->solver = qp_alloc(&md->qp, &opt, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 82 "paper/model.nw"
+#line 81 "paper/model.nw"
   return md;
 }
-#line 112 "paper/model.nw"
+#line 111 "paper/model.nw"
 static double model_clock(void)
 {
   struct timespec t;
@@ -68,7 +67,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 145 "paper/model.nw"
+#line 144 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -108,93 +107,35 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 212 "paper/model.nw"
-/* the lower triangle of A, contact diagonals raised by 1e-6 of themselves,
-   ordered by CAMD with the contact unknowns last, and factorised */
-static cholmod_factor *contact_last_factor(Model *md, Status *st)
+#line 209 "paper/model.nw"
+/* A_jj */
+static double diagonal(const cholmod_sparse *A, int j)
 {
-  cholmod_common *cm = md->cm;
-  const Dofs *d = md->dofs;
-  int n = d->n, *member = calloc(n, sizeof *member), *perm = malloc(n * sizeof *perm);
-  cholmod_sparse *K = cholmod_copy(md->A, -1, 1, cm);
-  cholmod_factor *L = NULL;
-  if (member && perm && K) {
-    const int *Kp = K->p, *Ki = K->i;
-    double *Kx = K->x;
-    for (int c = 0; c < d->nc; c++) {
-      int j = d->contact[c];
-      member[j] = 1;
-      for (int k = Kp[j]; k < Kp[j + 1]; k++)
-        if (Ki[k] == j) Kx[k] *= 1 + 1e-6;
-    }
-    
-#line 244 "paper/model.nw"
-int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
-int postorder = cm->postorder, print = cm->print;
-cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
-cm->print = 0;
-if (cholmod_camd(K, NULL, 0, member, perm, cm)
-    && (L = cholmod_analyze_p(K, perm, NULL, 0, cm))
-    && !(cholmod_factorize(K, L, cm) && L->minor == (size_t) n
-         && cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, L, cm)))
-  cholmod_free_factor(&L, cm);
-cm->nmethods = nmethods, cm->method[0].ordering = ordering;
-cm->postorder = postorder, cm->print = print;
-#line 231 "paper/model.nw"
-  }
-  if (!L) status_set(st, STATUS_NUMERIC, "contact stiffness: CHOLMOD could not "
-                     "factorise A (CHOLMOD status %d)", cm->status);
-  cholmod_free_sparse(&K, cm);
-  free(member); free(perm);
-  return L;
+  const int *Ap = A->p, *Ai = A->i;
+  for (int k = Ap[j]; k < Ap[j + 1]; k++)
+    if (Ai[k] == j) return ((const double *) A->x)[k];
+  return 0;
 }
-#line 260 "paper/model.nw"
+
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
-  int n = d->n, nc = d->nc, N1 = md->scene->N + 1, first = n - nc;
+  int nc = d->nc, N1 = md->scene->N + 1, rc;
   if (nc == 0)                         /* every contact node held: nothing to see */
     return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
                       "free to move; use optimizer.metric = euclidean");
-  cholmod_factor *L = contact_last_factor(md, st);
-  if (!L) return st->code;
-  gsl_matrix *Lcc = gsl_matrix_calloc(nc, nc), *Scc = gsl_matrix_alloc(nc, nc);
-  int *col = malloc((n + 1) * sizeof *col), rc = STATUS_OK;
-  if (!Lcc || !Scc || !col) rc = status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
-  else {
-    
-#line 282 "paper/model.nw"
-for (int k = 0; k < n; k++) col[k] = -1;
-for (int c = 0; c < nc; c++) col[d->contact[c]] = d->contact_col[c];
-int ok = 1;
-for (int k = first; k < n; k++) {
-  const int *Lp = L->p, *Li = L->i, *perm = L->Perm;
-  const double *Lx = L->x;
-  ok = ok && col[perm[k]] >= 0;          /* CAMD kept the contact unknowns last */
-  for (int q = Lp[k]; q < Lp[k + 1]; q++) gsl_matrix_set(Lcc, Li[q] - first, k - first, Lx[q]);
-}
-if (!ok)
-  rc = status_set(st, STATUS_SYSTEM, "contact stiffness: the ordering did "
-                  "not put the contact unknowns last");
-else
-  
-#line 299 "paper/model.nw"
-{
-  const int *perm = L->Perm;
-  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, Lcc, 0.0, Scc);
-  double mean = 0;
-  for (int k = 0; k < nc; k++) mean += gsl_matrix_get(Scc, k, k) / nc;
+  double *Scc = malloc((size_t) nc * nc * sizeof *Scc), mean = 0;
+  if (!Scc) return status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
+  if ((rc = qp_schur(&md->qp, md->cm, Scc, st))) { free(Scc); return rc; }
+  for (int c = 0; c < nc; c++) {
+    Scc[(size_t) c * nc + c] += 1e-6 * diagonal(md->A, d->contact[c]);
+    mean += Scc[(size_t) c * nc + c] / nc;
+  }
   memset(S, 0, (size_t) N1 * N1 * sizeof *S);
   for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
-  for (int k = 0; k < nc; k++)
-    for (int l = 0; l <= k; l++) {
-      int i = col[perm[first + k]], j = col[perm[first + l]];
-      S[(size_t) i * N1 + j] = S[(size_t) j * N1 + i] = gsl_matrix_get(Scc, k, l);
-    }
-}
-#line 274 "paper/model.nw"
-  }
-  cholmod_free_factor(&L, md->cm);
-  gsl_matrix_free(Lcc); gsl_matrix_free(Scc); free(col);
-  return rc;
+  for (int c = 0; c < nc; c++)
+    for (int e = 0; e < nc; e++)
+      S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
+  free(Scc);
+  return STATUS_OK;
 }

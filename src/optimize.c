@@ -1,4 +1,4 @@
-#line 95 "paper/optimize.nw"
+#line 96 "paper/optimize.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +9,7 @@
 #include "optimize.h"
 #include "sensitivity.h"
 
-#line 116 "paper/optimize.nw"
+#line 117 "paper/optimize.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -28,14 +28,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 294 "paper/optimize.nw"
+#line 298 "paper/optimize.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 381 "paper/optimize.nw"
+#line 385 "paper/optimize.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -46,7 +46,7 @@ typedef struct {
   int stalled;            /* evaluations since the last accepted one */
 } Slsqp;
 enum { STALL = 10 };
-#line 137 "paper/optimize.nw"
+#line 138 "paper/optimize.nw"
 static double opt_clock(void)
 {
   struct timespec t;
@@ -58,16 +58,19 @@ static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
+  double start = opt_clock();
   int rc = model_solve(ev->md, X, ev->st);
   ev->solves++;
-  if (ev->rep) ev->rep->evaluations++;
-  if (rc || (rc = grad_energy(ev->md, ev->G, ev->st))) return rc;
+  if (!rc) rc = grad_energy(ev->md, ev->G, ev->st);
+  if (ev->rep)
+    ev->rep->evaluations++, ev->rep->state_seconds += opt_clock() - start;
+  if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
   ev->E = ev->md->energy;
   ev->have = 1;
   return STATUS_OK;
 }
-#line 160 "paper/optimize.nw"
+#line 164 "paper/optimize.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -76,14 +79,14 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 171 "paper/optimize.nw"
+#line 175 "paper/optimize.nw"
 static void report_iterate(Evaluator *ev, int iteration, double pg)
 {
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, opt_clock() - ev->start };
   if (ev->monitor) ev->monitor(&p, ev->X, ev->data);
 }
-#line 191 "paper/optimize.nw"
+#line 195 "paper/optimize.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
@@ -111,7 +114,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 221 "paper/optimize.nw"
+#line 225 "paper/optimize.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -124,7 +127,7 @@ static int projgrad(Evaluator *ev, double *X)
     report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 243 "paper/optimize.nw"
+#line 247 "paper/optimize.nw"
 const char *why = pg <= ev->s->opt_tol ? "converged"
                 : !accepted ? "no_progress"
                 : k >= ev->s->opt_max_iter ? "max_iter" : NULL;
@@ -132,7 +135,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 233 "paper/optimize.nw"
+#line 237 "paper/optimize.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -140,7 +143,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 303 "paper/optimize.nw"
+#line 307 "paper/optimize.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -152,7 +155,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 318 "paper/optimize.nw"
+#line 322 "paper/optimize.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -184,7 +187,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
     }
   (void) m;
 }
-#line 353 "paper/optimize.nw"
+#line 357 "paper/optimize.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -202,7 +205,7 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 394 "paper/optimize.nw"
+#line 398 "paper/optimize.nw"
 static void slsqp_accept(Slsqp *q);
 static void slsqp_stop(Slsqp *q, const char *why)
 {
@@ -230,7 +233,7 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
   return ev->E / q->metric.scale;
 }
-#line 424 "paper/optimize.nw"
+#line 428 "paper/optimize.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -249,7 +252,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->s->opt_max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 448 "paper/optimize.nw"
+#line 452 "paper/optimize.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -264,7 +267,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = opt_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 468 "paper/optimize.nw"
+#line 472 "paper/optimize.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -286,11 +289,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 462 "paper/optimize.nw"
+#line 466 "paper/optimize.nw"
   ev->rep->metric_seconds = opt_clock() - start;
   return rc;
 }
-#line 498 "paper/optimize.nw"
+#line 502 "paper/optimize.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -305,7 +308,7 @@ static int slsqp(Evaluator *ev, double *X)
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
     else {
       
-#line 520 "paper/optimize.nw"
+#line 524 "paper/optimize.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -314,7 +317,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->s->opt_max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 536 "paper/optimize.nw"
+#line 540 "paper/optimize.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -322,13 +325,13 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 512 "paper/optimize.nw"
+#line 516 "paper/optimize.nw"
     }
   }
   free(work);
   return rc;
 }
-#line 552 "paper/optimize.nw"
+#line 556 "paper/optimize.nw"
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
                  Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
 {

@@ -26,6 +26,7 @@ typedef struct {
   char stop_reason[32];   /* "converged", "max_iter", "no_progress" */
   double seconds;         /* wall time of the whole optimisation */
   double metric_seconds;  /* of it, setting up SLSQP's metric */
+  double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
 int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,

@@ -1,20 +1,22 @@
-#line 137 "paper/state.nw"
+#line 142 "paper/state.nw"
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
 #include "state.h"
-#line 808 "paper/state.nw"
-#define SINGULAR (-1)    /* newton_solve: K is singular (not a Status_code) */
-#line 947 "paper/state.nw"
+#line 839 "paper/state.nw"
+#define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
+#line 1043 "paper/state.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
-#line 1125 "paper/state.nw"
+#line 1301 "paper/state.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 1345 "paper/state.nw"
+#line 1521 "paper/state.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-#line 254 "paper/state.nw"
+#line 261 "paper/state.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -30,31 +32,37 @@ struct Qp_workspace {
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   
-#line 717 "paper/state.nw"
-cholmod_sparse K;      /* the Newton matrix: A's pattern (borrowed),
-                          own values, stype -1 */
-cholmod_factor *Ls;    /* the symbolic analysis of K, from qp_alloc */
-cholmod_factor *L;     /* the factor of the Newton matrix of fac (LDL') */
-int *iperm;            /* n: the position of each unknown in L's order */
-cholmod_sparse *R;     /* n x 1: a column of K to add to L */
-cholmod_dense *rhs;    /* n x 1: the Newton right-hand side */
-cholmod_dense *sol, *Y, *E; /* the solution and cholmod_solve2's workspace */
+#line 713 "paper/state.nw"
+cholmod_sparse K;      /* A + D_c: A's pattern (borrowed), own values,
+                          stype -1 */
+cholmod_factor *Ls;    /* the symbolic analysis of K, bounded unknowns last */
+cholmod_factor *L;     /* the factor LL' of K at the current values */
+int first;             /* n - nc: where the bounded unknowns start in L */
+int *tc;               /* nc: the bounded unknown at position first + t */
+double *Lcc;           /* nc x nc, row-major: the trailing block of L */
+double *S;             /* nc x nc, row-major: the Schur complement of A */
+double *f;             /* nc: the condensed load */
+double *y;             /* nc: the condensed iterate x[ic] */
+double *M;             /* nc x nc: S on the free set, then its factor */
+double *r;             /* nc: a right-hand side on the free set */
+int *fr;               /* nc: the free set, listed */
+double bu2;            /* ||b_u||^2, for the residual */
+cholmod_dense *rhs, *sol, *Y, *E; /* n x 1: cholmod_solve2's vectors */
+cholmod_dense *Lb;     /* n x 1: z = L \ P b */
 char *act;             /* nc: the active set of the next Newton step */
-char *fac;             /* nc: the active set that L factorises */
-int fresh;             /* 1: the next step factorises from the analysis */
-int refactored;        /* 1: the last step did */
-int warm;              /* the first active set was guessed from x0 */
-#line 269 "paper/state.nw"
+int condensed;         /* S, f belong to the current values of A and b */
+int warm;              /* the first active set is to be guessed from x0 */
+#line 276 "paper/state.nw"
   
-#line 1130 "paper/state.nw"
+#line 1306 "paper/state.nw"
 double *p;             /* n: the conjugate direction */
 double *q;             /* n: A p, or A beta in a proportioning step */
 double *z;             /* n: the preconditioned free gradient, or beta */
 double abar;           /* the expansion step length 1.9 / normA */
 int restart;           /* 1: p must restart from z (the face changed) */
-#line 270 "paper/state.nw"
+#line 277 "paper/state.nw"
 };
-#line 334 "paper/state.nw"
+#line 341 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st);
 static int check_options(const Qp_options *opt, Status *st);
@@ -62,39 +70,43 @@ static int alloc_common(Qp_workspace *w, Status *st);
 static int check_pattern(Qp_workspace *w, Status *st);
 static int pdas_alloc(Qp_workspace *w, Status *st);
 static int mprgp_alloc(Qp_workspace *w, Status *st);
-#line 515 "paper/state.nw"
+#line 522 "paper/state.nw"
 static void pdas_set(Qp_workspace *w, int warm);
 static void mprgp_set(Qp_workspace *w);
 static int pdas_step(Qp_workspace *w, Status *st);
 static int psor_sweep(Qp_workspace *w, Status *st);
 static int mprgp_iterate(Qp_workspace *w, Status *st);
-#line 578 "paper/state.nw"
+#line 585 "paper/state.nw"
 static int not_converged(const Qp_workspace *w, Status *st);
 static int count_active(const Qp_workspace *w);
-#line 796 "paper/state.nw"
-static int newton_solve(Qp_workspace *w, Status *st);
-static int factorise(Qp_workspace *w, Status *st);
-static int modify_factor(Qp_workspace *w, Status *st);
-static int factor_is_regular(const Qp_workspace *w);
-static void fill_newton_rhs(Qp_workspace *w);
+#line 787 "paper/state.nw"
+static int analyse_contact_last(Qp_workspace *w, Status *st);
+#line 843 "paper/state.nw"
+static int condense(Qp_workspace *w, Status *st);
+static int newton_solve(Qp_workspace *w);
+static void condensed_forces(Qp_workspace *w);
+static double condensed_kkt(const Qp_workspace *w);
 static int predict_active_set(Qp_workspace *w);
-static int update_active_set(Qp_workspace *w, Status *st);
-#line 865 "paper/state.nw"
-static void fill_newton_matrix(Qp_workspace *w);
-#line 914 "paper/state.nw"
-static void fill_added_column(Qp_workspace *w, int j);
-#line 991 "paper/state.nw"
+static int expand(Qp_workspace *w, Status *st);
+static int refine(Qp_workspace *w, Status *st);
+static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
+                      Status *st);
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active);
-#line 1214 "paper/state.nw"
+#line 911 "paper/state.nw"
+static void fill_contact_matrix(Qp_workspace *w);
+static void read_trailing_block(Qp_workspace *w);
+static int condensed_load(Qp_workspace *w, Status *st);
+static void schur_complement(Qp_workspace *w);
+#line 1390 "paper/state.nw"
 static int proportional(const Qp_workspace *w);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int proportioning_step(Qp_workspace *w, Status *st);
-#line 1296 "paper/state.nw"
+#line 1472 "paper/state.nw"
 static double feasible_step(const Qp_workspace *w);
 static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
-#line 178 "paper/state.nw"
+#line 185 "paper/state.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static double ratio(double num, double den) { return num == 0 ? 0 : num / den; }
 
@@ -107,7 +119,7 @@ static double row_dot(const cholmod_sparse *A, int j, const double *x)
   for (int k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
   return s;
 }
-#line 197 "paper/state.nw"
+#line 204 "paper/state.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 static double kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -122,32 +134,32 @@ static double kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 220 "paper/state.nw"
+#line 227 "paper/state.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 211 "paper/state.nw"
+#line 218 "paper/state.nw"
       c++;
     } else
       rf += r * r;
   }
   
-#line 231 "paper/state.nw"
+#line 238 "paper/state.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(ratio(sqrt(rf), sf), ratio(sqrt(tn), sf)),
                 fmax(ratio(sqrt(inf), su), ratio(ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 216 "paper/state.nw"
+#line 223 "paper/state.nw"
 }
-#line 238 "paper/state.nw"
+#line 245 "paper/state.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return kkt_eval(qp, x, NULL, T);
 }
-#line 277 "paper/state.nw"
+#line 284 "paper/state.nw"
 /* unknown i is off its bound */
 static int is_free(const Qp_workspace *w, int i) { return w->x[i] > w->lo[i]; }
 
@@ -169,7 +181,7 @@ static void matvec(const cholmod_sparse *A, const double *x, double *y)
 {
   for (int j = 0; j < (int) A->ncol; j++) y[j] = row_dot(A, j, x);
 }
-#line 302 "paper/state.nw"
+#line 309 "paper/state.nw"
 /* g = A x - b, then kkt and T at x */
 static void refresh(Qp_workspace *w)
 {
@@ -177,7 +189,7 @@ static void refresh(Qp_workspace *w)
   for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
   w->kkt = kkt_eval(w->qp, w->x, w->g, w->T);
 }
-#line 316 "paper/state.nw"
+#line 323 "paper/state.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -193,7 +205,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 345 "paper/state.nw"
+#line 352 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -217,7 +229,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         (int) A->ncol);
   return check_options(opt, st);
 }
-#line 371 "paper/state.nw"
+#line 378 "paper/state.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != STATE_PDAS && opt->method != STATE_PSOR
@@ -232,7 +244,7 @@ static int check_options(const Qp_options *opt, Status *st)
                       opt->omega);
   return STATUS_OK;
 }
-#line 390 "paper/state.nw"
+#line 397 "paper/state.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
@@ -247,7 +259,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   for (int c = 0; c < w->nc; c++) w->bnd[w->qp->ic[c]] = c;
   return STATUS_OK;
 }
-#line 412 "paper/state.nw"
+#line 419 "paper/state.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -266,27 +278,28 @@ static int check_pattern(Qp_workspace *w, Status *st)
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
-#line 433 "paper/state.nw"
+#line 440 "paper/state.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
   
-#line 767 "paper/state.nw"
-free(w->K.x), free(w->act), free(w->fac), free(w->iperm);
+#line 820 "paper/state.nw"
+free(w->K.x), free(w->act), free(w->tc), free(w->fr);
+free(w->f), free(w->y), free(w->r), free(w->Lcc), free(w->S), free(w->M);
 cholmod_free_factor(&w->Ls, w->cm), cholmod_free_factor(&w->L, w->cm);
-cholmod_free_sparse(&w->R, w->cm);
 cholmod_free_dense(&w->rhs, w->cm), cholmod_free_dense(&w->sol, w->cm);
+cholmod_free_dense(&w->Lb, w->cm);
 cholmod_free_dense(&w->Y, w->cm), cholmod_free_dense(&w->E, w->cm);
-#line 437 "paper/state.nw"
+#line 444 "paper/state.nw"
   
-#line 1156 "paper/state.nw"
+#line 1332 "paper/state.nw"
 free(w->p), free(w->q), free(w->z);
-#line 438 "paper/state.nw"
+#line 445 "paper/state.nw"
   free(w->bnd), free(w->lo), free(w->d);
   free(w->x), free(w->g), free(w->T);
   free(w);
 }
-#line 453 "paper/state.nw"
+#line 460 "paper/state.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -310,7 +323,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 479 "paper/state.nw"
+#line 486 "paper/state.nw"
 /* b and lo finite; lo expanded to all unknowns */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -325,7 +338,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 498 "paper/state.nw"
+#line 505 "paper/state.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = read_matrix(w, st);
@@ -340,7 +353,7 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   if (w->opt.method == STATE_CGSSOR) mprgp_set(w);
   return STATUS_OK;
 }
-#line 528 "paper/state.nw"
+#line 535 "paper/state.nw"
 static const char *method_name(State_method m)
 {
   return m == STATE_PDAS ? "pdas" : m == STATE_PSOR ? "psor" : "cgssor";
@@ -361,7 +374,7 @@ int qp_iterate(Qp_workspace *w, Status *st)
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 559 "paper/state.nw"
+#line 566 "paper/state.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -378,7 +391,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   }
   return code;
 }
-#line 586 "paper/state.nw"
+#line 593 "paper/state.nw"
 /* bounded unknowns at their bound */
 static int count_active(const Qp_workspace *w)
 {
@@ -399,19 +412,12 @@ static int not_converged(const Qp_workspace *w, Status *st)
     "iteration%s (kkt = %.3g > tol = %.3g)%s", method_name(w->opt.method),
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, hint(w));
 }
-#line 662 "paper/state.nw"
-/* the first active set: all of I (cold), or the Newton rule's at x0 (warm) */
+#line 735 "paper/state.nw"
+/* the first active set: all of I; a warm start guesses after condensing */
 static void pdas_set(Qp_workspace *w, int warm)
 {
-  w->warm = warm, w->fresh = 1;
+  w->warm = warm, w->condensed = 0;
   for (int c = 0; c < w->nc; c++) w->act[c] = 1;
-  if (warm) predict_active_set(w);
-}
-
-/* unknown i is bounded and active in the factorised Newton matrix */
-static int is_held(const Qp_workspace *w, int i)
-{
-  return w->bnd[i] >= 0 && w->fac[w->bnd[i]];
 }
 
 /* the size of the active set */
@@ -421,167 +427,309 @@ static int count_act(const Qp_workspace *w)
   for (int c = 0; c < w->nc; c++) m += w->act[c];
   return m;
 }
-#line 733 "paper/state.nw"
+#line 759 "paper/state.nw"
 static int pdas_alloc(Qp_workspace *w, Status *st)
 {
   const cholmod_sparse *A = w->qp->A;
-  const int *Ap = A->p;
-  size_t nz = (size_t) Ap[w->n], n = (size_t) w->n, maxcol = 1;
-  for (int j = 0; j < w->n; j++)
-    if ((size_t) (Ap[j + 1] - Ap[j]) > maxcol) maxcol = (size_t) (Ap[j + 1] - Ap[j]);
+  size_t nz = (size_t) ((const int *) A->p)[w->n], nc = (size_t) w->nc + 1;
   w->K = *A;                 /* the header: p and i are shared with A */
   w->K.x = malloc((nz + 1) * sizeof(double));
   w->K.nzmax = nz, w->K.stype = -1;
-  w->act = malloc((size_t) w->nc + 1), w->fac = malloc((size_t) w->nc + 1);
-  w->iperm = malloc((n + 1) * sizeof *w->iperm);
-  if (!w->K.x || !w->act || !w->fac || !w->iperm)
-    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas)");
+  w->act = malloc(nc), w->tc = malloc(nc * sizeof *w->tc);
+  w->fr = malloc(nc * sizeof *w->fr);
+  w->f = malloc(nc * sizeof *w->f), w->y = malloc(nc * sizeof *w->y);
+  w->r = malloc(nc * sizeof *w->r);
+  w->Lcc = malloc(nc * nc * sizeof *w->Lcc);
+  w->S = malloc(nc * nc * sizeof *w->S), w->M = malloc(nc * nc * sizeof *w->M);
+  if (!w->K.x || !w->act || !w->tc || !w->fr || !w->f || !w->y || !w->r
+      || !w->Lcc || !w->S || !w->M)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas, "
+                      "nc = %d)", w->nc);
   memcpy(w->K.x, A->x, nz * sizeof(double));
-  
-#line 755 "paper/state.nw"
-cholmod_common *cm = w->cm;
-w->Ls = cholmod_analyze(&w->K, cm);
-w->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
-w->R = cholmod_allocate_sparse(n, 1, maxcol, 0, 1, 0, CHOLMOD_REAL, cm);
-if (!w->Ls || !w->rhs || !w->R)
-  return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
-                    "analyse A (CHOLMOD status %d)", cm->status);
-const int *perm = w->Ls->Perm;
-for (int k = 0; k < w->n; k++) w->iperm[perm[k]] = k;
-#line 749 "paper/state.nw"
+  w->first = w->n - w->nc;
+  return analyse_contact_last(w, st);
+}
+#line 791 "paper/state.nw"
+static int analyse_contact_last(Qp_workspace *w, Status *st)
+{
+  cholmod_common *cm = w->cm;
+  size_t n = (size_t) w->n;
+  int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
+  int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
+  int postorder = cm->postorder, ok = last && perm;
+  for (int c = 0; ok && c < w->nc; c++) last[w->qp->ic[c]] = 1;
+  cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
+  ok = ok && cholmod_camd(&w->K, NULL, 0, last, perm, cm)
+          && (w->Ls = cholmod_analyze_p(&w->K, perm, NULL, 0, cm));
+  cm->nmethods = nmethods, cm->method[0].ordering = ordering;
+  cm->postorder = postorder;
+  free(last), free(perm);
+  w->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
+  w->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
+  if (!ok || !w->rhs || !w->Lb)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
+                      "analyse A (CHOLMOD status %d)", cm->status);
+  const int *P = w->Ls->Perm;
+  for (int t = 0; t < w->nc; t++)
+    if ((w->tc[t] = w->bnd[P[w->first + t]]) < 0)
+      return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
+                        "the bounded unknowns last");
   return STATUS_OK;
 }
-#line 780 "paper/state.nw"
+#line 857 "paper/state.nw"
 static int pdas_step(Qp_workspace *w, Status *st)
 {
-  int code = newton_solve(w, st);
-  if (code == SINGULAR && w->iter == 0 && w->warm) {
-    pdas_set(w, 0);              /* the warm guess holds nothing: go cold */
-    code = newton_solve(w, st);
+  int code;
+  if (!w->condensed) {
+    if ((code = condense(w, st)) == SINGULAR)
+      return not_held(w, st, "A is singular even with every bound held", w->nc);
+    if (code) return code;
+    if (w->warm) {
+      for (int c = 0; c < w->nc; c++) w->y[c] = w->x[w->qp->ic[c]];
+      condensed_forces(w);
+      predict_active_set(w);
+    }
+  }
+  if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && w->warm) {
+    pdas_set(w, 0), w->condensed = 1;   /* the guess holds nothing: go cold */
+    code = newton_solve(w);
   }
   if (code == SINGULAR)
     return not_held(w, st, "the Newton matrix is singular", count_act(w));
-  if (code) return code;
-  refresh(w);
-  return update_active_set(w, st);
+  condensed_forces(w);
+  w->kkt = condensed_kkt(w);
+  
+#line 891 "paper/state.nw"
+int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
+if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
+if ((code = expand(w, st))) return code;
+if (w->kkt > w->opt.tol && (same || solved) && (code = refine(w, st))) return code;
+if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
+return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
+  "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
+  "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
+#line 879 "paper/state.nw"
 }
-#line 812 "paper/state.nw"
-/* x = K \ rhs for the active set act, x_i = lo_i exactly on it */
-static int newton_solve(Qp_workspace *w, Status *st)
-{
-  int code = w->fresh ? factorise(w, st) : modify_factor(w, st);
-  if (code) return code;
-  if (!factor_is_regular(w)) {
-    if (w->refactored) return SINGULAR;
-    w->fresh = 1;
-    return newton_solve(w, st);
-  }
-  fill_newton_rhs(w);
-  if (!cholmod_solve2(CHOLMOD_A, w->L, w->rhs, NULL, &w->sol, NULL,
-                      &w->Y, &w->E, w->cm))
-    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
-                      "(CHOLMOD status %d)", w->cm->status);
-  const double *s = w->sol->x;
-  for (int i = 0; i < w->n; i++) w->x[i] = is_held(w, i) ? w->lo[i] : s[i];
-  return STATUS_OK;
-}
-#line 843 "paper/state.nw"
-static int factorise(Qp_workspace *w, Status *st)
+#line 918 "paper/state.nw"
+static int condense(Qp_workspace *w, Status *st)
 {
   cholmod_common *cm = w->cm;
-  int print = cm->print, ok;
-  memcpy(w->fac, w->act, (size_t) w->nc);
-  fill_newton_matrix(w);
+  int print = cm->print, final_ll = cm->final_ll, ok;
+  fill_contact_matrix(w);
   cholmod_free_factor(&w->L, cm);
-  cm->print = 0;                  /* a singular K is our message to give */
+  cm->print = 0, cm->final_ll = 1;  /* a singular K is our message to give */
   w->L = cholmod_copy_factor(w->Ls, cm);
   ok = w->L && cholmod_factorize(&w->K, w->L, cm) && cm->status >= CHOLMOD_OK;
-  if (ok && w->L->minor == w->L->n)
-    ok = cholmod_change_factor(CHOLMOD_REAL, 0, 0, 0, 0, w->L, cm);
-  cm->print = print;
+  cm->print = print, cm->final_ll = final_ll;
   if (!ok)
     return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to factorise "
                       "(CHOLMOD status %d)", cm->status);
-  w->fresh = 0, w->refactored = 1;
+  if (w->L->minor < w->L->n) return SINGULAR;
+  read_trailing_block(w);
+  schur_complement(w);
+  if ((ok = condensed_load(w, st))) return ok;
+  w->condensed = 1;
   return STATUS_OK;
 }
-#line 869 "paper/state.nw"
-/* K = A, with the row and column of each active unknown reduced to A_ii */
-static void fill_newton_matrix(Qp_workspace *w)
+
+/* K = A + diag(A_ii) on the bounded unknowns; the values only */
+static void fill_contact_matrix(Qp_workspace *w)
 {
   const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
-  const double *Ax = w->qp->A->x;
   double *Kx = w->K.x;
-  for (int j = 0; j < w->n; j++)
-    for (int k = Ap[j]; k < Ap[j + 1]; k++) {
-      int i = Ai[k];
-      Kx[k] = i != j && (is_held(w, i) || is_held(w, j)) ? 0 : Ax[k];
-    }
-}
-#line 891 "paper/state.nw"
-/* L: from the Newton matrix of fac to that of act, row by row */
-static int modify_factor(Qp_workspace *w, Status *st)
-{
-  int ok = 1, print = w->cm->print;
-  w->cm->print = 0;               /* as in factorise */
-  for (int c = 0; ok && c < w->nc; c++)
-    if (w->act[c] && !w->fac[c]) {
-      ok = cholmod_rowdel((size_t) w->iperm[w->qp->ic[c]], NULL, w->L, w->cm);
-      w->fac[c] = 1;
-    }
-  for (int c = 0; ok && c < w->nc; c++)
-    if (!w->act[c] && w->fac[c]) {
-      w->fac[c] = 0;
-      fill_added_column(w, w->qp->ic[c]);
-      ok = cholmod_rowadd((size_t) w->iperm[w->qp->ic[c]], w->R, w->L, w->cm);
-    }
-  w->cm->print = print, w->refactored = 0;
-  return ok ? STATUS_OK : status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD "
-    "failed to modify the factor (CHOLMOD status %d)", w->cm->status);
-}
-#line 918 "paper/state.nw"
-/* R = column j of A in the rows not held, in the factor's order */
-static void fill_added_column(Qp_workspace *w, int j)
-{
-  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
-  const double *Ax = w->qp->A->x;
-  int *Rp = w->R->p, *Ri = w->R->i, m = 0;
-  double *Rx = w->R->x;
-  for (int k = Ap[j]; k < Ap[j + 1]; k++)
-    if (!is_held(w, Ai[k])) Ri[m] = w->iperm[Ai[k]], Rx[m++] = Ax[k];
-  Rp[0] = 0, Rp[1] = m;
-}
-#line 951 "paper/state.nw"
-/* the pivots of the unknowns not held are positive and within 1/RCOND_MIN */
-static int factor_is_regular(const Qp_workspace *w)
-{
-  const cholmod_factor *L = w->L;
-  const int *Lp = L->p, *perm = L->Perm;
-  const double *Lx = L->x;
-  double dmin = INFINITY, dmax = 0;
-  if (L->minor < L->n) return 0;
-  for (int k = 0; k < w->n; k++)
-    if (!is_held(w, perm[k]))
-      dmin = fmin(dmin, Lx[Lp[k]]), dmax = fmax(dmax, Lx[Lp[k]]);
-  return dmax == 0 || (dmin > 0 && dmin >= PDAS_RCOND_MIN * dmax);
-}
-#line 973 "paper/state.nw"
-/* rhs = b - A(:,act) lo(act) off the active set, A_ii lo_i on it */
-static void fill_newton_rhs(Qp_workspace *w)
-{
-  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
-  const double *Ax = w->qp->A->x;
-  double *r = w->rhs->x;
-  memcpy(r, w->qp->b, (size_t) w->n * sizeof *r);
+  memcpy(Kx, w->qp->A->x, (size_t) Ap[w->n] * sizeof *Kx);
   for (int c = 0; c < w->nc; c++) {
     int j = w->qp->ic[c];
-    if (!w->fac[c]) continue;
     for (int k = Ap[j]; k < Ap[j + 1]; k++)
-      if (!is_held(w, Ai[k])) r[Ai[k]] -= Ax[k] * w->qp->lo[c];
-    r[j] = w->d[j] * w->qp->lo[c];
+      if (Ai[k] == j) Kx[k] += w->d[j];
   }
 }
-#line 996 "paper/state.nw"
+#line 959 "paper/state.nw"
+/* Lcc = the rows and columns first..n-1 of L, row-major, lower */
+static void read_trailing_block(Qp_workspace *w)
+{
+  const cholmod_factor *L = w->L;
+  const double *Lx = L->x;
+  int nc = w->nc, first = w->first;
+  memset(w->Lcc, 0, (size_t) nc * nc * sizeof *w->Lcc);
+  if (L->is_super) {
+    const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
+    for (size_t s = 0; s < L->nsuper; s++) {
+      int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
+      for (int k = k1 > first ? k1 : first; k < k2; k++)
+        for (int q = k - k1; q < nrow; q++)
+          w->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
+            Lx[px[s] + q + (size_t) (k - k1) * nrow];
+    }
+  } else {
+    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    for (int k = first; k < w->n; k++)
+      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
+        w->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
+  }
+}
+#line 987 "paper/state.nw"
+static void schur_complement(Qp_workspace *w)
+{
+  int nc = w->nc;
+  if (nc == 0) return;
+  gsl_matrix_view L = gsl_matrix_view_array(w->Lcc, nc, nc),
+                  LLt = gsl_matrix_view_array(w->M, nc, nc);
+  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, &L.matrix, 0.0, &LLt.matrix);
+  for (int t = 0; t < nc; t++)
+    for (int u = 0; u <= t; u++) {
+      int a = w->tc[t], b = w->tc[u];
+      double v = w->M[(size_t) t * nc + u] - (t == u ? w->d[w->qp->ic[a]] : 0);
+      w->S[(size_t) a * nc + b] = w->S[(size_t) b * nc + a] = v;
+    }
+}
+#line 1006 "paper/state.nw"
+static int condensed_load(Qp_workspace *w, Status *st)
+{
+  const double *b = w->qp->b;
+  memcpy(w->rhs->x, b, (size_t) w->n * sizeof *b);
+  if (solve_pair(w, CHOLMOD_P, CHOLMOD_L, &w->rhs, st)) return st->code;
+  cholmod_dense *swap = w->Lb;
+  w->Lb = w->rhs, w->rhs = swap;         /* keep z, reuse the old vector */
+  const double *z = w->Lb->x;
+  w->bu2 = 0;
+  for (int i = 0; i < w->n; i++)
+    if (w->bnd[i] < 0) w->bu2 += b[i] * b[i];
+  for (int t = 0; t < w->nc; t++) {
+    double s = 0;
+    for (int u = 0; u <= t; u++) s += w->Lcc[(size_t) t * w->nc + u] * z[w->first + u];
+    w->f[w->tc[t]] = s;
+  }
+  return STATUS_OK;
+}
+#line 1047 "paper/state.nw"
+/* y = lo on the active set, the solution of the Newton system off it */
+static int newton_solve(Qp_workspace *w)
+{
+  int nc = w->nc, m = 0;
+  const double *lo = w->qp->lo;
+  for (int c = 0; c < nc; c++)
+    if (w->act[c]) w->y[c] = lo[c];
+    else w->fr[m++] = c;
+  for (int a = 0; a < m; a++) {
+    const double *Sa = w->S + (size_t) w->fr[a] * nc;
+    double s = w->f[w->fr[a]];
+    for (int c = 0; c < nc; c++) if (w->act[c]) s -= Sa[c] * lo[c];
+    w->r[a] = s;
+    for (int b = 0; b < m; b++) w->M[(size_t) a * m + b] = Sa[w->fr[b]];
+  }
+  if (m == 0) return STATUS_OK;
+  gsl_matrix_view M = gsl_matrix_view_array(w->M, m, m);
+  gsl_vector_view r = gsl_vector_view_array(w->r, m);
+  double dmin = INFINITY, dmax = 0;
+  if (gsl_linalg_cholesky_decomp1(&M.matrix)) return SINGULAR;
+  for (int a = 0; a < m; a++) {
+    double p = w->M[(size_t) a * m + a] * w->M[(size_t) a * m + a];
+    dmin = fmin(dmin, p), dmax = fmax(dmax, p);
+  }
+  if (!(dmin >= PDAS_RCOND_MIN * dmax)) return SINGULAR;
+  gsl_linalg_cholesky_svx(&M.matrix, &r.vector);
+  for (int a = 0; a < m; a++) w->y[w->fr[a]] = w->r[a];
+  return STATUS_OK;
+}
+#line 1083 "paper/state.nw"
+static void condensed_forces(Qp_workspace *w)
+{
+  for (int c = 0; c < w->nc; c++) {
+    const double *Sc = w->S + (size_t) c * w->nc;
+    double s = -w->f[c];
+    for (int e = 0; e < w->nc; e++) s += Sc[e] * w->y[e];
+    w->T[c] = s;
+  }
+}
+
+static double condensed_kkt(const Qp_workspace *w)
+{
+  double tn = 0, inf = 0, comp = 0, axax = w->bu2, bb = w->bu2, yy = 0, ll = 0;
+  for (int c = 0; c < w->nc; c++) {
+    double T = w->T[c], gap = w->y[c] - w->qp->lo[c], bc = w->qp->b[w->qp->ic[c]];
+    if (T < 0) tn += T * T;
+    if (gap < 0) inf += gap * gap;
+    comp += fabs(T) * fabs(gap);
+    bb += bc * bc, axax += (bc + T) * (bc + T);
+    yy += w->y[c] * w->y[c], ll += w->qp->lo[c] * w->qp->lo[c];
+  }
+  double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
+  double k = fmax(ratio(sqrt(tn), sf),
+                  fmax(ratio(sqrt(inf), su), ratio(ratio(comp, sf), su)));
+  return isfinite(tn + inf + comp + sf + su) ? k : NAN;
+}
+#line 1118 "paper/state.nw"
+/* act = { c : T_c + A_ii (lo_c - y_c) > 0 }; 1 if it did not change */
+static int predict_active_set(Qp_workspace *w)
+{
+  int same = 1;
+  for (int c = 0; c < w->nc; c++) {
+    char a = w->T[c] + w->d[w->qp->ic[c]] * (w->qp->lo[c] - w->y[c]) > 0;
+    same &= a == w->act[c];
+    w->act[c] = a;
+  }
+  return same;
+}
+#line 1137 "paper/state.nw"
+static int expand(Qp_workspace *w, Status *st)
+{
+  double *v = w->rhs->x;
+  memcpy(v, w->Lb->x, (size_t) w->n * sizeof *v);
+  for (int t = 0; t < w->nc; t++) {
+    double s = 0;
+    for (int u = t; u < w->nc; u++)
+      s += w->Lcc[(size_t) u * w->nc + t] * w->y[w->tc[u]];
+    v[w->first + t] = s;
+  }
+  if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &w->rhs, st)) return st->code;
+  memcpy(w->x, w->rhs->x, (size_t) w->n * sizeof *w->x);
+  for (int c = 0; c < w->nc; c++) w->x[w->qp->ic[c]] = w->y[c];
+  refresh(w);
+  return STATUS_OK;
+}
+#line 1161 "paper/state.nw"
+static int refine(Qp_workspace *w, Status *st)
+{
+  double *v = w->rhs->x;
+  for (int i = 0; i < w->n; i++) v[i] = w->bnd[i] < 0 ? -w->g[i] : 0;
+  if (solve_pair(w, CHOLMOD_P, CHOLMOD_L, &w->rhs, st)) return st->code;
+  v = w->rhs->x;
+  memset(v + w->first, 0, (size_t) w->nc * sizeof *v);
+  if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &w->rhs, st)) return st->code;
+  v = w->rhs->x;
+  for (int i = 0; i < w->n; i++) if (w->bnd[i] < 0) w->x[i] += v[i];
+  refresh(w);
+  return STATUS_OK;
+}
+
+/* *v = the solves sys2(sys1(*v)) with L, through w->sol */
+static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
+                      Status *st)
+{
+  cholmod_common *cm = w->cm;
+  if (!cholmod_solve2(sys1, w->L, *v, NULL, &w->sol, NULL, &w->Y, &w->E, cm)
+      || !cholmod_solve2(sys2, w->L, w->sol, NULL, v, NULL, &w->Y, &w->E, cm))
+    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
+                      "(CHOLMOD status %d)", cm->status);
+  return STATUS_OK;
+}
+#line 1193 "paper/state.nw"
+int qp_schur(const Qp *qp, cholmod_common *cm, double *S, Status *st)
+{
+  Qp_options opt = { STATE_PDAS, 1, 1, 1 };
+  Qp_workspace *w = qp_alloc(qp, &opt, cm, st);
+  if (!w) return st->code;
+  int code = read_matrix(w, st);
+  if (!code) code = read_vectors(w, st);
+  if (!code && (code = condense(w, st)) == SINGULAR)
+    code = status_set(st, STATUS_NUMERIC, "qp_schur: A is singular even "
+                      "with every bounded unknown held");
+  if (!code) memcpy(S, w->S, (size_t) qp->nc * qp->nc * sizeof *S);
+  qp_free(w);
+  return code;
+}
+#line 1210 "paper/state.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active)
@@ -591,31 +739,7 @@ static int not_held(const Qp_workspace *w, Status *st, const char *why,
     "bounds active, at iteration %d", method_name(w->opt.method), why,
     active, w->nc, w->iter + 1);
 }
-#line 1020 "paper/state.nw"
-/* act = { c : T_c + A_ii (lo_c - x_i) > 0 }; 1 if it did not change */
-static int predict_active_set(Qp_workspace *w)
-{
-  int same = 1;
-  for (int c = 0; c < w->nc; c++) {
-    int i = w->qp->ic[c];
-    char a = w->T[c] + w->d[i] * (w->qp->lo[c] - w->x[i]) > 0;
-    same &= a == w->act[c];
-    w->act[c] = a;
-  }
-  return same;
-}
-
-/* the next active set; a repeated set that does not meet tol is a failure */
-static int update_active_set(Qp_workspace *w, Status *st)
-{
-  int same = predict_active_set(w);
-  if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
-  if (!w->refactored) { w->fresh = 1; return STATUS_OK; }
-  return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
-    "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
-    "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
-}
-#line 1063 "paper/state.nw"
+#line 1239 "paper/state.nw"
 /* one projected SOR sweep over all unknowns, then the residual */
 static int psor_sweep(Qp_workspace *w, Status *st)
 {
@@ -627,7 +751,7 @@ static int psor_sweep(Qp_workspace *w, Status *st)
   (void) st;      /* a sweep cannot fail; NaN is caught by qp_iterate */
   return STATUS_OK;
 }
-#line 1138 "paper/state.nw"
+#line 1314 "paper/state.nw"
 static int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1;
@@ -643,7 +767,7 @@ static void mprgp_set(Qp_workspace *w)
   w->abar = MPRGP_ABAR / w->normA;
   w->restart = 1;
 }
-#line 1173 "paper/state.nw"
+#line 1349 "paper/state.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -662,7 +786,7 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 1202 "paper/state.nw"
+#line 1378 "paper/state.nw"
 static int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   int code = proportional(w) ? cg_or_expansion_step(w, st)
@@ -672,7 +796,7 @@ static int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 1220 "paper/state.nw"
+#line 1396 "paper/state.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -686,7 +810,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 1241 "paper/state.nw"
+#line 1417 "paper/state.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -703,7 +827,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   w->restart = 1;
   return STATUS_OK;
 }
-#line 1272 "paper/state.nw"
+#line 1448 "paper/state.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   int n = w->n;
@@ -725,7 +849,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 1302 "paper/state.nw"
+#line 1478 "paper/state.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -735,7 +859,7 @@ static double feasible_step(const Qp_workspace *w)
       af = fmin(af, (w->x[i] - w->lo[i]) / w->p[i]);
   return af;
 }
-#line 1319 "paper/state.nw"
+#line 1495 "paper/state.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -747,7 +871,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, w->z, w->q) / pap;
   for (int i = 0; i < w->n; i++) w->p[i] = w->z[i] - gamma * w->p[i];
 }
-#line 1349 "paper/state.nw"
+#line 1525 "paper/state.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {

@@ -49,4 +49,9 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
 /* The relative KKT residual of x (scale-free); T (nc, may be NULL)
    receives the contact forces. */
 double qp_kkt(const Qp *qp, const double *x, double *T);
+
+/* S (nc x nc, row-major, in the order of ic): the Schur complement of A
+   onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc; needs GSL's error
+   handler off (gsl_set_error_handler_off), as the Newton method does. */
+int qp_schur(const Qp *qp, cholmod_common *cm, double *S, Status *st);
 #endif

@@ -376,8 +376,8 @@ static void check_warm_pdas(Problem *P)
   o = options(STATE_PDAS), o.tol = 1e-14;
   Run r2 = run(P, o, x, x, NULL);
   check(!r.code && !r2.code && r2.rep.iterations == 1, "%s pdas, tol 1e-14, "
-        "warm from psor's solution (kkt %.2g): %d Newton step, kkt %.2g",
-        P->name, r.rep.kkt, r2.rep.iterations, r2.rep.kkt);
+        "warm from psor's solution (kkt %.2g): %d Newton step, kkt %.3g%s",
+        P->name, r.rep.kkt, r2.rep.iterations, r2.rep.kkt, r2.st.msg);
   free(x);
 }
 
