@@ -6,13 +6,14 @@
 #      stiffness matrix, and its peak memory, N = 16 .. 1024;
 #   2. the gradient (4.8) against a warm state solve, at the same N;
 #   3. the whole `contactopt optimize` at the article's mesh (N = 16), best of 5;
-#   4. the whole `contactopt optimize` at N = 256.
+#   4. the whole `contactopt optimize` at N = 256, best of 3.
 # Writes the four tables into paper/bench-performance.tex (only when every
 # measurement succeeded), the raw numbers into build/bench/performance-*.dat,
 # and prints a summary.  A measurement that fails stops the benchmark with
 # exit status 1 and its message; a missed target is a result, not a failure.
 #   BENCH_NMAX  largest N (default 1024); BENCH_NMAX=128 for a short run
 #   BENCH_RUNS  runs of item 3 (default 5)
+#   BENCH_RUNS4 runs of item 4 (default 3)
 #   BIN, BENCH_BIN  the program and the folder of bench_cholmod and walltime
 #               (default bin/contactopt and build/bench, as make builds them)
 cd "$(dirname "$0")/../.." || exit 1
@@ -20,6 +21,7 @@ bin=${BIN:-bin/contactopt}
 bb=${BENCH_BIN:-build/bench}
 nmax=${BENCH_NMAX:-1024}
 runs=${BENCH_RUNS:-5}
+runs4=${BENCH_RUNS4:-3}
 scene=data/example-5.1.scene
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
@@ -28,6 +30,7 @@ fail() { echo "performance: FAILED: $*" >&2; exit 1; }
 mesh() { echo "design.N=$1 mesh.M=$(($1 / 16)) mesh.R=$((3 * $1 / 16))"; }
 [ "$nmax" -ge 16 ] 2>/dev/null || fail "BENCH_NMAX=$nmax: must be a number >= 16"
 [ "$runs" -ge 1 ] 2>/dev/null || fail "BENCH_RUNS=$runs: must be a number >= 1"
+[ "$runs4" -ge 1 ] 2>/dev/null || fail "BENCH_RUNS4=$runs4: must be a number >= 1"
 for p in "$bin" "$bb/bench_cholmod" "$bb/walltime"; do
   [ -x "$p" ] || fail "$p is missing (make bench builds it)"
 done
@@ -61,15 +64,19 @@ optimize() {
   tail -n 1 $whole
 }
 echo "# contactopt optimize $scene: N wall[s] maxrss[MiB] iterations evaluations stop_reason projected_gradient" > $whole
-echo "performance: contactopt optimize, N = 16 ($runs runs) and N = $N4"
+echo "performance: contactopt optimize, N = 16 ($runs runs) and N = $N4 ($runs4 runs)"
 k=1
 # the scene as it is: the article's mesh, N = 16
 while [ $k -le "$runs" ]; do optimize "$tmp/opt16-$k" 16; k=$((k + 1)); done
-optimize "$tmp/opt$N4" $N4 $(for o in $(mesh $N4); do echo "-s $o"; done)
+k=1
+while [ $k -le "$runs4" ]; do
+  optimize "$tmp/opt$N4-$k" $N4 $(for o in $(mesh $N4); do echo "-s $o"; done)
+  k=$((k + 1))
+done
 
 # ---- the tables and the summary ---------------------------------------------
 tex=$tmp/bench-performance.tex
-awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v nmax="$nmax" -v runs="$runs" \
+awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v nmax="$nmax" -v runs="$runs" -v runs4="$runs4" \
     -v sum="$tmp/summary" '
   # 3 significant digits, no exponent (times from microseconds to minutes)
   function fmt(x,   l, f) {
@@ -90,7 +97,8 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v nmax="$nmax" -v runs="
   file == 1 { n++; for (i = 1; i <= NF; i++) S[n, i] = $i + 0 }
   file == 2 && FNR > 1 && FNR <= runs + 1 { w++; t16 = t16 (w > 1 ? ", " : "") fmt($2)
     if (w == 1 || $2 + 0 < best) { best = $2; for (i = 1; i <= NF; i++) O16[i] = $i } }
-  file == 2 && FNR == runs + 2 { for (i = 1; i <= NF; i++) O4[i] = $i }
+  file == 2 && FNR > runs + 1 { w4++; t4 = t4 (w4 > 1 ? ", " : "") fmt($2)
+    if (w4 == 1 || $2 + 0 < best4) { best4 = $2; for (i = 1; i <= NF; i++) O4[i] = $i } }
   END {
     print "% written by make bench (tests/bench/performance.sh) on " date ", " cores " cores"
     # 1. state solve against CHOLMOD; the targets are at the largest N
@@ -129,9 +137,9 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v nmax="$nmax" -v runs="
     printf "3. optimize Example 5.1, N = 16: %s s, best of %d (target < 0.1 s): %s\n", fmt(O16[2]), runs, verdict(O16[2] + 0 < 0.1, 1) > sum
     title("4. The whole optimisation of Example 5.1 at $N = " O4[1] "$")
     whole(O4, "$< 10$", verdict(O4[2] + 0 < 10, O4[1] == 256))
-    foot("One run, $M = " (O4[1] / 16) "$, $R = " (3 * O4[1] / 16) "$" (O4[1] == 256 ? "" : "; the target is at $N = 256$, not measured (BENCH\\_NMAX $=" nmax "$)") ".")
-    printf "4. optimize Example 5.1, N = %d: %s s, %d iterations, %d evaluations, %s (target < 10 s at N = 256): %s\n",
-      O4[1], fmt(O4[2]), O4[4], O4[5], O4[6], verdict(O4[2] + 0 < 10, O4[1] == 256) > sum
+    foot("The best of " runs4 " runs: " t4 "\\,s; $M = " (O4[1] / 16) "$, $R = " (3 * O4[1] / 16) "$" (O4[1] == 256 ? "" : "; the target is at $N = 256$, not measured (BENCH\\_NMAX $=" nmax "$)") ".")
+    printf "4. optimize Example 5.1, N = %d: %s s, best of %d (%s s), %d iterations, %d evaluations, %s (target < 10 s at N = 256): %s\n",
+      O4[1], fmt(O4[2]), runs4, t4, O4[4], O4[5], O4[6], verdict(O4[2] + 0 < 10, O4[1] == 256) > sum
   }
   function whole(O, target, judged,   stop) {
     stop = O[6]; gsub(/_/, "\\_", stop)
