@@ -1,10 +1,10 @@
-#line 67 "paper/fem.nw"
+#line 69 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
 
-#line 81 "paper/fem.nw"
+#line 83 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st)
@@ -23,7 +23,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, s->side[side].kind, d->unknown);
   
-#line 105 "paper/fem.nw"
+#line 107 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -31,10 +31,10 @@ for (int i = 0; i < m->ncol; i++)
     d->contact[d->nc] = d->unknown[2 * i + 1];
     d->contact_col[d->nc++] = i;
   }
-#line 99 "paper/fem.nw"
+#line 101 "paper/fem.nw"
   return d;
 }
-#line 116 "paper/fem.nw"
+#line 118 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -56,7 +56,7 @@ void fem_dofs_free(Dofs *d)
   free(d->contact_col);
   free(d);
 }
-#line 156 "paper/fem.nw"
+#line 158 "paper/fem.nw"
 Hooke fem_hooke(const Scene *s)
 {
   Hooke H;
@@ -71,12 +71,13 @@ Hooke fem_hooke(const Scene *s)
   D[2][2] = mu;
   return H;
 }
-#line 182 "paper/fem.nw"
-void fem_element_stiffness(const double xy[6], const Hooke *H,
-                           double K[6][6])
+#line 184 "paper/fem.nw"
+/* B of the triangle xy; returns twice its area */
+static double fem_element_B(const double xy[6], double B[3][6])
 {
-  double B[3][6] = {{0}}, area2 = (xy[2] - xy[0]) * (xy[5] - xy[1])
-                                - (xy[4] - xy[0]) * (xy[3] - xy[1]);
+  double area2 = (xy[2] - xy[0]) * (xy[5] - xy[1])
+               - (xy[4] - xy[0]) * (xy[3] - xy[1]);
+  memset(B, 0, 3 * sizeof B[0]);
   for (int k = 0; k < 3; k++) {
     int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
     double gx = (xy[2 * k1 + 1] - xy[2 * k2 + 1]) / area2;
@@ -84,8 +85,15 @@ void fem_element_stiffness(const double xy[6], const Hooke *H,
     B[0][2 * k] = gx; B[1][2 * k + 1] = gy;
     B[2][2 * k] = gy; B[2][2 * k + 1] = gx;
   }
+  return area2;
+}
+
+void fem_element_stiffness(const double xy[6], const Hooke *H,
+                           double K[6][6])
+{
+  double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 199 "paper/fem.nw"
+#line 209 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -95,9 +103,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 195 "paper/fem.nw"
+#line 205 "paper/fem.nw"
 }
-#line 218 "paper/fem.nw"
+#line 228 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
@@ -110,7 +118,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
     int g[6];
     fem_element_dofs(m, d, t, g);
     
-#line 239 "paper/fem.nw"
+#line 249 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -118,14 +126,14 @@ for (int r = 0; r < 6; r++)
       ((int *) T->j)[T->nnz] = g[c];
       ((double *) T->x)[T->nnz++] = 0;
     }
-#line 230 "paper/fem.nw"
+#line 240 "paper/fem.nw"
   }
   cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
   cholmod_free_triplet(&T, cm);
   if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
   return A;
 }
-#line 250 "paper/fem.nw"
+#line 260 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -134,7 +142,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 263 "paper/fem.nw"
+#line 273 "paper/fem.nw"
 static double *fem_entry(cholmod_sparse *A, int r, int c)
 {
   int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
@@ -153,16 +161,16 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     double xy[6], K[6][6];
     int g[6];
     
-#line 290 "paper/fem.nw"
+#line 300 "paper/fem.nw"
 for (int k = 0; k < 3; k++) {
   xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
   xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
 }
-#line 281 "paper/fem.nw"
+#line 291 "paper/fem.nw"
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 297 "paper/fem.nw"
+#line 307 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -172,11 +180,11 @@ for (int r = 0; r < 6; r++)
                           "stiffness: pattern does not match the mesh");
       *a += K[r][c];
     }
-#line 284 "paper/fem.nw"
+#line 294 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 317 "paper/fem.nw"
+#line 327 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -190,7 +198,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b)
     if (s->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &s->side[side], b);
 }
-#line 333 "paper/fem.nw"
+#line 343 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -205,7 +213,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 354 "paper/fem.nw"
+#line 364 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -223,7 +231,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-#line 391 "paper/fem.nw"
+#line 410 "paper/fem.nw"
 /* (Ax)_j: column j is row j, A being stored symmetric */
 static double fem_row_dot(const cholmod_sparse *A, size_t j, const double *x)
 {
@@ -239,15 +247,33 @@ void fem_multiply(const cholmod_sparse *A, const double *x, double *y)
   for (size_t j = 0; j < A->ncol; j++) y[j] = fem_row_dot(A, j, x);
 }
 
-double fem_energy(const cholmod_sparse *A, const double *b, const double *Q)
+double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
+                  const double *b, const double *Q)
 {
-  const int *Ap = A->p, *Ai = A->i;
-  const double *Ax = A->x;
-  long double e = 0;
-  for (size_t j = 0; j < A->ncol; j++) {
-    long double s = 0;
-    for (int p = Ap[j]; p < Ap[j + 1]; p++) s += (long double) Ax[p] * Q[Ai[p]];
-    e += Q[j] * (s / 2 - b[j]);
+  long double U = 0, W = 0;
+  for (int t = 0; t < m->ntri; t++) {
+    double xy[6], B[3][6], q[6];
+    int g[6];
+    
+#line 300 "paper/fem.nw"
+for (int k = 0; k < 3; k++) {
+  xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
+  xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
+}
+#line 433 "paper/fem.nw"
+    fem_element_dofs(m, d, t, g);
+    for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
+    long double area2 = fem_element_B(xy, B), e[3], De;
+    for (int r = 0; r < 3; r++) {
+      e[r] = 0;
+      for (int c = 0; c < 6; c++) e[r] += (long double) B[r][c] * q[c];
+    }
+    for (int r = 0; r < 3; r++) {
+      De = 0;
+      for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
+      U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
+    }
   }
-  return (double) e;
+  for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
+  return (double) (U - W);
 }

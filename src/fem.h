@@ -29,7 +29,9 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st);
 void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b);
-double fem_energy(const cholmod_sparse *A, const double *b, const double *Q);
+/* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
+double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
+                  const double *b, const double *Q);
 void fem_multiply(const cholmod_sparse *A, const double *x, double *y);
 #line 46 "paper/fem.nw"
 #endif

@@ -62,7 +62,7 @@ int model_solve(Model *md, const double *X, Status *st)
   rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
                 &md->report, st);
   md->solved = rc == STATUS_OK;
-  md->energy = fem_energy(md->A, md->b, md->Q);
+  md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
   md->seconds = model_clock() - start;
   return rc;
 }
