@@ -117,9 +117,10 @@ static void weakly_active_node(const char *path, Plane_model model)
   cholmod_finish(&cm);
 }
 
-/* The energy is summed accurately enough that two solvers' states, equal
-   to rounding, give the same E to 1e-15: summed in double, the quadratic
-   form loses about three digits to cancellation (1e-13 apart at N = 256). */
+/* The energy is evaluated accurately enough that two solvers' states,
+   equal to rounding, give the same E to 1e-15: as 1/2 Q'AQ - b'Q in double
+   the quadratic form loses about three digits to cancellation and the
+   rounding of A (1.4e-14 apart here, 1e-13 at N = 256). */
 static void energy_agreement(const char *path, int N)
 {
   Scene s;
