@@ -66,6 +66,56 @@ static void boundary_forces(const Mesh *m, const Hooke *H,
   free(loop);
 }
 
+/* fem_energy, which sums strain energies element by element: exact for a
+   constant strain (1/2 e'De times the area of the body), zero to the
+   square of rounding for the rigid motions (as 1/2 u'Au it would be of
+   the order of rounding itself), and 1/2 u'Au - b'u for any u and b */
+static void energy_checks(const Mesh *m, const Dofs *d, const Hooke *H,
+                          const cholmod_sparse *A, const double grad[4],
+                          Plane_model model)
+{
+  const char *name = model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress";
+  double e[3] = { grad[0], grad[3], grad[1] + grad[2] }, area = 0, U = 0;
+  double *u = malloc(d->n * sizeof *u), *b = calloc(d->n, sizeof *b),
+         *Au = malloc(d->n * sizeof *Au);
+  for (int t = 0; t < m->ntri; t++) {
+    const int *v = m->tri + 3 * t;
+    const double *p = m->xy + 2 * v[0], *q = m->xy + 2 * v[1], *s = m->xy + 2 * v[2];
+    area += 0.5 * ((q[0] - p[0]) * (s[1] - p[1]) - (s[0] - p[0]) * (q[1] - p[1]));
+  }
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) U += 0.5 * e[r] * H->D[r][c] * e[c] * area;
+  for (int k = 0; k < m->nnodes; k++) {
+    double x = m->xy[2 * k], y = m->xy[2 * k + 1];
+    u[2 * k] = 1e-4 + grad[0] * x + grad[1] * y;
+    u[2 * k + 1] = -2e-4 + grad[2] * x + grad[3] * y;
+  }
+  double E = fem_energy(m, d, H, b, u);
+  check(fabs(E - U) <= 1e-13 * U, "%s: the energy of a constant strain is "
+        "1/2 e'De |body| (rel. %.1e)", name, fabs(E - U) / U);
+  double rigid = 0;
+  for (int mode = 0; mode < 3; mode++) {         /* two translations, a rotation */
+    for (int k = 0; k < m->nnodes; k++) {
+      double x = m->xy[2 * k], y = m->xy[2 * k + 1];
+      u[2 * k] = mode == 0 ? 1 : mode == 1 ? 0 : -y;
+      u[2 * k + 1] = mode == 0 ? 0 : mode == 1 ? 1 : x;
+    }
+    rigid = fmax(rigid, fabs(fem_energy(m, d, H, b, u)));
+  }
+  double unit = H->D[0][0] * area;               /* the energy scale of unit strain */
+  check(rigid <= 1e-24 * unit, "%s: rigid motions have zero energy (%.1e of "
+        "the energy of a unit strain)", name, rigid / unit);
+  for (int k = 0; k < d->n; k++) u[k] = 1e-3 * sin(1.7 * k), b[k] = 1e6 * cos(0.3 * k);
+  fem_multiply(A, u, Au);
+  long double ref = 0;
+  for (int k = 0; k < d->n; k++) ref += (0.5L * Au[k] - b[k]) * u[k];
+  E = fem_energy(m, d, H, b, u);
+  check(fabs(E - (double) ref) <= 1e-12 * fabs((double) ref), "%s: fem_energy "
+        "= 1/2 u'Au - b'u for an arbitrary u and b (rel. %.1e)", name,
+        fabs(E - (double) ref) / fabs((double) ref));
+  free(u), free(b), free(Au);
+}
+
 static void patch_test(Plane_model model)
 {
   int N = 16, M = 2, R = 3;
@@ -109,6 +159,7 @@ static void patch_test(Plane_model model)
     check(norm_inf(r, d->n) <= 1e-12 * amax * 4, "%s rigid motion %d has zero stiffness (%.2e)",
           model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", mode, norm_inf(r, d->n) / amax);
   }
+  energy_checks(m, d, &H, A, grad, model);
   free(u); free(r); free(f);
   cholmod_free_sparse(&A, &cm);
   fem_dofs_free(d);
