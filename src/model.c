@@ -107,16 +107,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 209 "paper/model.nw"
-/* A_jj */
-static double diagonal(const cholmod_sparse *A, int j)
-{
-  const int *Ap = A->p, *Ai = A->i;
-  for (int k = Ap[j]; k < Ap[j + 1]; k++)
-    if (Ai[k] == j) return ((const double *) A->x)[k];
-  return 0;
-}
-
+#line 213 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -126,11 +117,8 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
                       "free to move; use optimizer.metric = euclidean");
   double *Scc = malloc((size_t) nc * nc * sizeof *Scc), mean = 0;
   if (!Scc) return status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
-  if ((rc = qp_schur(&md->qp, md->cm, Scc, st))) { free(Scc); return rc; }
-  for (int c = 0; c < nc; c++) {
-    Scc[(size_t) c * nc + c] += 1e-6 * diagonal(md->A, d->contact[c]);
-    mean += Scc[(size_t) c * nc + c] / nc;
-  }
+  if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
+  for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   memset(S, 0, (size_t) N1 * N1 * sizeof *S);
   for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
   for (int c = 0; c < nc; c++)

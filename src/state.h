@@ -51,7 +51,10 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
 double qp_kkt(const Qp *qp, const double *x, double *T);
 
 /* S (nc x nc, row-major, in the order of ic): the Schur complement of A
-   onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc; needs GSL's error
-   handler off (gsl_set_error_handler_off), as the Newton method does. */
-int qp_schur(const Qp *qp, cholmod_common *cm, double *S, Status *st);
+   onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc, with its diagonal
+   raised by shift A_ii (the Schur complement of A with those diagonals
+   raised), at the values the last qp_set read; from the Newton method's
+   own S when it has one.  Needs GSL's error handler off
+   (gsl_set_error_handler_off), as the Newton method does. */
+int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
 #endif

@@ -7,9 +7,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <cholmod.h>
-#include <gsl/gsl_errno.h>
 #include "check.h"
+#include "setup.h"
 #include "scene.h"
 #include "model.h"
 #include "sensitivity.h"
@@ -26,9 +25,7 @@ static void weakly_active(const char *path, Plane_model model)
   Scene s;
   Status st;
   cholmod_common cm;
-  cholmod_start(&cm);
-  gsl_set_error_handler_off();   /* failures come back as codes */
-  cm.print = 0;
+  test_start(&cm);
   if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
   s.model = model;
   Model *md = model_new(&s, &cm, &st);
