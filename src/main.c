@@ -117,7 +117,7 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
   if (!f) return st->code;
   fprintf(f, "# name value\n");
   fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", s->path,
-          scene_state_name(s->state), scene_model_name(s->model));
+          qp_method_name(s->solver.method), scene_model_name(s->model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
           s->N, s->M, s->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
   fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
@@ -163,7 +163,7 @@ static int solve_write(const Args *a, const Scene *s, Model *md,
   if ((rc = output_commit(&o, st))) return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
          "%d of %d contact nodes active, %.3f s -> %s/\n", s->path, md->energy,
-         md->report.kkt, md->report.iterations, scene_state_name(s->state),
+         md->report.kkt, md->report.iterations, qp_method_name(s->solver.method),
          md->report.active, md->dofs->nc, md->seconds, dir);
   return STATUS_OK;
 }
@@ -391,7 +391,7 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
   if (!f) return st->code;
   fprintf(f, "# name value\nscene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
           "model %s\n", s->path, scene_opt_name(s->opt), scene_metric_name(s->metric),
-          scene_state_name(s->state), scene_model_name(s->model));
+          qp_method_name(s->solver.method), scene_model_name(s->model));
   fprintf(f, "N %d\nM %d\nR %d\ninitial_projected %d\ninitial_moved %.6e\n",
           s->N, s->M, s->R, moved > 0, moved);
   fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",

@@ -34,15 +34,14 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   
 #line 99 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
-Qp_options opt = { s->state, s->tol, s->max_iter, s->omega };
-if (!(md->solver = qp_alloc(&md->qp, &opt, cm, st))) {
+if (!(md->solver = qp_alloc(&md->qp, &s->solver, cm, st))) {
   model_free(md);
   return NULL;
 }
 #line 81 "paper/model.nw"
   return md;
 }
-#line 111 "paper/model.nw"
+#line 110 "paper/model.nw"
 static double model_clock(void)
 {
   struct timespec t;
@@ -67,7 +66,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 144 "paper/model.nw"
+#line 143 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -107,7 +106,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 213 "paper/model.nw"
+#line 212 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;

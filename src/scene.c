@@ -1,4 +1,4 @@
-#line 293 "paper/setting.nw"
+#line 290 "paper/setting.nw"
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -8,12 +8,12 @@
 #include <string.h>
 #include <ini.h>
 #include "scene.h"
-#line 313 "paper/setting.nw"
+#line 310 "paper/setting.nw"
 static const char *const geometry_keys[] = {"a", "b", "gamma", NULL};
 static const char *const design_keys[] = {"N", "C0", "C1", "C2", "initial",
   "arc_x1", "arc_x2", "arc_radius", "line_start", "line_end", "constant",
   "file", NULL};
-static const char *const mesh_keys[] = {"M", "R", "C0prime", NULL};
+static const char *const mesh_keys[] = {"M", "R", "C0prime", "refine", NULL};
 static const char *const material_keys[] = {"E", "nu", "model", NULL};
 static const char *const side_keys[] = {"bc", "from", "to", "P1", "P2", NULL};
 static const char *const body_force_keys[] = {"F1", "F2", NULL};
@@ -28,7 +28,7 @@ static const char *const section_names[] = {"geometry", "design", "mesh",
 static const char *const *const section_keys[] = {geometry_keys,
   design_keys, mesh_keys, material_keys, side_keys, side_keys, side_keys,
   body_force_keys, contact_keys, solver_keys, optimizer_keys};
-#line 336 "paper/setting.nw"
+#line 333 "paper/setting.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const bc_names[] = {"free", "clamped", "roller",
   "traction", NULL};
@@ -47,7 +47,7 @@ static const char *const file_keys[] = {"file", NULL};
 static const char *const *const initial_keys[] = {arc_keys, line_keys,
   constant_keys, file_keys};
 static const char *const traction_keys[] = {"from", "to", "P1", "P2", NULL};
-#line 426 "paper/setting.nw"
+#line 418 "paper/setting.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 
 typedef struct {
@@ -56,7 +56,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 440 "paper/setting.nw"
+#line 432 "paper/setting.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -70,13 +70,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 466 "paper/setting.nw"
+#line 458 "paper/setting.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 357 "paper/setting.nw"
+#line 354 "paper/setting.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -85,7 +85,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 369 "paper/setting.nw"
+#line 366 "paper/setting.nw"
 /* buf = the names, comma-separated (truncated to size) */
 static const char *name_list(const char *const *names, char *buf,
                              size_t size)
@@ -98,16 +98,11 @@ static const char *name_list(const char *const *names, char *buf,
                              i ? ", " : "", names[i]);
   return buf;
 }
-#line 385 "paper/setting.nw"
+#line 382 "paper/setting.nw"
 /* the name of entry k of a list of n names, or "?" */
 static const char *enum_name(const char *const *names, int n, int k)
 {
   return k >= 0 && k < n ? names[k] : "?";
-}
-
-const char *scene_state_name(State_method m)
-{
-  return enum_name(state_names, 3, (int)m);
 }
 
 const char *scene_opt_name(Opt_method m)
@@ -129,7 +124,7 @@ const char *scene_bc_name(Bc_kind k)
 {
   return enum_name(bc_names, 4, (int)k);
 }
-#line 474 "paper/setting.nw"
+#line 466 "paper/setting.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -148,7 +143,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 495 "paper/setting.nw"
+#line 487 "paper/setting.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -166,7 +161,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 516 "paper/setting.nw"
+#line 508 "paper/setting.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -186,7 +181,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 545 "paper/setting.nw"
+#line 537 "paper/setting.nw"
 /* e = sec.key = val at L's current origin, if the schema has the names */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -195,7 +190,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   int s = name_index(section_names, sec);
   origin(L, L->override, where, sizeof where);
   
-#line 567 "paper/setting.nw"
+#line 559 "paper/setting.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -205,7 +200,7 @@ if (s < 0)
 if (name_index(section_keys[s], key) < 0)
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, name_list(section_keys[s], list, sizeof list));
-#line 553 "paper/setting.nw"
+#line 545 "paper/setting.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -216,7 +211,7 @@ if (name_index(section_keys[s], key) < 0)
   e->override = L->override;
   return 0;
 }
-#line 579 "paper/setting.nw"
+#line 571 "paper/setting.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -237,7 +232,7 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 619 "paper/setting.nw"
+#line 611 "paper/setting.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -251,7 +246,7 @@ static char *read_line(char *buf, int size, void *user)
   L->line++;
   L->indented = buf[0] == ' ' || buf[0] == '\t';
   
-#line 639 "paper/setting.nw"
+#line 631 "paper/setting.nw"
 if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)) {
   fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
        size - 2);
@@ -262,10 +257,10 @@ if (strlen(buf) < (size_t)n) {
        "not UTF-16)", L->path, L->line);
   return NULL;
 }
-#line 632 "paper/setting.nw"
+#line 624 "paper/setting.nw"
   return buf;
 }
-#line 656 "paper/setting.nw"
+#line 648 "paper/setting.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -276,7 +271,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 673 "paper/setting.nw"
+#line 665 "paper/setting.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -284,18 +279,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 666 "paper/setting.nw"
+#line 658 "paper/setting.nw"
   
-#line 683 "paper/setting.nw"
+#line 675 "paper/setting.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 667 "paper/setting.nw"
+#line 659 "paper/setting.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 695 "paper/setting.nw"
+#line 687 "paper/setting.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -310,18 +305,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 716 "paper/setting.nw"
+#line 708 "paper/setting.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 709 "paper/setting.nw"
+#line 701 "paper/setting.nw"
   L->line = 0;
   return L->failed;
 }
-#line 736 "paper/setting.nw"
+#line 728 "paper/setting.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -332,7 +327,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 749 "paper/setting.nw"
+#line 741 "paper/setting.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -345,7 +340,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 772 "paper/setting.nw"
+#line 764 "paper/setting.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -357,7 +352,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 761 "paper/setting.nw"
+#line 753 "paper/setting.nw"
   free(copy);
   if (L->failed) return L->failed;
   if ((old = find(L, e.sec, e.key))) {
@@ -366,7 +361,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 793 "paper/setting.nw"
+#line 785 "paper/setting.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -378,7 +373,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 808 "paper/setting.nw"
+#line 800 "paper/setting.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -392,7 +387,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 825 "paper/setting.nw"
+#line 817 "paper/setting.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -403,7 +398,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 841 "paper/setting.nw"
+#line 833 "paper/setting.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -423,7 +418,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 864 "paper/setting.nw"
+#line 856 "paper/setting.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -434,7 +429,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 877 "paper/setting.nw"
+#line 869 "paper/setting.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -445,7 +440,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 890 "paper/setting.nw"
+#line 882 "paper/setting.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -456,7 +451,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 905 "paper/setting.nw"
+#line 897 "paper/setting.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -467,7 +462,7 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 924 "paper/setting.nw"
+#line 916 "paper/setting.nw"
 /* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -483,7 +478,7 @@ static int read_geometry(Loader *L, Scene *s)
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 949 "paper/setting.nw"
+#line 941 "paper/setting.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -498,24 +493,29 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 969 "paper/setting.nw"
-/* [mesh]: M, R >= 1, 72 N (M + R) <= INT_MAX, C0 < C0prime < gamma */
+#line 967 "paper/setting.nw"
+/* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
+   refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
-  int rc;
+  int rc, k;
   if ((rc = integer(L, "mesh", "M", REQUIRED, &s->M))) return rc;
   if (s->M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
   if ((rc = integer(L, "mesh", "R", REQUIRED, &s->R))) return rc;
   if (s->R < 1) return blame(L, "must be >= 1 (fixed rows of cells)");
+  if ((rc = integer(L, "mesh", "refine", "1", &k))) return rc;
+  if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 999 "paper/setting.nw"
-if (!(72.0 * s->N * ((double)s->M + s->R) <= INT_MAX))
-  return blame(L, "with design.N = %d and mesh.M = %d the mesh has 2 N "
-               "(M + R) = %.0f triangles, more than INT_MAX / 36 = %d: the "
-               "stiffness matrix has 36 entries a triangle, counted in C "
-               "ints", s->N, s->M, 2.0 * s->N * ((double)s->M + s->R),
-               INT_MAX / 36);
-#line 978 "paper/setting.nw"
+#line 1001 "paper/setting.nw"
+if (!(72.0 * k * s->N * k * ((double)s->M + s->R) <= INT_MAX))
+  return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
+             "with design.N = %d, mesh.M = %d, mesh.R = %d and "
+             "mesh.refine = %d the mesh has 2 N (M + R) = %.0f triangles, "
+             "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
+             "entries a triangle, counted in C ints", s->N, s->M, s->R, k,
+             2.0 * k * s->N * k * ((double)s->M + s->R), INT_MAX / 36);
+#line 979 "paper/setting.nw"
+  s->N *= k, s->M *= k, s->R *= k;
   if ((rc = real(L, "mesh", "C0prime", REQUIRED, &s->C0prime))) return rc;
   if (!(s->C0prime > s->C0))
     return blame(L, "must exceed design.C0 = %g: the moving boundary must "
@@ -525,7 +525,7 @@ if (!(72.0 * s->N * ((double)s->M + s->R) <= INT_MAX))
                "= %g: the fixed part of the mesh needs a height", s->C0prime);
   return 0;
 }
-#line 1029 "paper/setting.nw"
+#line 1032 "paper/setting.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -536,14 +536,14 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->C0 * w);
 }
-#line 1048 "paper/setting.nw"
+#line 1051 "paper/setting.nw"
 /* x_i = a + i (b - a) / N */
 static double node_x(const Scene *s, int i)
 {
   double t = (double)i / s->N;
   return (1 - t) * s->a + t * s->b;
 }
-#line 1061 "paper/setting.nw"
+#line 1064 "paper/setting.nw"
 /* alpha0 = arc_x2 - sqrt(r^2 - (x - arc_x1)^2), the lower half-circle */
 static int fill_arc(Loader *L, Scene *s)
 {
@@ -563,7 +563,7 @@ static int fill_arc(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1084 "paper/setting.nw"
+#line 1087 "paper/setting.nw"
 /* alpha0 linear from line_start at x1 = a to line_end at x1 = b */
 static int fill_line(Loader *L, Scene *s)
 {
@@ -578,7 +578,7 @@ static int fill_line(Loader *L, Scene *s)
   }
   return 0;
 }
-#line 1101 "paper/setting.nw"
+#line 1104 "paper/setting.nw"
 /* alpha0 = constant */
 static int fill_constant(Loader *L, Scene *s)
 {
@@ -588,7 +588,7 @@ static int fill_constant(Loader *L, Scene *s)
   for (i = 0; i <= s->N; i++) s->alpha0[i] = c;
   return 0;
 }
-#line 1115 "paper/setting.nw"
+#line 1118 "paper/setting.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -599,7 +599,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1131 "paper/setting.nw"
+#line 1134 "paper/setting.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -615,7 +615,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1153 "paper/setting.nw"
+#line 1156 "paper/setting.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -640,7 +640,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->N + 1);
   return rc;
 }
-#line 1180 "paper/setting.nw"
+#line 1183 "paper/setting.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -650,7 +650,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1193 "paper/setting.nw"
+#line 1196 "paper/setting.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -662,7 +662,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->alpha0[i], i, node_x(s, i), s->C0prime);
   return 0;
 }
-#line 1210 "paper/setting.nw"
+#line 1213 "paper/setting.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -673,19 +673,19 @@ static int read_initial(Loader *L, Scene *s)
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1229 "paper/setting.nw"
+#line 1232 "paper/setting.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1220 "paper/setting.nw"
+#line 1223 "paper/setting.nw"
   if (!(s->alpha0 = malloc(((size_t)s->N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
                                   "for %d nodes", L->path, s->N + 1);
   if ((rc = fill[k](L, s))) return rc;
   return check_alpha0(L, s);
 }
-#line 1244 "paper/setting.nw"
+#line 1247 "paper/setting.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -702,7 +702,7 @@ static int read_material(Loader *L, Scene *s)
   s->model = (Plane_model)k;
   return 0;
 }
-#line 1270 "paper/setting.nw"
+#line 1273 "paper/setting.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -710,7 +710,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->side[id];
   int rc;
   
-#line 1289 "paper/setting.nw"
+#line 1292 "paper/setting.nw"
 double lo = id == SIDE_TOP ? s->a : s->C0prime;
 double hi = id == SIDE_TOP ? s->b : s->gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -725,7 +725,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1277 "paper/setting.nw"
+#line 1280 "paper/setting.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -734,7 +734,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1307 "paper/setting.nw"
+#line 1310 "paper/setting.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -746,7 +746,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return refuse_keys(L, sec, traction_keys, "bc", bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1328 "paper/setting.nw"
+#line 1331 "paper/setting.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -760,7 +760,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, scene_bc_name(s->side[0].kind),
               scene_bc_name(s->side[1].kind), scene_bc_name(s->side[2].kind));
 }
-#line 1344 "paper/setting.nw"
+#line 1347 "paper/setting.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -769,7 +769,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1363 "paper/setting.nw"
+#line 1366 "paper/setting.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -784,26 +784,31 @@ static int read_loads(Loader *L, Scene *s)
                  "frictionless)");
   return 0;
 }
-#line 1384 "paper/setting.nw"
+#line 1387 "paper/setting.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
+  Qp_options *o = &s->solver, d;
+  char tol[32], max_iter[32], omega[32];
   int rc, k;
   if ((rc = word(L, "solver", "state", "pdas", state_names, &k))) return rc;
-  s->state = (State_method)k;
-  if ((rc = real(L, "solver", "tol", "1e-10", &s->tol))) return rc;
-  if (!(s->tol > 0 && s->tol < 1))
+  d = qp_options_default((Qp_method)k);
+  snprintf(tol, sizeof tol, "%.17g", d.tol);
+  snprintf(max_iter, sizeof max_iter, "%d", d.max_iter);
+  snprintf(omega, sizeof omega, "%.17g", d.omega);
+  o->method = (Qp_method)k;
+  if ((rc = real(L, "solver", "tol", tol, &o->tol))) return rc;
+  if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative residual");
-  if ((rc = integer(L, "solver", "max_iter",
-                    s->state == STATE_PDAS ? "100" : "100000", &s->max_iter)))
+  if ((rc = integer(L, "solver", "max_iter", max_iter, &o->max_iter)))
     return rc;
-  if (s->max_iter < 1) return blame(L, "must be >= 1");
-  if ((rc = real(L, "solver", "omega", "1.5", &s->omega))) return rc;
-  if (!(s->omega > 0 && s->omega < 2))
+  if (o->max_iter < 1) return blame(L, "must be >= 1");
+  if ((rc = real(L, "solver", "omega", omega, &o->omega))) return rc;
+  if (!(o->omega > 0 && o->omega < 2))
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1407 "paper/setting.nw"
+#line 1415 "paper/setting.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -825,7 +830,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (s->opt_max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1438 "paper/setting.nw"
+#line 1446 "paper/setting.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -838,7 +843,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1455 "paper/setting.nw"
+#line 1463 "paper/setting.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -858,7 +863,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1477 "paper/setting.nw"
+#line 1485 "paper/setting.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

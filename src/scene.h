@@ -1,7 +1,8 @@
-#line 196 "paper/setting.nw"
+#line 197 "paper/setting.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"
+#include "state.h"
 
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
@@ -17,7 +18,6 @@ typedef struct {
 } Side;
 
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
-typedef enum { STATE_PDAS, STATE_PSOR, STATE_CGSSOR } State_method;
 typedef enum { OPT_SLSQP, OPT_PROJGRAD } Opt_method;
 typedef enum { METRIC_SCHUR, METRIC_EUCLIDEAN } Opt_metric;
 
@@ -41,11 +41,8 @@ typedef struct {
   /* [body_force]  constant F = (F1, F2), N/m^3 */
   double F[2];
   int has_body_force;  /* F != 0: only then is its load assembled */
-  /* [solver]  the state problem (4.3) */
-  State_method state;
-  double tol;          /* relative KKT residual at which a solve stops */
-  int max_iter;        /* iteration limit of the state solver */
-  double omega;        /* relaxation of PSOR and of the SSOR preconditioner */
+  /* [solver]  the state problem (4.3): method, tol, max_iter, omega */
+  Qp_options solver;
   /* [optimizer]  the shape optimisation (Section 4.4, Algorithm 4.1) */
   Opt_method opt;      /* slsqp (NLopt) or projgrad (Algorithm 4.1) */
   Opt_metric metric;   /* the metric of the design space SLSQP starts in */
@@ -60,7 +57,6 @@ int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st);
 void scene_free(Scene *s);
 /* a printable name of a state method, of a plane model, of a condition */
-const char *scene_state_name(State_method m);
 const char *scene_opt_name(Opt_method m);
 const char *scene_metric_name(Opt_metric m);
 const char *scene_model_name(Plane_model m);

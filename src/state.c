@@ -1,4 +1,4 @@
-#line 145 "paper/state.nw"
+#line 151 "paper/state.nw"
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -7,16 +7,16 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "state.h"
-#line 843 "paper/state.nw"
+#line 859 "paper/state.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 1047 "paper/state.nw"
+#line 1063 "paper/state.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
-#line 1315 "paper/state.nw"
+#line 1331 "paper/state.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 1535 "paper/state.nw"
+#line 1551 "paper/state.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-#line 264 "paper/state.nw"
+#line 270 "paper/state.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -32,7 +32,7 @@ struct Qp_workspace {
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   
-#line 716 "paper/state.nw"
+#line 732 "paper/state.nw"
 cholmod_sparse K;      /* A + D_c: A's pattern (borrowed), own values,
                           stype -1 */
 cholmod_factor *Ls;    /* the symbolic analysis of K, bounded unknowns last */
@@ -53,17 +53,17 @@ cholmod_dense *Lb;     /* n x 1: z = L \ P b */
 char *act;             /* nc: the active set of the next Newton step */
 int condensed;         /* S, f belong to the current values of A and b */
 int warm;              /* the first active set is to be guessed from x0 */
-#line 279 "paper/state.nw"
+#line 285 "paper/state.nw"
   
-#line 1320 "paper/state.nw"
+#line 1336 "paper/state.nw"
 double *p;             /* n: the conjugate direction */
 double *q;             /* n: A p, or A beta in a proportioning step */
 double *z;             /* n: the preconditioned free gradient, or beta */
 double abar;           /* the expansion step length 1.9 / normA */
 int restart;           /* 1: p must restart from z (the face changed) */
-#line 280 "paper/state.nw"
+#line 286 "paper/state.nw"
 };
-#line 344 "paper/state.nw"
+#line 350 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st);
 static int check_options(const Qp_options *opt, Status *st);
@@ -71,18 +71,18 @@ static int alloc_common(Qp_workspace *w, Status *st);
 static int check_pattern(Qp_workspace *w, Status *st);
 static int pdas_alloc(Qp_workspace *w, Status *st);
 static int mprgp_alloc(Qp_workspace *w, Status *st);
-#line 525 "paper/state.nw"
+#line 540 "paper/state.nw"
 static void pdas_set(Qp_workspace *w, int warm);
 static void mprgp_set(Qp_workspace *w);
 static int pdas_step(Qp_workspace *w, Status *st);
 static int psor_sweep(Qp_workspace *w, Status *st);
 static int mprgp_iterate(Qp_workspace *w, Status *st);
-#line 588 "paper/state.nw"
+#line 604 "paper/state.nw"
 static int not_converged(const Qp_workspace *w, Status *st);
 static int count_active(const Qp_workspace *w);
-#line 791 "paper/state.nw"
+#line 807 "paper/state.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st);
-#line 847 "paper/state.nw"
+#line 863 "paper/state.nw"
 static int condense(Qp_workspace *w, Status *st);
 static int newton_solve(Qp_workspace *w);
 static void condensed_forces(Qp_workspace *w);
@@ -94,20 +94,20 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st);
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active);
-#line 915 "paper/state.nw"
+#line 931 "paper/state.nw"
 static void fill_contact_matrix(Qp_workspace *w);
 static void read_trailing_block(Qp_workspace *w);
 static int condensed_load(Qp_workspace *w, Status *st);
 static void schur_complement(Qp_workspace *w);
-#line 1404 "paper/state.nw"
+#line 1420 "paper/state.nw"
 static int proportional(const Qp_workspace *w);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int proportioning_step(Qp_workspace *w, Status *st);
-#line 1486 "paper/state.nw"
+#line 1502 "paper/state.nw"
 static double feasible_step(const Qp_workspace *w);
 static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
-#line 188 "paper/state.nw"
+#line 194 "paper/state.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static double ratio(double num, double den) { return num == 0 ? 0 : num / den; }
 
@@ -120,7 +120,7 @@ static double row_dot(const cholmod_sparse *A, int j, const double *x)
   for (int k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
   return s;
 }
-#line 207 "paper/state.nw"
+#line 213 "paper/state.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 static double kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -135,32 +135,32 @@ static double kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 230 "paper/state.nw"
+#line 236 "paper/state.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 221 "paper/state.nw"
+#line 227 "paper/state.nw"
       c++;
     } else
       rf += r * r;
   }
   
-#line 241 "paper/state.nw"
+#line 247 "paper/state.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(ratio(sqrt(rf), sf), ratio(sqrt(tn), sf)),
                 fmax(ratio(sqrt(inf), su), ratio(ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 226 "paper/state.nw"
+#line 232 "paper/state.nw"
 }
-#line 248 "paper/state.nw"
+#line 254 "paper/state.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return kkt_eval(qp, x, NULL, T);
 }
-#line 287 "paper/state.nw"
+#line 293 "paper/state.nw"
 /* unknown i is off its bound */
 static int is_free(const Qp_workspace *w, int i) { return w->x[i] > w->lo[i]; }
 
@@ -182,7 +182,7 @@ static void matvec(const cholmod_sparse *A, const double *x, double *y)
 {
   for (int j = 0; j < (int) A->ncol; j++) y[j] = row_dot(A, j, x);
 }
-#line 312 "paper/state.nw"
+#line 318 "paper/state.nw"
 /* g = A x - b, then kkt and T at x */
 static void refresh(Qp_workspace *w)
 {
@@ -190,7 +190,7 @@ static void refresh(Qp_workspace *w)
   for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
   w->kkt = kkt_eval(w->qp, w->x, w->g, w->T);
 }
-#line 326 "paper/state.nw"
+#line 332 "paper/state.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -201,12 +201,12 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   w->n = (int) qp->A->ncol, w->nc = qp->nc;
   int code = alloc_common(w, st);
   if (!code) code = check_pattern(w, st);
-  if (!code && opt->method == STATE_PDAS) code = pdas_alloc(w, st);
-  if (!code && opt->method == STATE_CGSSOR) code = mprgp_alloc(w, st);
+  if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
+  if (!code && opt->method == QP_CGSSOR) code = mprgp_alloc(w, st);
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 355 "paper/state.nw"
+#line 361 "paper/state.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -230,22 +230,27 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         (int) A->ncol);
   return check_options(opt, st);
 }
-#line 381 "paper/state.nw"
+#line 387 "paper/state.nw"
+Qp_options qp_options_default(Qp_method method)
+{
+  return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
+}
+#line 396 "paper/state.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
-  if (opt->method != STATE_PDAS && opt->method != STATE_PSOR
-      && opt->method != STATE_CGSSOR)
+  if (opt->method != QP_PDAS && opt->method != QP_PSOR
+      && opt->method != QP_CGSSOR)
     return status_set(st, STATUS_INPUT, "qp_alloc: unknown method %d",
                       (int) opt->method);
   if (!(opt->tol > 0) || opt->max_iter < 1)
     return status_set(st, STATUS_INPUT, "qp_alloc: tol = %g must be positive "
                       "and max_iter = %d at least 1", opt->tol, opt->max_iter);
-  if (opt->method != STATE_PDAS && !(opt->omega > 0 && opt->omega < 2))
+  if (opt->method != QP_PDAS && !(opt->omega > 0 && opt->omega < 2))
     return status_set(st, STATUS_INPUT, "qp_alloc: omega = %g is not in (0, 2)",
                       opt->omega);
   return STATUS_OK;
 }
-#line 400 "paper/state.nw"
+#line 415 "paper/state.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
@@ -260,7 +265,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   for (int c = 0; c < w->nc; c++) w->bnd[w->qp->ic[c]] = c;
   return STATUS_OK;
 }
-#line 422 "paper/state.nw"
+#line 437 "paper/state.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -279,28 +284,28 @@ static int check_pattern(Qp_workspace *w, Status *st)
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
-#line 443 "paper/state.nw"
+#line 458 "paper/state.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
   
-#line 824 "paper/state.nw"
+#line 840 "paper/state.nw"
 free(w->K.x), free(w->act), free(w->tc), free(w->fr);
 free(w->f), free(w->y), free(w->r), free(w->Lcc), free(w->S), free(w->M);
 cholmod_free_factor(&w->Ls, w->cm), cholmod_free_factor(&w->L, w->cm);
 cholmod_free_dense(&w->rhs, w->cm), cholmod_free_dense(&w->sol, w->cm);
 cholmod_free_dense(&w->Lb, w->cm);
 cholmod_free_dense(&w->Y, w->cm), cholmod_free_dense(&w->E, w->cm);
-#line 447 "paper/state.nw"
+#line 462 "paper/state.nw"
   
-#line 1346 "paper/state.nw"
+#line 1362 "paper/state.nw"
 free(w->p), free(w->q), free(w->z);
-#line 448 "paper/state.nw"
+#line 463 "paper/state.nw"
   free(w->bnd), free(w->lo), free(w->d);
   free(w->x), free(w->g), free(w->T);
   free(w);
 }
-#line 463 "paper/state.nw"
+#line 478 "paper/state.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -324,7 +329,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 489 "paper/state.nw"
+#line 504 "paper/state.nw"
 /* b and lo finite; lo expanded to all unknowns */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -339,7 +344,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 508 "paper/state.nw"
+#line 523 "paper/state.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = read_matrix(w, st);
@@ -350,38 +355,39 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   refresh(w);
   if (!isfinite(w->kkt))
     return status_set(st, STATUS_NUMERIC, "qp_set: the starting point is not finite");
-  if (w->opt.method == STATE_PDAS) pdas_set(w, x0 != NULL);
-  if (w->opt.method == STATE_CGSSOR) mprgp_set(w);
+  if (w->opt.method == QP_PDAS) pdas_set(w, x0 != NULL);
+  if (w->opt.method == QP_CGSSOR) mprgp_set(w);
   return STATUS_OK;
 }
-#line 538 "paper/state.nw"
-static const char *method_name(State_method m)
+#line 553 "paper/state.nw"
+const char *qp_method_name(Qp_method m)
 {
-  return m == STATE_PDAS ? "pdas" : m == STATE_PSOR ? "psor" : "cgssor";
+  return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
+       : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
 int qp_iterate(Qp_workspace *w, Status *st)
 {
-  State_method m = w->opt.method;
-  int code = m == STATE_PDAS ? pdas_step(w, st)
-           : m == STATE_PSOR ? psor_sweep(w, st) : mprgp_iterate(w, st);
+  Qp_method m = w->opt.method;
+  int code = m == QP_PDAS ? pdas_step(w, st)
+           : m == QP_PSOR ? psor_sweep(w, st) : mprgp_iterate(w, st);
   w->iter++;
   if (!code && !isfinite(w->kkt))
     code = status_set(st, STATUS_NUMERIC, "%s: NaN or infinity after %d "
-                      "iterations", method_name(m), w->iter);
+                      "iterations", qp_method_name(m), w->iter);
   return code;
 }
 
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 569 "paper/state.nw"
+#line 585 "paper/state.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
   int code = qp_set(w, x0, st);
   if (code) return code;
-  while (!code && (!qp_test(w) || (w->iter == 0 && w->opt.method == STATE_PDAS)))
+  while (!code && (!qp_test(w) || (w->iter == 0 && w->opt.method == QP_PDAS)))
     code = w->iter >= w->opt.max_iter ? not_converged(w, st)
                                       : qp_iterate(w, st);
   memcpy(x, w->x, (size_t) w->n * sizeof *x);
@@ -392,7 +398,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   }
   return code;
 }
-#line 596 "paper/state.nw"
+#line 612 "paper/state.nw"
 /* bounded unknowns at their bound */
 static int count_active(const Qp_workspace *w)
 {
@@ -410,10 +416,10 @@ static const char *hint(const Qp_workspace *w)
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
-    "iteration%s (kkt = %.3g > tol = %.3g)%s", method_name(w->opt.method),
+    "iteration%s (kkt = %.3g > tol = %.3g)%s", qp_method_name(w->opt.method),
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, hint(w));
 }
-#line 739 "paper/state.nw"
+#line 755 "paper/state.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 static void pdas_set(Qp_workspace *w, int warm)
 {
@@ -428,7 +434,7 @@ static int count_act(const Qp_workspace *w)
   for (int c = 0; c < w->nc; c++) m += w->act[c];
   return m;
 }
-#line 763 "paper/state.nw"
+#line 779 "paper/state.nw"
 static int pdas_alloc(Qp_workspace *w, Status *st)
 {
   const cholmod_sparse *A = w->qp->A;
@@ -450,7 +456,7 @@ static int pdas_alloc(Qp_workspace *w, Status *st)
   w->first = w->n - w->nc;
   return analyse_contact_last(w, st);
 }
-#line 795 "paper/state.nw"
+#line 811 "paper/state.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   cholmod_common *cm = w->cm;
@@ -477,7 +483,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
                         "the bounded unknowns last");
   return STATUS_OK;
 }
-#line 861 "paper/state.nw"
+#line 877 "paper/state.nw"
 static int pdas_step(Qp_workspace *w, Status *st)
 {
   int code;
@@ -500,7 +506,7 @@ static int pdas_step(Qp_workspace *w, Status *st)
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 895 "paper/state.nw"
+#line 911 "paper/state.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -509,9 +515,9 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
   "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, hint(w));
-#line 883 "paper/state.nw"
+#line 899 "paper/state.nw"
 }
-#line 922 "paper/state.nw"
+#line 938 "paper/state.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   cholmod_common *cm = w->cm;
@@ -545,7 +551,7 @@ static void fill_contact_matrix(Qp_workspace *w)
       if (Ai[k] == j) Kx[k] += w->d[j];
   }
 }
-#line 963 "paper/state.nw"
+#line 979 "paper/state.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -569,7 +575,7 @@ static void read_trailing_block(Qp_workspace *w)
         w->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
   }
 }
-#line 991 "paper/state.nw"
+#line 1007 "paper/state.nw"
 static void schur_complement(Qp_workspace *w)
 {
   int nc = w->nc;
@@ -584,7 +590,7 @@ static void schur_complement(Qp_workspace *w)
       w->S[(size_t) a * nc + b] = w->S[(size_t) b * nc + a] = v;
     }
 }
-#line 1010 "paper/state.nw"
+#line 1026 "paper/state.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   const double *b = w->qp->b;
@@ -603,7 +609,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 1051 "paper/state.nw"
+#line 1067 "paper/state.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -633,7 +639,7 @@ static int newton_solve(Qp_workspace *w)
   for (int a = 0; a < m; a++) w->y[w->fr[a]] = w->r[a];
   return STATUS_OK;
 }
-#line 1087 "paper/state.nw"
+#line 1103 "paper/state.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   for (int c = 0; c < w->nc; c++) {
@@ -660,7 +666,7 @@ static double condensed_kkt(const Qp_workspace *w)
                   fmax(ratio(sqrt(inf), su), ratio(ratio(comp, sf), su)));
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
-#line 1122 "paper/state.nw"
+#line 1138 "paper/state.nw"
 /* act = { c : T_c + A_ii (lo_c - y_c) > 0 }; 1 if it did not change */
 static int predict_active_set(Qp_workspace *w)
 {
@@ -672,7 +678,7 @@ static int predict_active_set(Qp_workspace *w)
   }
   return same;
 }
-#line 1141 "paper/state.nw"
+#line 1157 "paper/state.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   double *v = w->rhs->x;
@@ -689,7 +695,7 @@ static int expand(Qp_workspace *w, Status *st)
   refresh(w);
   return STATUS_OK;
 }
-#line 1165 "paper/state.nw"
+#line 1181 "paper/state.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   double *v = w->rhs->x;
@@ -715,13 +721,13 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       "(CHOLMOD status %d)", cm->status);
   return STATUS_OK;
 }
-#line 1200 "paper/state.nw"
+#line 1216 "paper/state.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   int nc = w->nc, code = STATUS_OK;
   Qp_workspace *c = NULL;
-  if (w->opt.method != STATE_PDAS || !w->condensed) {
-    Qp_options opt = { STATE_PDAS, 1, 1, 1 };
+  if (w->opt.method != QP_PDAS || !w->condensed) {
+    Qp_options opt = { QP_PDAS, 1, 1, 1 };
     if (!(c = qp_alloc(w->qp, &opt, w->cm, st))) return st->code;
     code = read_matrix(c, st);
     if (!code) code = read_vectors(c, st);
@@ -737,17 +743,17 @@ int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
   qp_free(c);
   return code;
 }
-#line 1224 "paper/state.nw"
+#line 1240 "paper/state.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 static int not_held(const Qp_workspace *w, Status *st, const char *why,
                     int active)
 {
   return status_set(st, STATUS_NUMERIC, "%s: the body is not held (a load "
     "that lifts it off, with nothing else holding it): %s, with %d of %d "
-    "bounds active, at iteration %d", method_name(w->opt.method), why,
+    "bounds active, at iteration %d", qp_method_name(w->opt.method), why,
     active, w->nc, w->iter + 1);
 }
-#line 1253 "paper/state.nw"
+#line 1269 "paper/state.nw"
 /* one projected SOR sweep over all unknowns, then the residual */
 static int psor_sweep(Qp_workspace *w, Status *st)
 {
@@ -759,7 +765,7 @@ static int psor_sweep(Qp_workspace *w, Status *st)
   (void) st;      /* a sweep cannot fail; NaN is caught by qp_iterate */
   return STATUS_OK;
 }
-#line 1328 "paper/state.nw"
+#line 1344 "paper/state.nw"
 static int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1;
@@ -775,7 +781,7 @@ static void mprgp_set(Qp_workspace *w)
   w->abar = MPRGP_ABAR / w->normA;
   w->restart = 1;
 }
-#line 1363 "paper/state.nw"
+#line 1379 "paper/state.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -794,7 +800,7 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 1392 "paper/state.nw"
+#line 1408 "paper/state.nw"
 static int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   int code = proportional(w) ? cg_or_expansion_step(w, st)
@@ -804,7 +810,7 @@ static int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 1410 "paper/state.nw"
+#line 1426 "paper/state.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -818,7 +824,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 1431 "paper/state.nw"
+#line 1447 "paper/state.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -835,7 +841,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   w->restart = 1;
   return STATUS_OK;
 }
-#line 1462 "paper/state.nw"
+#line 1478 "paper/state.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   int n = w->n;
@@ -857,7 +863,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 1492 "paper/state.nw"
+#line 1508 "paper/state.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -867,7 +873,7 @@ static double feasible_step(const Qp_workspace *w)
       af = fmin(af, (w->x[i] - w->lo[i]) / w->p[i]);
   return af;
 }
-#line 1509 "paper/state.nw"
+#line 1525 "paper/state.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -879,7 +885,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, w->z, w->q) / pap;
   for (int i = 0; i < w->n; i++) w->p[i] = w->z[i] - gamma * w->p[i];
 }
-#line 1539 "paper/state.nw"
+#line 1555 "paper/state.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {

@@ -3,7 +3,6 @@
 #define CONTACTOPT_STATE_H
 #include <cholmod.h>
 #include "status.h"
-#include "scene.h"
 
 /* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
    x[ic[c]] >= lo[c], c = 0..nc-1.  A is symmetric positive semidefinite,
@@ -16,8 +15,10 @@ typedef struct {
   const double *lo;        /* nc: their lower bounds, -X_i */
 } Qp;
 
+typedef enum { QP_PDAS, QP_PSOR, QP_CGSSOR } Qp_method;
+
 typedef struct {
-  State_method method;     /* pdas, psor or cgssor */
+  Qp_method method;        /* pdas, psor or cgssor */
   double tol;              /* stop when qp_kkt <= tol */
   int max_iter;            /* fail when not converged after this many */
   double omega;            /* relaxation, 0 < omega < 2 (psor, cgssor) */
@@ -31,6 +32,11 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
+
+/* the defaults: tol 1e-10, max_iter 100 (pdas) or 100000, omega 1.5 */
+Qp_options qp_options_default(Qp_method method);
+/* "pdas", "psor", "cgssor", or "?" */
+const char *qp_method_name(Qp_method method);
 
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,

@@ -28,7 +28,7 @@ typedef struct {
 } Problem;
 
 static cholmod_common cm;
-static const State_method methods[3] = { STATE_PDAS, STATE_PSOR, STATE_CGSSOR };
+static const Qp_method methods[3] = { QP_PDAS, QP_PSOR, QP_CGSSOR };
 static const char *names[3] = { "pdas", "psor", "cgssor" };
 
 /* ---- building problems ---------------------------------------------------- */
@@ -251,7 +251,7 @@ typedef struct {
   Status st;
 } Run;
 
-static Qp_options options(State_method m)
+static Qp_options options(Qp_method m)
 {
   Qp_options o = { m, TOL, 100000, 1.5 };
   return o;
@@ -371,9 +371,9 @@ static void check_warm(Problem *P)
 static void check_warm_pdas(Problem *P)
 {
   double *x = malloc(P->n * sizeof *x);
-  Qp_options o = options(STATE_PSOR);
+  Qp_options o = options(QP_PSOR);
   Run r = run(P, o, NULL, x, NULL);
-  o = options(STATE_PDAS), o.tol = 1e-14;
+  o = options(QP_PDAS), o.tol = 1e-14;
   Run r2 = run(P, o, x, x, NULL);
   check(!r.code && !r2.code && r2.rep.iterations == 1, "%s pdas, tol 1e-14, "
         "warm from psor's solution (kkt %.2g): %d Newton step, kkt %.3g%s",
@@ -386,7 +386,7 @@ static void check_warm_floating(Problem *P)
 {
   double *x = malloc(P->n * sizeof *x);
   for (int i = 0; i < P->n; i++) x[i] = 10;
-  Run r = run(P, options(STATE_PDAS), x, x, NULL);
+  Run r = run(P, options(QP_PDAS), x, x, NULL);
   check(!r.code && r.rep.converged, "%s pdas, warm from a floating start: "
         "converged in %d iterations (%s)", P->name, r.rep.iterations, r.st.msg);
   free(x);
@@ -414,7 +414,7 @@ static void check_not_converged(Problem *P)
           && has(r.st.msg, names[m]) && r.rep.iterations == 1,
           "%s %s, max_iter 1: STATUS_NUMERIC \"%s\"", P->name, names[m], r.st.msg);
   }
-  Qp_options o = options(STATE_PDAS);
+  Qp_options o = options(QP_PDAS);
   o.tol = 1e-300;
   Run r = run(P, o, NULL, x, NULL);
   check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated"),
@@ -445,7 +445,7 @@ static void check_not_held(void)
 /* the input errors of the contract, and NaN in the data */
 static void check_input_errors(Problem *P)
 {
-  Qp_options o = options(STATE_PSOR);
+  Qp_options o = options(QP_PSOR);
   Status st = { STATUS_OK, "" };
   P->A->stype = 1;
   check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
@@ -454,10 +454,10 @@ static void check_input_errors(Problem *P)
   o.omega = 2;
   check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
         "omega = 2 refused: \"%s\"", st.msg);
-  o = options(STATE_PDAS), o.tol = 0;
+  o = options(QP_PDAS), o.tol = 0;
   check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
         "tol = 0 refused: \"%s\"", st.msg);
-  o = options(STATE_PDAS);
+  o = options(QP_PDAS);
   int ic1 = P->ic[1];
   P->ic[1] = P->ic[0];
   check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
@@ -485,7 +485,7 @@ static void check_bad_matrices(void)
 {
   Problem *P = obstacle_1d("unsymmetric", 6, 2);
   Status st = { STATUS_OK, "" };
-  Qp_options o = options(STATE_PDAS);
+  Qp_options o = options(QP_PDAS);
   cholmod_free_sparse(&P->A, &cm);
   P->D[0 * 6 + 3] = 0.5;
   problem_finish(P);

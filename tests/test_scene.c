@@ -121,8 +121,8 @@ static void test_example_5_1(void)
         && s.side[SIDE_TOP].to == 4 && s.side[SIDE_TOP].P[0] == 0
         && s.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
   check(s.F[0] == 0 && s.F[1] == 0 && !s.has_body_force, "5.1: F = 0");
-  check(s.state == STATE_PDAS && s.tol == 1e-10 && s.max_iter == 100
-        && s.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
+  check(s.solver.method == QP_PDAS && s.solver.tol == 1e-10 && s.solver.max_iter == 100
+        && s.solver.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
   check(strcmp(s.initial, "arc") == 0, "5.1: initial = arc");
   check(fabs(s.alpha0[0] - arc(R1, 0)) < 1e-13,
         "5.1: alpha0(0) = R1 - sqrt(R1^2 - 16) = %.17g", s.alpha0[0]);
@@ -164,6 +164,7 @@ static void test_overrides(void)
 {
   const double R1 = 160.025;
   char *m4[] = {"mesh.M=4"}, *n64[] = {"design.N=64"};
+  char *refine4[] = {"mesh.refine=4"};
   char *psor[] = {" solver.state = psor ", "body_force.F2=-7.8e4"};
   Scene s;
   Status st = {STATUS_OK, ""};
@@ -178,9 +179,16 @@ static void test_overrides(void)
           "N = 64 re-samples the arc on 65 nodes");
     scene_free(&s);
   }
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, refine4, &st) == 0
+            && s.N == 64 && s.M == 4 && s.R == 12,
+            "-s mesh.refine=4 makes N, M, R = 64, 4, 12 (from 16, 1, 3)")) {
+    check(fabs(s.alpha0[32] - alpha_at_2) < 1e-16 && s.alpha0[64] == 0,
+          "mesh.refine=4 samples the arc on the 65 refined nodes");
+    scene_free(&s);
+  }
   if (check(scene_load(&s, "data/example-5.1.scene", 2, psor, &st) == 0,
             "-s with blanks around the names: %s", st.msg)) {
-    check(s.state == STATE_PSOR && s.max_iter == 100000,
+    check(s.solver.method == QP_PSOR && s.solver.max_iter == 100000,
           "psor: the default max_iter is 100000");
     check(s.has_body_force && s.F[1] == -7.8e4, "a body force sets has_body_force");
     scene_free(&s);
@@ -313,6 +321,10 @@ static void test_range_errors(void)
               "\nR = 2147483647\n", "mesh.R", "INT_MAX / 36");
   expect_edit("a mesh too large, N = 8 million", "\nN = 16\n",
               "\nN = 8000000\n", "mesh.R", "64000000 triangles");
+  expect_edit("mesh.refine < 1", "\nR = 3\n", "\nR = 3\nrefine = 0\n",
+              "mesh.refine", ">= 1");
+  expect_edit("a mesh too large by its refinement", "\nR = 3\n",
+              "\nR = 3\nrefine = 4000\n", "mesh.refine", "INT_MAX / 36");
   expect_edit("C0 <= 0", "\nC0 = 0.05\n", "\nC0 = 0\n", "design.C0", "> 0");
   expect_edit("C1 < 0", "\nC1 = 0.025\n", "\nC1 = -0.1\n", "design.C1", ">= 0");
   expect_edit("C2 <= 0", "\nC2 = 3.91\n", "\nC2 = 0\n", "design.C2", "> 0");
@@ -439,7 +451,7 @@ static void test_file_and_override_errors(void)
 static void test_names(void)
 {
   check(strcmp(scene_bc_name(BC_ROLLER), "roller") == 0
-        && strcmp(scene_state_name(STATE_CGSSOR), "cgssor") == 0
+        && strcmp(qp_method_name(QP_CGSSOR), "cgssor") == 0
         && strcmp(scene_model_name(MODEL_PLANE_STRAIN), "plane_strain") == 0
         && strcmp(scene_bc_name((Bc_kind)9), "?") == 0,
         "names of conditions, methods, models, and '?' out of range");

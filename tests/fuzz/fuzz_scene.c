@@ -80,8 +80,8 @@ static void check_contract(int rc, const Scene *s, const Status *st)
         || !(s->a < s->b) || !isfinite(s->gamma * (s->b - s->a))
         || !(s->C0 > 0) || !(s->C1 >= 0) || !(s->C2 > 0) || !(s->C0 < s->C0prime)
         || !(s->C0prime < s->gamma) || !(s->E > 0) || !(s->nu > -1)
-        || !(s->nu < 0.5) || !(s->tol > 0 && s->tol < 1)
-        || s->max_iter < 1 || !(s->omega > 0 && s->omega < 2)
+        || !(s->nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
+        || s->solver.max_iter < 1 || !(s->solver.omega > 0 && s->solver.omega < 2)
         || !(s->opt_tol > 0 && s->opt_tol < 1) || s->opt_max_iter < 1
         || strcmp(s->path, path) != 0)
       abort();
@@ -94,7 +94,7 @@ static void check_contract(int rc, const Scene *s, const Status *st)
           && (!(s->side[i].from < s->side[i].to)
               || (s->side[i].P[0] == 0 && s->side[i].P[1] == 0)))
         abort();
-    if (strcmp(scene_state_name(s->state), "?") == 0
+    if (strcmp(qp_method_name(s->solver.method), "?") == 0
         || strcmp(scene_opt_name(s->opt), "?") == 0
         || strcmp(scene_model_name(s->model), "?") == 0)
       abort();
