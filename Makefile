@@ -3,13 +3,13 @@
 # src/ is tangled from them (committed, never edited by hand).
 
 # The parts of the paper, in the order of the argument (the driver first).
-NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
-      paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
-      paper/optimize.nw paper/output.nw paper/main.nw paper/figures.nw \
+NW := paper/contactopt.nw paper/problem.nw paper/mesh.nw paper/fem.nw \
+      paper/state.nw paper/model.nw paper/grad.nw paper/design.nw \
+      paper/opt.nw paper/output.nw paper/main.nw paper/scene.nw paper/figures.nw \
       paper/reproduction.nw paper/stability.nw paper/accuracy.nw paper/closing.nw
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
-MODULES := status scene mesh fem state model sensitivity design optimize output
+MODULES := status problem scene mesh fem state model grad design opt output
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)

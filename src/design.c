@@ -1,17 +1,17 @@
-#line 124 "paper/design.nw"
+#line 150 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design.h"
 
-#line 421 "paper/design.nw"
+#line 447 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
   int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
   double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Group;
-#line 429 "paper/design.nw"
+#line 455 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
@@ -28,22 +28,22 @@ typedef struct {
   double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
 } Work;
-#line 144 "paper/design.nw"
-Design_set design_set(const Scene *s)
+#line 170 "paper/design.nw"
+Design_set design_set(const Problem *p)
 {
   Design_set B;
-  double width = s->b - s->a, slack = 1e-12 * s->gamma * width;
-  B.N = s->N;
-  B.h = width / s->N;
-  B.C0 = s->C0;
-  B.delta = s->C1 * B.h;
-  B.area = s->gamma * width - s->C2;
+  double width = p->b - p->a, slack = 1e-12 * p->gamma * width;
+  B.N = p->N;
+  B.h = width / p->N;
+  B.C0 = p->C0;
+  B.delta = p->C1 * B.h;
+  B.area = p->gamma * width - p->C2;
   if (B.area < 0 && B.area >= -slack) B.area = 0;
   if (B.area > B.C0 * (B.N * B.h) && B.area <= B.C0 * (B.N * B.h) + slack)
     B.area = B.C0 * (B.N * B.h);
   return B;
 }
-#line 161 "paper/design.nw"
+#line 187 "paper/design.nw"
 static double weight(const Design_set *B, int i)
 {
   return i == 0 || i == B->N ? 0.5 * B->h : B->h;
@@ -55,7 +55,7 @@ double design_area(const Design_set *B, const double *X)
   for (int i = 1; i < B->N; i++) sum += X[i];
   return B->h * sum;
 }
-#line 176 "paper/design.nw"
+#line 202 "paper/design.nw"
 double design_violation(const Design_set *B, const double *X)
 {
   double v = 0;
@@ -67,7 +67,7 @@ double design_violation(const Design_set *B, const double *X)
     v = fmax(v, (fabs(X[i + 1] - X[i]) - B->delta) / B->C0);
   return fmax(v, fabs(design_area(B, X) - B->area) / (B->C0 * B->N * B->h));
 }
-#line 231 "paper/design.nw"
+#line 257 "paper/design.nw"
 static void evaluate_g(Work *w, double mu);
 
 static double area_rounding(const Work *w)
@@ -90,7 +90,7 @@ static int find_multiplier(Work *w, Status *st)
   if (B->area <= area_rounding(w)) { evaluate_g(w, hi); return STATUS_OK; }
   return newton_on_pieces(w, lo, hi, st);
 }
-#line 257 "paper/design.nw"
+#line 283 "paper/design.nw"
 static void chain_project(Work *w);
 static double piece_slope(const Work *w);
 
@@ -102,7 +102,7 @@ static void evaluate_g(Work *w, double mu)
   w->g = design_area(w->B, w->X) - w->B->area;
   w->slope = piece_slope(w);
 }
-#line 273 "paper/design.nw"
+#line 299 "paper/design.nw"
 static double piece_slope(const Work *w)
 {
   double slope = 0;
@@ -118,7 +118,7 @@ static double piece_slope(const Work *w)
   }
   return slope;
 }
-#line 311 "paper/design.nw"
+#line 337 "paper/design.nw"
 static int same_piece(const Work *w);
 static void keep_piece(Work *w);
 
@@ -131,31 +131,31 @@ static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
   for (int it = 0; it < limit; it++) {
     evaluate_g(w, mu);
     
-#line 332 "paper/design.nw"
+#line 358 "paper/design.nw"
 if (fabs(w->g) <= area_rounding(w) || (newton && same_piece(w)))
   return STATUS_OK;
-#line 323 "paper/design.nw"
+#line 349 "paper/design.nw"
     
-#line 337 "paper/design.nw"
+#line 363 "paper/design.nw"
 if (w->g > 0) lo = mu; else hi = mu;
 int stalled = fabs(w->g) > 0.5 * g2;
 g2 = g1;
 g1 = fabs(w->g);
 keep_piece(w);
-#line 324 "paper/design.nw"
+#line 350 "paper/design.nw"
     
-#line 346 "paper/design.nw"
+#line 372 "paper/design.nw"
 double mid = lo + 0.5 * (hi - lo);
 if (!(lo < mid && mid < hi)) return STATUS_OK;
 double step = w->slope < 0 ? mu - w->g / w->slope : mid;
 newton = w->slope < 0 && !stalled && lo < step && step < hi;
 mu = newton ? step : mid;
-#line 325 "paper/design.nw"
+#line 351 "paper/design.nw"
   }
   return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
                     "was not found in %d evaluations", limit);
 }
-#line 355 "paper/design.nw"
+#line 381 "paper/design.nw"
 static int same_piece(const Work *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
@@ -166,7 +166,7 @@ static void keep_piece(Work *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 448 "paper/design.nw"
+#line 474 "paper/design.nw"
 static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Group *G, int k)
 {
@@ -178,7 +178,7 @@ static void point_set(Group *G, int k, double x, double d)
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
-#line 463 "paper/design.nw"
+#line 489 "paper/design.nw"
 static void push(Group *G, double x, double d)
 {
   if (G->top == G->cap) {
@@ -196,7 +196,7 @@ static void move_top(Group *from, Group *to)
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
-#line 486 "paper/design.nw"
+#line 512 "paper/design.nw"
 static void rebase(Group *G);
 
 static void add_linear(Group *G, double z, double C0)
@@ -231,7 +231,7 @@ static void chain_project(Work *w)
   identify(w);
   polish(w);
 }
-#line 529 "paper/design.nw"
+#line 555 "paper/design.nw"
 static void rebase(Group *G)
 {
   for (int k = G->bot; k < G->top; k++) {
@@ -241,7 +241,7 @@ static void rebase(Group *G)
   }
   G->s = G->c = G->e = 0;
 }
-#line 543 "paper/design.nw"
+#line 569 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side);
 
 static void step_V(Work *w, double xstar, double z)
@@ -256,7 +256,7 @@ static void step_V(Work *w, double xstar, double z)
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 566 "paper/design.nw"
+#line 592 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -271,7 +271,7 @@ static void cut(Group *G, const Group *other, double bound, double side)
     return;
   }
 }
-#line 591 "paper/design.nw"
+#line 617 "paper/design.nw"
 static double terms(const Group *G, int k)
 {
   return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
@@ -292,7 +292,7 @@ static double argmin_V(Work *w)
   w->M = fmax(w->M, terms(L, L->top - 1) + terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 615 "paper/design.nw"
+#line 641 "paper/design.nw"
 static void backtrack(Work *w)
 {
   double *X = w->X, delta = w->delta;
@@ -300,7 +300,7 @@ static void backtrack(Work *w)
   for (int i = w->n - 1; i > 0; i--)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-#line 649 "paper/design.nw"
+#line 675 "paper/design.nw"
 static void identify(Work *w)
 {
   double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
@@ -314,7 +314,7 @@ static void identify(Work *w)
   for (int i = 0; i < w->n; i++)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 673 "paper/design.nw"
+#line 699 "paper/design.nw"
 static void polish_block(Work *w, int first, int last);
 
 static void polish(Work *w)
@@ -324,7 +324,7 @@ static void polish(Work *w)
     polish_block(w, first, last);
   }
 }
-#line 690 "paper/design.nw"
+#line 716 "paper/design.nw"
 static double block_mean(const Work *w, int first, int last);
 
 static void polish_block(Work *w, int first, int last)
@@ -353,7 +353,7 @@ static double block_mean(const Work *w, int first, int last)
   for (int j = first; j <= last; j++) r += w->Z[j] - w->X[j] - t;
   return t + r / m;
 }
-#line 748 "paper/design.nw"
+#line 774 "paper/design.nw"
 static void range_of_beta(const Work *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -366,7 +366,7 @@ static void range_of_nu(const Work *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 764 "paper/design.nw"
+#line 790 "paper/design.nw"
 static void sweep_forward(Work *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -381,7 +381,7 @@ static void sweep_forward(Work *w)
     w->hi[j] = hi;
   }
 }
-#line 783 "paper/design.nw"
+#line 809 "paper/design.nw"
 static void sweep_backward(const Work *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -400,7 +400,7 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
   }
   m->mu = w->mu;
 }
-#line 810 "paper/design.nw"
+#line 836 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st);
 static int check_point(const Design_set *B, const double *Y,
                        const char *what, Status *st);
@@ -426,7 +426,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   work_free(w);
   return rc;
 }
-#line 841 "paper/design.nw"
+#line 867 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st)
 {
   if (!B || B->N < 1)
@@ -456,7 +456,7 @@ static int check_point(const Design_set *B, const double *Y,
                         "is %g", i, what, Y[i]);
   return STATUS_OK;
 }
-#line 874 "paper/design.nw"
+#line 900 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
@@ -476,7 +476,7 @@ static Work *work_new(const Design_set *B, Status *st)
     return NULL;
   }
   
-#line 906 "paper/design.nw"
+#line 932 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -489,7 +489,7 @@ w->R.d = w->R.x + w->R.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 893 "paper/design.nw"
+#line 919 "paper/design.nw"
   return w;
 }
 
@@ -500,7 +500,7 @@ static void work_free(Work *w)
   free(w->edge);
   free(w);
 }
-#line 921 "paper/design.nw"
+#line 947 "paper/design.nw"
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
 {
   if (check_set(B, st)) return NULL;
@@ -526,14 +526,14 @@ void design_multipliers_free(Design_multipliers *m)
   free(m->lower);
   free(m);
 }
-#line 975 "paper/design.nw"
+#line 1001 "paper/design.nw"
 static double default_step(const Design_set *B, const double *G)
 {
   double Gmax = 0;
   for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
   return Gmax > 0 ? B->C0 / Gmax : 1;
 }
-#line 985 "paper/design.nw"
+#line 1011 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f);
 
 int design_kkt(const Design_set *B, const double *X, const double *G,
@@ -556,10 +556,35 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
   free(Y);
   return rc;
 }
-#line 1010 "paper/design.nw"
+#line 1036 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f)
 {
   for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }
   for (int i = 0; i < m->N; i++) { m->up[i] *= f; m->down[i] *= f; }
   m->mu *= f;
+}
+#line 1054 "paper/design.nw"
+/* alpha0 at x1 by the formula of sh; 0 if the arc does not reach x1 */
+static int shape_at(const Shape *sh, double x1, double t, double *alpha)
+{
+  double d = x1 - sh->centre[0], r = sh->radius;
+  switch (sh->kind) {
+  case SHAPE_ARC:
+    if (!(fabs(d) <= r)) return 0;
+    *alpha = (sh->centre[1] - r) + d * d / (r + sqrt((r - d) * (r + d)));
+    return 1;
+  case SHAPE_LINE: *alpha = (1 - t) * sh->start + t * sh->end; return 1;
+  default: *alpha = sh->value; return 1;
+  }
+}
+
+int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
+{
+  for (int i = 0; i <= p->N; i++)
+    if (!shape_at(sh, problem_node_x(p, i), (double)i / p->N, &X[i]))
+      return status_set(st, STATUS_INPUT, "the arc does not reach node %d "
+                        "(x1 = %g): it lies farther than the radius from the "
+                        "centre", i,
+                        problem_node_x(p, i));
+  return STATUS_OK;
 }

@@ -2,7 +2,7 @@
 #ifndef CONTACTOPT_DESIGN_H
 #define CONTACTOPT_DESIGN_H
 #include "status.h"
-#include "scene.h"
+#include "problem.h"
 
 typedef struct {
   int N;          /* X has N+1 components */
@@ -21,8 +21,18 @@ typedef struct {
   double mu;      /* of h sum (X_i + X_{i+1})/2 - S = 0, free */
 } Design_multipliers;
 
-#line 104 "paper/design.nw"
-Design_set design_set(const Scene *s);
+#line 129 "paper/design.nw"
+typedef enum { SHAPE_ARC, SHAPE_LINE, SHAPE_CONSTANT } Shape_kind;
+typedef struct {
+  Shape_kind kind;
+  double centre[2];  /* SHAPE_ARC: the centre (x1, x2) of the circle, */
+  double radius;     /*   its radius > 0: alpha0 is its lower half */
+  double start, end; /* SHAPE_LINE: alpha0 at x1 = a and at x1 = b */
+  double value;      /* SHAPE_CONSTANT: alpha0 */
+} Shape;
+
+#line 106 "paper/design.nw"
+Design_set design_set(const Problem *p);
 /* h sum_{i<N} (X_i + X_{i+1})/2, the trapezoid rule */
 double design_area(const Design_set *B, const double *X);
 /* largest violation, relative to C0 (area: C0 (b-a)); HUGE_VAL on a NaN */
@@ -37,5 +47,8 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
                double *residual, Status *st);
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st);
 void design_multipliers_free(Design_multipliers *m);
-#line 97 "paper/design.nw"
+#line 143 "paper/design.nw"
+/* X_i = alpha0(x_i), i = 0..N, for the shape sh */
+int design_shape(const Problem *p, const Shape *sh, double *X, Status *st);
+#line 99 "paper/design.nw"
 #endif

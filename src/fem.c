@@ -7,7 +7,7 @@
 #line 83 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
-Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st)
+Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
   Dofs *d = calloc(1, sizeof *d);
   if (!d) { status_set(st, STATUS_SYSTEM, "dofs: out of memory"); return NULL; }
@@ -21,7 +21,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st)
     return NULL;
   }
   for (int side = 0; side < SIDE_COUNT; side++)
-    fem_hold_side(m, side, s->side[side].kind, d->unknown);
+    fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
 #line 107 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
@@ -57,14 +57,14 @@ void fem_dofs_free(Dofs *d)
   free(d);
 }
 #line 158 "paper/fem.nw"
-Hooke fem_hooke(const Scene *s)
+Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
   double (*D)[3] = H.D;
-  double mu = s->E / (2 * (1 + s->nu));
-  double lambda = s->model == MODEL_PLANE_STRAIN
-    ? s->E * s->nu / ((1 + s->nu) * (1 - 2 * s->nu))
-    : s->E * s->nu / (1 - s->nu * s->nu);
+  double mu = p->E / (2 * (1 + p->nu));
+  double lambda = p->model == MODEL_PLANE_STRAIN
+    ? p->E * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
+    : p->E * p->nu / (1 - p->nu * p->nu);
   memset(D, 0, 9 * sizeof D[0][0]);
   D[0][0] = D[1][1] = lambda + 2 * mu;
   D[0][1] = D[1][0] = lambda;
@@ -190,13 +190,13 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b);
 
-void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b)
+void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
 {
   memset(b, 0, d->n * sizeof *b);
-  if (s->has_body_force) fem_add_body_force(m, d, s->F, b);
+  if (p->has_body_force) fem_add_body_force(m, d, p->F, b);
   for (int side = 0; side < SIDE_COUNT; side++)
-    if (s->side[side].kind == BC_TRACTION)
-      fem_add_traction(m, d, side, &s->side[side], b);
+    if (p->side[side].kind == BC_TRACTION)
+      fem_add_traction(m, d, side, &p->side[side], b);
 }
 #line 343 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,

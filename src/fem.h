@@ -3,7 +3,7 @@
 #define CONTACTOPT_FEM_H
 #include <cholmod.h>
 #include "status.h"
-#include "scene.h"
+#include "problem.h"
 #include "mesh.h"
 
 typedef struct {
@@ -19,16 +19,16 @@ typedef struct {
 typedef struct { double D[3][3]; } Hooke;
 
 #line 50 "paper/fem.nw"
-Dofs *fem_dofs_new(const Mesh *m, const Scene *s, Status *st);
+Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
-Hooke fem_hooke(const Scene *s);
+Hooke fem_hooke(const Problem *p);
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st);
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st);
-void fem_load(const Mesh *m, const Dofs *d, const Scene *s, double *b);
+void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);

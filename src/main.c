@@ -9,9 +9,9 @@
 #include "scene.h"
 #include "model.h"
 #include "output.h"
-#include "sensitivity.h"
+#include "grad.h"
 #include "design.h"
-#include "optimize.h"
+#include "opt.h"
 
 #line 30 "paper/main.nw"
 static const char usage_main[] =
@@ -117,9 +117,9 @@ static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
   if (!f) return st->code;
   fprintf(f, "# name value\n");
   fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", s->path,
-          qp_method_name(s->solver.method), scene_model_name(s->model));
+          qp_method_name(s->solver.method), problem_model_name(s->problem.model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
-          s->N, s->M, s->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
+          s->problem.N, s->problem.M, s->problem.R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
   fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
           md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
@@ -173,7 +173,7 @@ static int command_solve(const Args *a, cholmod_common *cm, Status *st)
   Scene s;
   int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
-  Model *md = model_new(&s, cm, st);
+  Model *md = model_new(&s.problem, &s.solver, cm, st);
   if (!md) rc = st->code;
   else if (!(rc = model_solve(md, s.alpha0, st)))
     rc = solve_write(a, &s, md, cm, st);
@@ -210,7 +210,7 @@ static int finite_difference(Model *md, double *X, int i, double s,
 static int best_differences(Model *md, const Scene *s, const double *G,
                             double *best, double *err, Status *st)
 {
-  int n = s->N + 1, rc = STATUS_OK;
+  int n = s->problem.N + 1, rc = STATUS_OK;
   double Gmax = 0, *X = malloc(n * sizeof *X);
   if (!X) return status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
   memcpy(X, s->alpha0, n * sizeof *X);
@@ -219,7 +219,7 @@ static int best_differences(Model *md, const Scene *s, const double *G,
     err[i] = INFINITY;
     for (double step = 1e-2; step >= 1e-6 * 0.999 && !rc; step /= 10) {
       double fd;
-      if ((rc = finite_difference(md, X, i, step * s->C0, &fd, st))) break;
+      if ((rc = finite_difference(md, X, i, step * s->problem.C0, &fd, st))) break;
       double e = fabs(fd - G[i]) / (Gmax > 0 ? Gmax : 1);
       if (e < err[i]) { err[i] = e; best[i] = fd; }
     }
@@ -247,14 +247,14 @@ static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
   char dir[1024];
   Output o;
   int worst = 0, rc;
-  for (int i = 1; i <= s->N; i++) if (err[i] > err[worst]) worst = i;
+  for (int i = 1; i <= s->problem.N; i++) if (err[i] > err[worst]) worst = i;
   output_dir(a, "-gradcheck", dir, sizeof dir);
   if ((rc = output_begin(&o, dir, st))) return rc;
   FILE *f = output_open(&o, "summary.dat", st);
   if (!f) { output_abort(&o); return st->code; }
   fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
              "max_relative_error %.3e\nworst_node %d\n", s->path,
-          scene_model_name(s->model), s->N, md->energy, err[worst], worst);
+          problem_model_name(s->problem.model), s->problem.N, md->energy, err[worst], worst);
   if ((rc = output_close(&o, f, st)) || (rc = write_gradient(&o, md, G, best, err, st))
       || (rc = output_commit(&o, st))) {
     output_abort(&o);
@@ -270,12 +270,12 @@ static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
   Scene s;
   int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
-  Model *md = model_new(&s, cm, st);
-  double *G = malloc(3 * (s.N + 1) * sizeof *G);
+  Model *md = model_new(&s.problem, &s.solver, cm, st);
+  double *G = malloc(3 * (s.problem.N + 1) * sizeof *G);
   if (!md) rc = st->code;
   else if (!G) rc = status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
   else if (!(rc = model_solve(md, s.alpha0, st)) && !(rc = grad_energy(md, G, st))) {
-    double *best = G + s.N + 1, *err = best + s.N + 1;
+    double *best = G + s.problem.N + 1, *err = best + s.problem.N + 1;
     if (!(rc = best_differences(md, &s, G, best, err, st))
         && !(rc = model_solve(md, s.alpha0, st)))
       rc = gradcheck_write(a, &s, md, G, best, err, st);
@@ -321,7 +321,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
 static int feasible_start(const Scene *s, const Design_set *B, double *X,
                           double *moved, Status *st)
 {
-  int n = s->N + 1, rc = STATUS_OK;
+  int n = s->problem.N + 1, rc = STATUS_OK;
   *moved = 0;
   memcpy(X, s->alpha0, n * sizeof *X);
   double v = design_violation(B, X);
@@ -351,7 +351,7 @@ static int write_history(Output *o, const Scene *s, const History *h,
   for (int k = 0; k < h->n; k++, fprintf(f, "\n"))
     for (int i = 0; i < h->ndesign; i++)
       fprintf(f, "%d %d %.10g %.17g\n", h->p[k].iteration, i,
-              s->a + i * (s->b - s->a) / s->N, h->X[(size_t) k * h->ndesign + i]);
+              s->problem.a + i * (s->problem.b - s->problem.a) / s->problem.N, h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
 
@@ -359,8 +359,8 @@ static int write_history(Output *o, const Scene *s, const History *h,
 static int write_multipliers(Output *o, const Scene *s, const Model *md,
                              const double *X, double *mu, Status *st)
 {
-  Design_set B = design_set(s);
-  int n = s->N + 1, rc;
+  Design_set B = design_set(&s->problem);
+  int n = s->problem.N + 1, rc;
   double *G = malloc(n * sizeof *G), residual;
   Design_multipliers *m = design_multipliers_new(&B, st);
   FILE *f = NULL;
@@ -373,8 +373,8 @@ static int write_multipliers(Output *o, const Scene *s, const Model *md,
                "rise(X_i+1-X_i-d<=0) fall(X_i-X_i+1-d<=0); mu = %.15g\n", m->mu);
     for (int i = 0; i < n; i++)
       fprintf(f, "%d %.10g %.17g %.15g %.15g %.15g %.15g %.15g\n", i,
-              s->a + i * B.h, X[i], G[i], m->lower[i], m->upper[i],
-              i < s->N ? m->up[i] : 0.0, i < s->N ? m->down[i] : 0.0);
+              s->problem.a + i * B.h, X[i], G[i], m->lower[i], m->upper[i],
+              i < s->problem.N ? m->up[i] : 0.0, i < s->problem.N ? m->down[i] : 0.0);
     *mu = m->mu;
     rc = output_close(o, f, st);
   }
@@ -390,10 +390,10 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
   FILE *f = output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\nscene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
-          "model %s\n", s->path, scene_opt_name(s->opt), scene_metric_name(s->metric),
-          qp_method_name(s->solver.method), scene_model_name(s->model));
+          "model %s\n", s->path, opt_method_name(s->optimizer.method), opt_metric_name(s->optimizer.metric),
+          qp_method_name(s->solver.method), problem_model_name(s->problem.model));
   fprintf(f, "N %d\nM %d\nR %d\ninitial_projected %d\ninitial_moved %.6e\n",
-          s->N, s->M, s->R, moved > 0, moved);
+          s->problem.N, s->problem.M, s->problem.R, moved > 0, moved);
   fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",
           E0, r->energy, r->iterations, r->evaluations);
   fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
@@ -409,8 +409,8 @@ static int write_opt_summary(Output *o, const Scene *s, const Model *md,
 static int optimize_run(const Scene *s, Model *md, double *X,
                         Output *o, Status *st)
 {
-  Design_set B = design_set(s);
-  History h = { 0, 0, s->N + 1, NULL, NULL, 0 };
+  Design_set B = design_set(&s->problem);
+  History h = { 0, 0, s->problem.N + 1, NULL, NULL, 0 };
   Opt_report r;
   double moved, E0, cv0, mu = 0;
   int rc;
@@ -419,7 +419,7 @@ static int optimize_run(const Scene *s, Model *md, double *X,
     return rc;
   E0 = md->energy;
   cv0 = model_pressure_cv(md);
-  if (!(rc = opt_minimize(md, &B, s, X, monitor, &h, &r, st))) {
+  if (!(rc = opt_minimize(md, &B, &s->optimizer, X, monitor, &h, &r, st))) {
     if (h.failed) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
     else if (!(rc = output_state(o, "final", md, X, st))
              && !(rc = write_history(o, s, &h, st))
@@ -442,8 +442,8 @@ static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
   Output o;
   int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
-  Model *md = model_new(&s, cm, st);
-  double *X = malloc((s.N + 1) * sizeof *X);
+  Model *md = model_new(&s.problem, &s.solver, cm, st);
+  double *X = malloc((s.problem.N + 1) * sizeof *X);
   output_dir(a, "-optimize", dir, sizeof dir);
   if (!md) rc = st->code;
   else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");

@@ -6,19 +6,19 @@
 static void mesh_connect(Mesh *m);
 static void mesh_place_fixed(Mesh *m);
 
-Mesh *mesh_new(const Scene *s, Status *st)
+Mesh *mesh_new(const Problem *p, Status *st)
 {
   Mesh *m = calloc(1, sizeof *m);
   if (!m) { status_set(st, STATUS_SYSTEM, "mesh: out of memory"); return NULL; }
   
 #line 100 "paper/mesh.nw"
-m->N = s->N; m->M = s->M; m->R = s->R;
-m->ncol = s->N + 1;
-m->nrow = s->M + s->R + 1;
+m->N = p->N; m->M = p->M; m->R = p->R;
+m->ncol = p->N + 1;
+m->nrow = p->M + p->R + 1;
 m->nnodes = m->ncol * m->nrow;
-m->ntri = 2 * s->N * (s->M + s->R);
-m->a = s->a; m->b = s->b; m->gamma = s->gamma; m->C0prime = s->C0prime;
-m->h = (s->b - s->a) / s->N;
+m->ntri = 2 * p->N * (p->M + p->R);
+m->a = p->a; m->b = p->b; m->gamma = p->gamma; m->C0prime = p->C0prime;
+m->h = (p->b - p->a) / p->N;
 #line 86 "paper/mesh.nw"
   m->xy = malloc(2 * (size_t) m->nnodes * sizeof *m->xy);
   m->tri = malloc(3 * (size_t) m->ntri * sizeof *m->tri);

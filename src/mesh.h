@@ -2,7 +2,7 @@
 #ifndef CONTACTOPT_MESH_H
 #define CONTACTOPT_MESH_H
 #include "status.h"
-#include "scene.h"
+#include "problem.h"
 
 typedef struct {
   int N, M, R;       /* design intervals, moving rows, fixed rows */
@@ -16,7 +16,7 @@ typedef struct {
 } Mesh;
 
 #line 59 "paper/mesh.nw"
-Mesh *mesh_new(const Scene *s, Status *st);     /* topology, fixed nodes */
+Mesh *mesh_new(const Problem *p, Status *st);     /* topology, fixed nodes */
 int mesh_move(Mesh *m, const double *X, Status *st); /* place nodes for X */
 double mesh_motion(const Mesh *m, int k); /* d x2(node k) / d alpha_i, (4.2) */
 double mesh_area(const Mesh *m, int t);   /* signed area of triangle t */

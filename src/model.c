@@ -1,25 +1,26 @@
-#line 55 "paper/model.nw"
+#line 56 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 67 "paper/model.nw"
-Model *model_new(const Scene *s, cholmod_common *cm, Status *st)
+#line 68 "paper/model.nw"
+Model *model_new(const Problem *p, const Qp_options *solver,
+                 cholmod_common *cm, Status *st)
 {
   Model *md = calloc(1, sizeof *md);
   if (!md) { status_set(st, STATUS_SYSTEM, "model: out of memory"); return NULL; }
-  md->scene = s;
+  md->problem = p;
   md->cm = cm;
-  md->hooke = fem_hooke(s);
-  if (!(md->mesh = mesh_new(s, st)) || !(md->dofs = fem_dofs_new(md->mesh, s, st))
+  md->hooke = fem_hooke(p);
+  if (!(md->mesh = mesh_new(p, st)) || !(md->dofs = fem_dofs_new(md->mesh, p, st))
       || !(md->A = fem_stiffness_new(md->mesh, md->dofs, cm, st))) {
     model_free(md);
     return NULL;
   }
   
-#line 86 "paper/model.nw"
+#line 88 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -30,18 +31,18 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 80 "paper/model.nw"
+#line 82 "paper/model.nw"
   
-#line 99 "paper/model.nw"
+#line 101 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
-if (!(md->solver = qp_alloc(&md->qp, &s->solver, cm, st))) {
+if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 81 "paper/model.nw"
+#line 83 "paper/model.nw"
   return md;
 }
-#line 110 "paper/model.nw"
+#line 112 "paper/model.nw"
 static double model_clock(void)
 {
   struct timespec t;
@@ -56,7 +57,7 @@ int model_solve(Model *md, const double *X, Status *st)
   if ((rc = mesh_move(md->mesh, X, st))
       || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, &md->hooke, st)))
     return rc;
-  fem_load(md->mesh, md->dofs, md->scene, md->b);
+  fem_load(md->mesh, md->dofs, md->problem, md->b);
   for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
   rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
                 &md->report, st);
@@ -66,7 +67,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 143 "paper/model.nw"
+#line 145 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -106,11 +107,11 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 212 "paper/model.nw"
+#line 214 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
-  int nc = d->nc, N1 = md->scene->N + 1, rc;
+  int nc = d->nc, N1 = md->problem->N + 1, rc;
   if (nc == 0)                         /* every contact node held: nothing to see */
     return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
                       "free to move; use optimizer.metric = euclidean");

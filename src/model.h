@@ -3,17 +3,17 @@
 #define CONTACTOPT_MODEL_H
 #include <cholmod.h>
 #include "status.h"
-#include "scene.h"
+#include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 #include "state.h"
 
 typedef struct {
-  const Scene *scene;   /* the problem (not owned) */
+  const Problem *problem; /* the problem (not owned) */
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
   Mesh *mesh;           /* moved to the last design solved */
   Dofs *dofs;           /* unknowns and contact DOFs I */
-  Hooke hooke;          /* Hooke's law of the scene's plane model */
+  Hooke hooke;          /* Hooke's law of the problem's plane model */
   cholmod_sparse *A;    /* A(X), n x n */
   double *b;            /* n: F(X) + P(X) */
   double *lo;           /* nc: the bounds -X_i of the contact DOFs */
@@ -27,7 +27,8 @@ typedef struct {
   int solved;           /* Q holds a state: warm start the next solve */
 } Model;
 
-Model *model_new(const Scene *s, cholmod_common *cm, Status *st);
+Model *model_new(const Problem *p, const Qp_options *solver,
+                 cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
 double model_pressure(const Model *md, int c);
 /* standard deviation over mean of the pressure on the contact zone;

@@ -1,4 +1,4 @@
-#line 290 "paper/setting.nw"
+#line 176 "paper/scene.nw"
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -7,8 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <ini.h>
+#include "design.h"
 #include "scene.h"
-#line 310 "paper/setting.nw"
+#line 197 "paper/scene.nw"
 static const char *const geometry_keys[] = {"a", "b", "gamma", NULL};
 static const char *const design_keys[] = {"N", "C0", "C1", "C2", "initial",
   "arc_x1", "arc_x2", "arc_radius", "line_start", "line_end", "constant",
@@ -28,15 +29,9 @@ static const char *const section_names[] = {"geometry", "design", "mesh",
 static const char *const *const section_keys[] = {geometry_keys,
   design_keys, mesh_keys, material_keys, side_keys, side_keys, side_keys,
   body_force_keys, contact_keys, solver_keys, optimizer_keys};
-#line 333 "paper/setting.nw"
+#line 220 "paper/scene.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
-static const char *const bc_names[] = {"free", "clamped", "roller",
-  "traction", NULL};
-static const char *const model_names[] = {"plane_stress", "plane_strain",
-  NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
-static const char *const opt_names[] = {"slsqp", "projgrad", NULL};
-static const char *const metric_names[] = {"schur", "euclidean", NULL};
 static const char *const initial_names[] = {"arc", "line", "constant",
   "file", NULL};
 static const char *const arc_keys[] = {"arc_x1", "arc_x2", "arc_radius",
@@ -47,7 +42,7 @@ static const char *const file_keys[] = {"file", NULL};
 static const char *const *const initial_keys[] = {arc_keys, line_keys,
   constant_keys, file_keys};
 static const char *const traction_keys[] = {"from", "to", "P1", "P2", NULL};
-#line 418 "paper/setting.nw"
+#line 270 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 
 typedef struct {
@@ -56,7 +51,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 432 "paper/setting.nw"
+#line 284 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -70,13 +65,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 458 "paper/setting.nw"
+#line 310 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 354 "paper/setting.nw"
+#line 235 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -85,7 +80,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 366 "paper/setting.nw"
+#line 247 "paper/scene.nw"
 /* buf = the names, comma-separated (truncated to size) */
 static const char *name_list(const char *const *names, char *buf,
                              size_t size)
@@ -98,33 +93,7 @@ static const char *name_list(const char *const *names, char *buf,
                              i ? ", " : "", names[i]);
   return buf;
 }
-#line 382 "paper/setting.nw"
-/* the name of entry k of a list of n names, or "?" */
-static const char *enum_name(const char *const *names, int n, int k)
-{
-  return k >= 0 && k < n ? names[k] : "?";
-}
-
-const char *scene_opt_name(Opt_method m)
-{
-  return enum_name(opt_names, 2, (int)m);
-}
-
-const char *scene_metric_name(Opt_metric m)
-{
-  return enum_name(metric_names, 2, (int)m);
-}
-
-const char *scene_model_name(Plane_model m)
-{
-  return enum_name(model_names, 2, (int)m);
-}
-
-const char *scene_bc_name(Bc_kind k)
-{
-  return enum_name(bc_names, 4, (int)k);
-}
-#line 466 "paper/setting.nw"
+#line 318 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -143,7 +112,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 487 "paper/setting.nw"
+#line 339 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -161,7 +130,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 508 "paper/setting.nw"
+#line 360 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -181,7 +150,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 537 "paper/setting.nw"
+#line 389 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the schema has the names */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -190,7 +159,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   int s = name_index(section_names, sec);
   origin(L, L->override, where, sizeof where);
   
-#line 559 "paper/setting.nw"
+#line 411 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -200,7 +169,7 @@ if (s < 0)
 if (name_index(section_keys[s], key) < 0)
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, name_list(section_keys[s], list, sizeof list));
-#line 545 "paper/setting.nw"
+#line 397 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -211,7 +180,7 @@ if (name_index(section_keys[s], key) < 0)
   e->override = L->override;
   return 0;
 }
-#line 571 "paper/setting.nw"
+#line 423 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -232,7 +201,7 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 611 "paper/setting.nw"
+#line 463 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -246,7 +215,7 @@ static char *read_line(char *buf, int size, void *user)
   L->line++;
   L->indented = buf[0] == ' ' || buf[0] == '\t';
   
-#line 631 "paper/setting.nw"
+#line 483 "paper/scene.nw"
 if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)) {
   fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
        size - 2);
@@ -257,10 +226,10 @@ if (strlen(buf) < (size_t)n) {
        "not UTF-16)", L->path, L->line);
   return NULL;
 }
-#line 624 "paper/setting.nw"
+#line 476 "paper/scene.nw"
   return buf;
 }
-#line 648 "paper/setting.nw"
+#line 500 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -271,7 +240,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 665 "paper/setting.nw"
+#line 517 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -279,18 +248,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 658 "paper/setting.nw"
+#line 510 "paper/scene.nw"
   
-#line 675 "paper/setting.nw"
+#line 527 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 659 "paper/setting.nw"
+#line 511 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 687 "paper/setting.nw"
+#line 539 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -305,18 +274,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 708 "paper/setting.nw"
+#line 560 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 701 "paper/setting.nw"
+#line 553 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 728 "paper/setting.nw"
+#line 580 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -327,7 +296,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 741 "paper/setting.nw"
+#line 593 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -340,7 +309,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 764 "paper/setting.nw"
+#line 616 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -352,7 +321,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 753 "paper/setting.nw"
+#line 605 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   if ((old = find(L, e.sec, e.key))) {
@@ -361,7 +330,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 785 "paper/setting.nw"
+#line 637 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -373,7 +342,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 800 "paper/setting.nw"
+#line 652 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -387,7 +356,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 817 "paper/setting.nw"
+#line 669 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -398,7 +367,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 833 "paper/setting.nw"
+#line 685 "paper/scene.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -418,7 +387,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 856 "paper/setting.nw"
+#line 708 "paper/scene.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -429,7 +398,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 869 "paper/setting.nw"
+#line 721 "paper/scene.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -440,7 +409,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 882 "paper/setting.nw"
+#line 734 "paper/scene.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -451,7 +420,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 897 "paper/setting.nw"
+#line 749 "paper/scene.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -462,133 +431,123 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 916 "paper/setting.nw"
+#line 768 "paper/scene.nw"
 /* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
   int rc;
-  if ((rc = real(L, "geometry", "a", REQUIRED, &s->a))
-      || (rc = real(L, "geometry", "b", REQUIRED, &s->b)))
+  if ((rc = real(L, "geometry", "a", REQUIRED, &s->problem.a))
+      || (rc = real(L, "geometry", "b", REQUIRED, &s->problem.b)))
     return rc;
-  if (!(s->b > s->a)) return blame(L, "must exceed geometry.a = %g", s->a);
-  if (!isfinite(s->b - s->a))
+  if (!(s->problem.b > s->problem.a)) return blame(L, "must exceed geometry.a = %g", s->problem.a);
+  if (!isfinite(s->problem.b - s->problem.a))
     return blame(L, "the width b - a overflows a double");
-  if ((rc = real(L, "geometry", "gamma", REQUIRED, &s->gamma))) return rc;
-  if (!isfinite(s->gamma * (s->b - s->a)))
+  if ((rc = real(L, "geometry", "gamma", REQUIRED, &s->problem.gamma))) return rc;
+  if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 941 "paper/setting.nw"
+#line 793 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
   int rc;
-  if ((rc = integer(L, "design", "N", REQUIRED, &s->N))) return rc;
-  if (s->N < 1) return blame(L, "must be >= 1 (design intervals)");
-  if ((rc = real(L, "design", "C0", REQUIRED, &s->C0))) return rc;
-  if (!(s->C0 > 0)) return blame(L, "must be > 0 (the bound of alpha)");
-  if ((rc = real(L, "design", "C1", REQUIRED, &s->C1))) return rc;
-  if (!(s->C1 >= 0)) return blame(L, "must be >= 0 (the bound of |alpha'|)");
-  if ((rc = real(L, "design", "C2", REQUIRED, &s->C2))) return rc;
-  if (!(s->C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
+  if ((rc = integer(L, "design", "N", REQUIRED, &s->problem.N))) return rc;
+  if (s->problem.N < 1) return blame(L, "must be >= 1 (design intervals)");
+  if ((rc = real(L, "design", "C0", REQUIRED, &s->problem.C0))) return rc;
+  if (!(s->problem.C0 > 0)) return blame(L, "must be > 0 (the bound of alpha)");
+  if ((rc = real(L, "design", "C1", REQUIRED, &s->problem.C1))) return rc;
+  if (!(s->problem.C1 >= 0)) return blame(L, "must be >= 0 (the bound of |alpha'|)");
+  if ((rc = real(L, "design", "C2", REQUIRED, &s->problem.C2))) return rc;
+  if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 967 "paper/setting.nw"
+#line 819 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
   int rc, k;
-  if ((rc = integer(L, "mesh", "M", REQUIRED, &s->M))) return rc;
-  if (s->M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
-  if ((rc = integer(L, "mesh", "R", REQUIRED, &s->R))) return rc;
-  if (s->R < 1) return blame(L, "must be >= 1 (fixed rows of cells)");
+  if ((rc = integer(L, "mesh", "M", REQUIRED, &s->problem.M))) return rc;
+  if (s->problem.M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
+  if ((rc = integer(L, "mesh", "R", REQUIRED, &s->problem.R))) return rc;
+  if (s->problem.R < 1) return blame(L, "must be >= 1 (fixed rows of cells)");
   if ((rc = integer(L, "mesh", "refine", "1", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1001 "paper/setting.nw"
-if (!(72.0 * k * s->N * k * ((double)s->M + s->R) <= INT_MAX))
+#line 853 "paper/scene.nw"
+if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
              "mesh.refine = %d the mesh has 2 N (M + R) = %.0f triangles, "
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
-             "entries a triangle, counted in C ints", s->N, s->M, s->R, k,
-             2.0 * k * s->N * k * ((double)s->M + s->R), INT_MAX / 36);
-#line 979 "paper/setting.nw"
-  s->N *= k, s->M *= k, s->R *= k;
-  if ((rc = real(L, "mesh", "C0prime", REQUIRED, &s->C0prime))) return rc;
-  if (!(s->C0prime > s->C0))
+             "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
+             2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
+#line 831 "paper/scene.nw"
+  s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
+  if ((rc = real(L, "mesh", "C0prime", REQUIRED, &s->problem.C0prime))) return rc;
+  if (!(s->problem.C0prime > s->problem.C0))
     return blame(L, "must exceed design.C0 = %g: the moving boundary must "
-                 "stay below the fixed part of the mesh", s->C0);
-  if (!(s->gamma > s->C0prime))
+                 "stay below the fixed part of the mesh", s->problem.C0);
+  if (!(s->problem.gamma > s->problem.C0prime))
     return bad(L, find(L, "geometry", "gamma"), "must exceed mesh.C0prime "
-               "= %g: the fixed part of the mesh needs a height", s->C0prime);
+               "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 1032 "paper/setting.nw"
+#line 884 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
-  double w = s->b - s->a, S = s->gamma * w - s->C2;
-  double slack = 1e-12 * s->gamma * w;
-  if (S >= -slack && S <= s->C0 * w + slack) return 0;
+  double w = s->problem.b - s->problem.a, S = s->problem.gamma * w - s->problem.C2;
+  double slack = 1e-12 * s->problem.gamma * w;
+  if (S >= -slack && S <= s->problem.C0 * w + slack) return 0;
   return bad(L, find(L, "design", "C2"), "C0, C1, C2 admit no shape: the "
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
-             "[0, C0 (b-a)] = [0, %g]", S, s->C0 * w);
+             "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1051 "paper/setting.nw"
-/* x_i = a + i (b - a) / N */
-static double node_x(const Scene *s, int i)
+#line 904 "paper/scene.nw"
+/* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
+static int read_arc_shape(Loader *L, Shape *sh)
 {
-  double t = (double)i / s->N;
-  return (1 - t) * s->a + t * s->b;
-}
-#line 1064 "paper/setting.nw"
-/* alpha0 = arc_x2 - sqrt(r^2 - (x - arc_x1)^2), the lower half-circle */
-static int fill_arc(Loader *L, Scene *s)
-{
-  double c1, c2, r, d;
-  int i, rc;
-  if ((rc = real(L, "design", "arc_x1", REQUIRED, &c1))
-      || (rc = real(L, "design", "arc_x2", REQUIRED, &c2))
-      || (rc = real(L, "design", "arc_radius", REQUIRED, &r)))
+  int rc;
+  sh->kind = SHAPE_ARC;
+  if ((rc = real(L, "design", "arc_x1", REQUIRED, &sh->centre[0]))
+      || (rc = real(L, "design", "arc_x2", REQUIRED, &sh->centre[1]))
+      || (rc = real(L, "design", "arc_radius", REQUIRED, &sh->radius)))
     return rc;
-  if (!(r > 0)) return blame(L, "the radius must be > 0");
-  for (i = 0; i <= s->N; i++) {
-    d = node_x(s, i) - c1;
-    if (!(fabs(d) <= r))
-      return blame(L, "the arc does not reach node %d (x1 = %g): "
-                   "|x1 - arc_x1| > arc_radius", i, node_x(s, i));
-    s->alpha0[i] = (c2 - r) + d * d / (r + sqrt((r - d) * (r + d)));
-  }
+  if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1087 "paper/setting.nw"
-/* alpha0 linear from line_start at x1 = a to line_end at x1 = b */
-static int fill_line(Loader *L, Scene *s)
+
+/* the keys of a line: line_start at x1 = a, line_end at x1 = b */
+static int read_line_shape(Loader *L, Shape *sh)
 {
-  double y0, y1, t;
-  int i, rc;
-  if ((rc = real(L, "design", "line_start", REQUIRED, &y0))
-      || (rc = real(L, "design", "line_end", REQUIRED, &y1)))
+  int rc;
+  sh->kind = SHAPE_LINE;
+  if ((rc = real(L, "design", "line_start", REQUIRED, &sh->start)))
     return rc;
-  for (i = 0; i <= s->N; i++) {
-    t = (double)i / s->N;
-    s->alpha0[i] = (1 - t) * y0 + t * y1;
-  }
-  return 0;
+  return real(L, "design", "line_end", REQUIRED, &sh->end);
 }
-#line 1104 "paper/setting.nw"
-/* alpha0 = constant */
-static int fill_constant(Loader *L, Scene *s)
+
+/* the key of a constant */
+static int read_constant_shape(Loader *L, Shape *sh)
 {
-  double c;
-  int i, rc;
-  if ((rc = real(L, "design", "constant", REQUIRED, &c))) return rc;
-  for (i = 0; i <= s->N; i++) s->alpha0[i] = c;
-  return 0;
+  sh->kind = SHAPE_CONSTANT;
+  return real(L, "design", "constant", REQUIRED, &sh->value);
 }
-#line 1118 "paper/setting.nw"
+
+/* alpha0 = the shape of the keys read by read_keys, sampled */
+static int fill_formula(Loader *L, Scene *s,
+                        int (*read_keys)(Loader *, Shape *))
+{
+  Shape sh = {0};
+  Status why = {STATUS_OK, ""};
+  int rc = read_keys(L, &sh);
+  if (!rc && design_shape(&s->problem, &sh, s->alpha0, &why))
+    rc = blame(L, "%s", why.msg);
+  return rc;
+}
+#line 950 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -599,7 +558,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1134 "paper/setting.nw"
+#line 966 "paper/scene.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -611,11 +570,11 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   for (; tok; tok = strtok_r(NULL, " \t\r\n", &save))
     if (to_real(tok, &x))
       return blame(L, "%s line %d: '%s' is not a number", path, lineno, tok);
-  if (*row <= s->N) s->alpha0[*row] = x;
+  if (*row <= s->problem.N) s->alpha0[*row] = x;
   (*row)++;
   return 0;
 }
-#line 1156 "paper/setting.nw"
+#line 988 "paper/scene.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -635,12 +594,12 @@ static int read_shape(Loader *L, Scene *s, const char *path)
     rc = blame(L, "cannot read %s: %s", path, strerror(errno));
   free(line);
   fclose(fp);
-  if (!rc && row != s->N + 1)
+  if (!rc && row != s->problem.N + 1)
     rc = blame(L, "%s has %d rows of values, expected N + 1 = %d", path,
-               row, s->N + 1);
+               row, s->problem.N + 1);
   return rc;
 }
-#line 1183 "paper/setting.nw"
+#line 1015 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -650,69 +609,70 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1196 "paper/setting.nw"
+#line 1028 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
   int i;
-  for (i = 0; i <= s->N; i++)
-    if (!(s->alpha0[i] >= 0 && s->alpha0[i] < s->C0prime))
+  for (i = 0; i <= s->problem.N; i++)
+    if (!(s->alpha0[i] >= 0 && s->alpha0[i] < s->problem.C0prime))
       return bad(L, find(L, "design", "initial"), "alpha0 = %g at node %d "
                  "(x1 = %g) is outside [0, C0prime) = [0, %g)",
-                 s->alpha0[i], i, node_x(s, i), s->C0prime);
+                 s->alpha0[i], i, problem_node_x(&s->problem, i),
+                 s->problem.C0prime);
   return 0;
 }
-#line 1213 "paper/setting.nw"
+#line 1046 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
-  static int (*const fill[])(Loader *, Scene *) = {fill_arc, fill_line,
-    fill_constant, fill_file};
+  static int (*const read_keys[])(Loader *, Shape *) = {read_arc_shape,
+    read_line_shape, read_constant_shape};
   int j, k, rc;
   if ((rc = word(L, "design", "initial", REQUIRED, initial_names, &k)))
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1232 "paper/setting.nw"
+#line 1065 "paper/scene.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1223 "paper/setting.nw"
-  if (!(s->alpha0 = malloc(((size_t)s->N + 1) * sizeof *s->alpha0)))
+#line 1056 "paper/scene.nw"
+  if (!(s->alpha0 = malloc(((size_t)s->problem.N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
-                                  "for %d nodes", L->path, s->N + 1);
-  if ((rc = fill[k](L, s))) return rc;
-  return check_alpha0(L, s);
+                                  "for %d nodes", L->path, s->problem.N + 1);
+  rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
+  return rc ? rc : check_alpha0(L, s);
 }
-#line 1247 "paper/setting.nw"
+#line 1080 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
   int rc, k;
-  if ((rc = real(L, "material", "E", REQUIRED, &s->E))) return rc;
-  if (!(s->E > 0)) return blame(L, "Young's modulus must be > 0");
-  if ((rc = real(L, "material", "nu", REQUIRED, &s->nu))) return rc;
-  if (!(s->nu < 0.5))
+  if ((rc = real(L, "material", "E", REQUIRED, &s->problem.E))) return rc;
+  if (!(s->problem.E > 0)) return blame(L, "Young's modulus must be > 0");
+  if ((rc = real(L, "material", "nu", REQUIRED, &s->problem.nu))) return rc;
+  if (!(s->problem.nu < 0.5))
     return blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
                  "where this displacement method locks");
-  if (!(s->nu > -1)) return blame(L, "nu must be > -1 (stability)");
-  if ((rc = word(L, "material", "model", "plane_stress", model_names, &k)))
+  if (!(s->problem.nu > -1)) return blame(L, "nu must be > -1 (stability)");
+  if ((rc = word(L, "material", "model", "plane_stress", problem_model_names, &k)))
     return rc;
-  s->model = (Plane_model)k;
+  s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1273 "paper/setting.nw"
+#line 1106 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
   const char *sec = side_names[id];
-  Side *d = &s->side[id];
+  Side *d = &s->problem.side[id];
   int rc;
   
-#line 1292 "paper/setting.nw"
-double lo = id == SIDE_TOP ? s->a : s->C0prime;
-double hi = id == SIDE_TOP ? s->b : s->gamma;
+#line 1125 "paper/scene.nw"
+double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
+double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
   "the part of the side the design never moves, [C0prime, gamma]";
 if ((rc = real(L, sec, "from", REQUIRED, &d->from))) return rc;
@@ -725,7 +685,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1280 "paper/setting.nw"
+#line 1113 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -734,33 +694,33 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1310 "paper/setting.nw"
+#line 1143 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
   const char *sec = side_names[id];
   int k, rc;
-  if ((rc = word(L, sec, "bc", "free", bc_names, &k))) return rc;
-  s->side[id].kind = (Bc_kind)k;
+  if ((rc = word(L, sec, "bc", "free", problem_bc_names, &k))) return rc;
+  s->problem.side[id].kind = (Bc_kind)k;
   if (k != BC_TRACTION)
-    return refuse_keys(L, sec, traction_keys, "bc", bc_names[k]);
+    return refuse_keys(L, sec, traction_keys, "bc", problem_bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1331 "paper/setting.nw"
+#line 1164 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
   int id, held = 0;
   for (id = 0; id < SIDE_COUNT; id++)
-    held |= s->side[id].kind == BC_CLAMPED
-      || (s->side[id].kind == BC_ROLLER && id != SIDE_TOP);
+    held |= s->problem.side[id].kind == BC_CLAMPED
+      || (s->problem.side[id].kind == BC_ROLLER && id != SIDE_TOP);
   if (held) return 0;
   return fail(L, "%s: left.bc = %s, right.bc = %s, top.bc = %s: no side "
               "holds u1: frictionless contact cannot stop the body sliding "
-              "(singular problem)", L->path, scene_bc_name(s->side[0].kind),
-              scene_bc_name(s->side[1].kind), scene_bc_name(s->side[2].kind));
+              "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
+              problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1347 "paper/setting.nw"
+#line 1180 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -769,22 +729,22 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1366 "paper/setting.nw"
+#line 1199 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
   int rc;
-  if ((rc = real(L, "body_force", "F1", "0", &s->F[0]))
-      || (rc = real(L, "body_force", "F2", "0", &s->F[1])))
+  if ((rc = real(L, "body_force", "F1", "0", &s->problem.F[0]))
+      || (rc = real(L, "body_force", "F2", "0", &s->problem.F[1])))
     return rc;
-  s->has_body_force = s->F[0] != 0 || s->F[1] != 0;
+  s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   if (!entry(L, "contact", "model", "frictionless")) return L->failed;
   if (strcmp(L->last.val, "frictionless") != 0)
     return blame(L, "only frictionless contact is implemented (accepted: "
                  "frictionless)");
   return 0;
 }
-#line 1387 "paper/setting.nw"
+#line 1220 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -808,29 +768,35 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1415 "paper/setting.nw"
+#line 1248 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
+  Opt_options *o = &s->optimizer, d;
+  char tol[32], max_iter[32];
   int rc, k;
-  if ((rc = word(L, "optimizer", "method", "slsqp", opt_names, &k))) return rc;
-  s->opt = (Opt_method)k;
-  if ((rc = word(L, "optimizer", "metric",
-                 s->opt == OPT_SLSQP ? "schur" : "euclidean", metric_names, &k)))
+  if ((rc = word(L, "optimizer", "method", "slsqp", opt_method_names, &k)))
     return rc;
-  s->metric = (Opt_metric)k;
-  if (s->opt == OPT_PROJGRAD && s->metric == METRIC_SCHUR)
+  d = opt_options_default((Opt_method)k);
+  snprintf(tol, sizeof tol, "%.17g", d.tol);
+  snprintf(max_iter, sizeof max_iter, "%d", d.max_iter);
+  o->method = (Opt_method)k;
+  if ((rc = word(L, "optimizer", "metric", opt_metric_names[d.metric],
+                 opt_metric_names, &k)))
+    return rc;
+  o->metric = (Opt_metric)k;
+  if (o->method == OPT_PROJGRAD && o->metric == OPT_METRIC_SCHUR)
     return blame(L, "schur needs optimizer.method = slsqp: Algorithm 4.1 "
                  "projects in the euclidean metric");
-  if ((rc = real(L, "optimizer", "tol", "1e-6", &s->opt_tol))) return rc;
-  if (!(s->opt_tol > 0 && s->opt_tol < 1))
+  if ((rc = real(L, "optimizer", "tol", tol, &o->tol))) return rc;
+  if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative measure");
-  if ((rc = integer(L, "optimizer", "max_iter", "200", &s->opt_max_iter)))
+  if ((rc = integer(L, "optimizer", "max_iter", max_iter, &o->max_iter)))
     return rc;
-  if (s->opt_max_iter < 1) return blame(L, "must be >= 1");
+  if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1446 "paper/setting.nw"
+#line 1285 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -843,7 +809,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1463 "paper/setting.nw"
+#line 1302 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -863,7 +829,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1485 "paper/setting.nw"
+#line 1324 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

@@ -292,11 +292,11 @@ static void test_properties(void)
 
 static void test_example_51(void)
 {
-  Scene s;
-  memset(&s, 0, sizeof s);
-  s.a = 0; s.b = 4; s.gamma = 1; s.N = 16;
-  s.C0 = 0.05; s.C1 = 0.025; s.C2 = 3.91;
-  Design_set B = design_set(&s);
+  Problem p;
+  memset(&p, 0, sizeof p);
+  p.a = 0; p.b = 4; p.gamma = 1; p.N = 16;
+  p.C0 = 0.05; p.C1 = 0.025; p.C2 = 3.91;
+  Design_set B = design_set(&p);
   check(B.N == 16 && B.h == 0.25 && B.C0 == 0.05
         && fabs(B.delta - 0.00625) < 1e-18 && fabs(B.area - 0.09) < 1e-15,
         "design_set of Example 5.1: N = 16, "

@@ -8,17 +8,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "scene.h"
+#include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-static Scene free_body(int N, int M, int R, Plane_model model)
+static Problem free_body(int N, int M, int R, Plane_model model)
 {
-  Scene s;
-  memset(&s, 0, sizeof s);
-  s.a = 0; s.b = 4; s.gamma = 1; s.N = N; s.M = M; s.R = R;
-  s.C0 = 0.05; s.C0prime = 0.25; s.E = 2.15e11; s.nu = 0.29; s.model = model;
-  return s;                          /* every side free: all DOFs unknowns */
+  Problem p;
+  memset(&p, 0, sizeof p);
+  p.a = 0; p.b = 4; p.gamma = 1; p.N = N; p.M = M; p.R = R;
+  p.C0 = 0.05; p.C0prime = 0.25; p.E = 2.15e11; p.nu = 0.29; p.model = model;
+  return p;                          /* every side free: all DOFs unknowns */
 }
 
 /* an arc-shaped, non-uniform design so that no triangle is a right one */
@@ -119,7 +119,7 @@ static void energy_checks(const Mesh *m, const Dofs *d, const Hooke *H,
 static void patch_test(Plane_model model)
 {
   int N = 16, M = 2, R = 3;
-  Scene s = free_body(N, M, R, model);
+  Problem s = free_body(N, M, R, model);
   Status st = { 0, "" };
   cholmod_common cm;
   cholmod_start(&cm);
@@ -170,7 +170,7 @@ static void patch_test(Plane_model model)
 /* Fig. 5.2a: 128 triangles, 17 contact nodes; orientation; (4.2) */
 static void article_mesh(void)
 {
-  Scene s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
+  Problem s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
   Status st = { 0, "" };
   Mesh *m = mesh_new(&s, &st);
   double X[17];
@@ -213,7 +213,7 @@ static void article_mesh(void)
    the interval ends inside an edge */
 static void traction_load(void)
 {
-  Scene s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
+  Problem s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
   s.side[SIDE_LEFT].kind = BC_CLAMPED;
   s.side[SIDE_TOP] = (Side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
   s.side[SIDE_RIGHT] = (Side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };

@@ -11,7 +11,7 @@
 #include "setup.h"
 #include "scene.h"
 #include "model.h"
-#include "sensitivity.h"
+#include "grad.h"
 
 static double energy(Model *md, double *X)
 {
@@ -27,10 +27,10 @@ static void weakly_active(const char *path, Plane_model model)
   cholmod_common cm;
   test_start(&cm);
   if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
-  s.model = model;
-  Model *md = model_new(&s, &cm, &st);
-  double *X = malloc((s.N + 1) * sizeof *X), *G = malloc((s.N + 1) * sizeof *G);
-  memcpy(X, s.alpha0, (s.N + 1) * sizeof *X);
+  s.problem.model = model;
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
+  double *X = malloc((s.problem.N + 1) * sizeof *X), *G = malloc((s.problem.N + 1) * sizeof *G);
+  memcpy(X, s.alpha0, (s.problem.N + 1) * sizeof *X);
   energy(md, X);
   int i = -1, c = -1;                 /* the last free node before the zone */
   for (int k = 0; k < md->dofs->nc; k++) {
@@ -40,7 +40,7 @@ static void weakly_active(const char *path, Plane_model model)
   }
   if (!check(i >= 0, "%s: a free node next to the contact zone", path)) return;
   double hi = X[i], lo = 0;             /* free at hi, pressing at lo = 0 */
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * s.C0; it++) {
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * s.problem.C0; it++) {
     X[i] = 0.5 * (lo + hi);
     energy(md, X);
     if (md->Q[md->dofs->contact[c]] > -X[i]) hi = X[i]; else lo = X[i];
@@ -50,11 +50,11 @@ static void weakly_active(const char *path, Plane_model model)
   grad_energy(md, G, &st);
   double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0, Gmax = 0;
   for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
-  for (int k = 0; k <= s.N; k++) Gmax = fmax(Gmax, fabs(G[k]));
-  check(gap <= 1e-12 * s.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+  for (int k = 0; k <= s.problem.N; k++) Gmax = fmax(Gmax, fabs(G[k]));
+  check(gap <= 1e-12 * s.problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
         "%s: node %d touches (gap %.1e m) with force %.1e max T: weakly active",
         path, i, gap, fabs(md->T[c]) / Tmax);
-  double x0 = X[i], E0 = md->energy, h = 1e-5 * s.C0, Ep, Ep2, Em, Em2;
+  double x0 = X[i], E0 = md->energy, h = 1e-5 * s.problem.C0, Ep, Ep2, Em, Em2;
   X[i] = x0 + h; Ep = energy(md, X);
   X[i] = x0 + 2 * h; Ep2 = energy(md, X);
   X[i] = x0 - h; Em = energy(md, X);

@@ -23,7 +23,7 @@ static Model *solve_cold(Scene *s, Qp_method m, const double *X,
   double tol = s->solver.tol;            /* the test's own, kept */
   s->solver = qp_options_default(m);
   s->solver.tol = tol;
-  Model *md = model_new(s, cm, st);
+  Model *md = model_new(&s->problem, &s->solver, cm, st);
   if (md && model_solve(md, X, st)) { model_free(md); md = NULL; }
   return md;
 }
@@ -41,7 +41,7 @@ static int weakly_active(Model *md, const Scene *s, double *X, int *i, int *c)
   }
   if (*i < 0) return 0;
   double hi = X[*i], lo = 0;          /* free at hi, pressing at lo = 0 */
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * s->C0; it++) {
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * s->problem.C0; it++) {
     X[*i] = 0.5 * (lo + hi);
     if (model_solve(md, X, &st)) return 0;
     if (md->Q[md->dofs->contact[*c]] > -X[*i]) hi = X[*i]; else lo = X[*i];
@@ -85,24 +85,24 @@ static void weakly_active_node(const char *path, Plane_model model)
   cholmod_common cm;
   test_start(&cm);
   if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
-  s.model = model;
+  s.problem.model = model;
   s.solver.tol = 1e-11;
-  const char *mname = scene_model_name(model);
-  double *X = malloc((s.N + 1) * sizeof *X);
-  memcpy(X, s.alpha0, (s.N + 1) * sizeof *X);
+  const char *mname = problem_model_name(model);
+  double *X = malloc((s.problem.N + 1) * sizeof *X);
+  memcpy(X, s.alpha0, (s.problem.N + 1) * sizeof *X);
   Model *md = solve_cold(&s, QP_PDAS, X, &cm, &st);
   int i = -1, c = -1;
   if (check(md && weakly_active(md, &s, X, &i, &c), "%s %s: a weakly active "
             "design found by bisection (pdas warm starts throughout)", path, mname)) {
     double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0;
     for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
-    check(fabs(gap) <= 1e-12 * s.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+    check(fabs(gap) <= 1e-12 * s.problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
           "%s %s: node %d touches (gap %.1e m) with force %.1e max T", path,
           mname, i, gap, fabs(md->T[c]) / Tmax);
     char tag[600];
     double x0 = X[i];
     for (int side = -1; side <= 1; side++) {
-      X[i] = x0 + side * 1e-9 * s.C0;
+      X[i] = x0 + side * 1e-9 * s.problem.C0;
       snprintf(tag, sizeof tag, "%s %s, node %d %s", path, mname, i,
                side < 0 ? "pressed by 1e-9 C0" : side > 0 ? "lifted by 1e-9 C0"
                : "weakly active");

@@ -67,7 +67,7 @@ static void compare(const char *path, int N, Qp_method state)
   test_start(&cm);
   if (!check(load_refined(&s, path, N / 16, &st) == 0, "load %s", path)) return;
   s.solver = qp_options_default(state);
-  Model *md = model_new(&s, &cm, &st);
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
   int n1 = N + 1, nc = md->dofs->nc;
   double *S = malloc((size_t) n1 * n1 * sizeof *S), err = 0, scale = 0;
   const char *sn = qp_method_name(state);
@@ -100,7 +100,7 @@ static void floating(void)
   cholmod_common cm;
   test_start(&cm);
   if (!check(scene_load(&s, "tests/scenes/flat-punch.scene", 0, NULL, &st) == 0, "load flat punch")) return;
-  Model *md = model_new(&s, &cm, &st);
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
   model_solve(md, s.alpha0, &st);
   gsl_matrix *S = dense_schur(md, 0);
   int nc = md->dofs->nc;

@@ -1,4 +1,4 @@
-/* test_scene.c: the scene module (paper/setting.nw).  The shipped scenes
+/* test_scene.c: the scene module (paper/scene.nw).  The shipped scenes
    load with the article's values; overrides apply; every documented error
    is provoked once, in a small scene written to a temporary directory, and
    must give status 2, leave nothing allocated, and tell one line naming the
@@ -109,18 +109,18 @@ static void test_example_5_1(void)
   Status st = {STATUS_OK, ""};
   int rc = scene_load(&s, "data/example-5.1.scene", 0, NULL, &st), i, mono = 1;
   if (!check(rc == 0, "example 5.1 loads: %s", st.msg)) return;
-  check(s.a == 0 && s.b == 4 && s.gamma == 1, "5.1: a = 0, b = 4, gamma = 1");
-  check(s.N == 16 && s.C0 == 0.05 && s.C1 == 0.025 && s.C2 == 3.91,
+  check(s.problem.a == 0 && s.problem.b == 4 && s.problem.gamma == 1, "5.1: a = 0, b = 4, gamma = 1");
+  check(s.problem.N == 16 && s.problem.C0 == 0.05 && s.problem.C1 == 0.025 && s.problem.C2 == 3.91,
         "5.1: N = 16, C0 = 0.05, C1 = 0.025, C2 = 3.91");
-  check(s.M == 1 && s.R == 3 && s.C0prime == 0.25, "5.1: M = 1, R = 3, C0' = 0.25");
-  check(s.E == 2.15e11 && s.nu == 0.29 && s.model == MODEL_PLANE_STRESS,
+  check(s.problem.M == 1 && s.problem.R == 3 && s.problem.C0prime == 0.25, "5.1: M = 1, R = 3, C0' = 0.25");
+  check(s.problem.E == 2.15e11 && s.problem.nu == 0.29 && s.problem.model == MODEL_PLANE_STRESS,
         "5.1: E = 2.15e11, nu = 0.29, plane stress");
-  check(s.side[SIDE_LEFT].kind == BC_CLAMPED
-        && s.side[SIDE_RIGHT].kind == BC_ROLLER, "5.1: left clamped, right roller");
-  check(s.side[SIDE_TOP].kind == BC_TRACTION && s.side[SIDE_TOP].from == 2
-        && s.side[SIDE_TOP].to == 4 && s.side[SIDE_TOP].P[0] == 0
-        && s.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
-  check(s.F[0] == 0 && s.F[1] == 0 && !s.has_body_force, "5.1: F = 0");
+  check(s.problem.side[SIDE_LEFT].kind == BC_CLAMPED
+        && s.problem.side[SIDE_RIGHT].kind == BC_ROLLER, "5.1: left clamped, right roller");
+  check(s.problem.side[SIDE_TOP].kind == BC_TRACTION && s.problem.side[SIDE_TOP].from == 2
+        && s.problem.side[SIDE_TOP].to == 4 && s.problem.side[SIDE_TOP].P[0] == 0
+        && s.problem.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
+  check(s.problem.F[0] == 0 && s.problem.F[1] == 0 && !s.problem.has_body_force, "5.1: F = 0");
   check(s.solver.method == QP_PDAS && s.solver.tol == 1e-10 && s.solver.max_iter == 100
         && s.solver.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
   check(strcmp(s.initial, "arc") == 0, "5.1: initial = arc");
@@ -148,7 +148,7 @@ static void test_example_5_2(void)
             "example 5.2 loads: %s", st.msg)) {
     for (i = 0; i <= 16; i++) ok &= fabs(s.alpha0[i] - 0.0125 * (i * 0.25)) < 1e-16;
     check(ok && s.alpha0[16] == 0.05, "5.2: alpha0 = 0.0125 x1 at the 17 nodes");
-    check(s.C2 == 3.91 && s.side[SIDE_TOP].P[1] == -5.75e8, "5.2: the rest as 5.1");
+    check(s.problem.C2 == 3.91 && s.problem.side[SIDE_TOP].P[1] == -5.75e8, "5.2: the rest as 5.1");
     scene_free(&s);
   }
   if (check(scene_load(&s, "data/example-5.2-flat.scene", 0, NULL, &st) == 0,
@@ -169,10 +169,10 @@ static void test_overrides(void)
   Scene s;
   Status st = {STATUS_OK, ""};
   if (check(scene_load(&s, "data/example-5.1.scene", 1, m4, &st) == 0
-            && s.M == 4 && s.R == 3 && s.N == 16, "-s mesh.M=4 sets M = 4"))
+            && s.problem.M == 4 && s.problem.R == 3 && s.problem.N == 16, "-s mesh.M=4 sets M = 4"))
     scene_free(&s);
   if (check(scene_load(&s, "data/example-5.1.scene", 1, n64, &st) == 0
-            && s.N == 64, "-s design.N=64 sets N = 64")) {
+            && s.problem.N == 64, "-s design.N=64 sets N = 64")) {
     check(s.alpha0[64] == 0
           && fabs(s.alpha0[32] - alpha_at_2) < 1e-16
           && fabs(s.alpha0[0] - arc(R1, 0)) < 1e-13,
@@ -180,7 +180,7 @@ static void test_overrides(void)
     scene_free(&s);
   }
   if (check(scene_load(&s, "data/example-5.1.scene", 1, refine4, &st) == 0
-            && s.N == 64 && s.M == 4 && s.R == 12,
+            && s.problem.N == 64 && s.problem.M == 4 && s.problem.R == 12,
             "-s mesh.refine=4 makes N, M, R = 64, 4, 12 (from 16, 1, 3)")) {
     check(fabs(s.alpha0[32] - alpha_at_2) < 1e-16 && s.alpha0[64] == 0,
           "mesh.refine=4 samples the arc on the 65 refined nodes");
@@ -190,7 +190,7 @@ static void test_overrides(void)
             "-s with blanks around the names: %s", st.msg)) {
     check(s.solver.method == QP_PSOR && s.solver.max_iter == 100000,
           "psor: the default max_iter is 100000");
-    check(s.has_body_force && s.F[1] == -7.8e4, "a body force sets has_body_force");
+    check(s.problem.has_body_force && s.problem.F[1] == -7.8e4, "a body force sets has_body_force");
     scene_free(&s);
   }
 }
@@ -450,11 +450,17 @@ static void test_file_and_override_errors(void)
 
 static void test_names(void)
 {
-  check(strcmp(scene_bc_name(BC_ROLLER), "roller") == 0
+  check(strcmp(problem_bc_name(BC_ROLLER), "roller") == 0
         && strcmp(qp_method_name(QP_CGSSOR), "cgssor") == 0
-        && strcmp(scene_model_name(MODEL_PLANE_STRAIN), "plane_strain") == 0
-        && strcmp(scene_bc_name((Bc_kind)9), "?") == 0,
+        && strcmp(problem_model_name(MODEL_PLANE_STRAIN), "plane_strain") == 0
+        && strcmp(problem_bc_name((Bc_kind)9), "?") == 0
+        && strcmp(opt_method_name(OPT_PROJGRAD), "projgrad") == 0
+        && strcmp(opt_metric_name((Opt_metric)-1), "?") == 0,
         "names of conditions, methods, models, and '?' out of range");
+  Problem p = {0};
+  p.a = -0.3; p.b = 0.7; p.N = 3;
+  check(problem_node_x(&p, 0) == -0.3 && problem_node_x(&p, 3) == 0.7,
+        "the end nodes are a and b exactly (a = -0.3, b = 0.7, N = 3)");
 }
 
 int main(void)

@@ -40,7 +40,7 @@
 #include <gsl/gsl_errno.h>
 #include "scene.h"
 #include "model.h"
-#include "sensitivity.h"
+#include "grad.h"
 #include "design.h"
 
 static double now(void)
@@ -138,7 +138,7 @@ static Model *measure_cold(const Scene *s, cholmod_common *cm, Times *T)
   for (int k = 0; k < 10 && (k == 0 || spent < 1.0); k++) {
     model_free(md);
     double t = now(), setup, cold;
-    if (!(md = model_new(s, cm, &st))) die("model_new", st.msg);
+    if (!(md = model_new(&s->problem, &s->solver, cm, &st))) die("model_new", st.msg);
     setup = now() - t;
     cold = timed_solve(md, s->alpha0, &T->cold_steps);
     if (k == 0) T->rss = maxrss_mib();    /* before CHOLMOD's own factor */
@@ -156,8 +156,8 @@ static Model *measure_cold(const Scene *s, cholmod_common *cm, Times *T)
 static void measure_warm(const Scene *s, Model *md, Times *T)
 {
   Status st;
-  Design_set B = design_set(s);
-  int n = s->N + 1, steps;
+  Design_set B = design_set(&s->problem);
+  int n = s->problem.N + 1, steps;
   double *X1 = malloc(n * sizeof *X1), *X2 = malloc(n * sizeof *X2),
          *G = malloc(n * sizeof *G), gmax = 0, spent = 0;
   if (!X1 || !X2 || !G) die("malloc", "out of memory");
@@ -166,7 +166,7 @@ static void measure_warm(const Scene *s, Model *md, Times *T)
   T->grad = timed_gradient(md, G);
   for (int i = 0; i < n; i++) gmax = fmax(gmax, fabs(G[i]));
   if (!(gmax > 0)) die("grad_energy", "zero gradient: no direction to step in");
-  for (int i = 0; i < n; i++) G[i] = X1[i] - 1e-3 * s->C0 / gmax * G[i];
+  for (int i = 0; i < n; i++) G[i] = X1[i] - 1e-3 * s->problem.C0 / gmax * G[i];
   if (design_project(&B, G, X2, NULL, &st)) die("design_project", st.msg);
   T->warm = HUGE_VAL;
   for (int k = 0; k < 10 && (k == 0 || spent < 1.0); k++) {
@@ -192,7 +192,7 @@ int main(int argc, char **argv)
   Model *md = measure_cold(&s, &cm, &T);
   measure_warm(&s, md, &T);
   printf("%d %d %.6f %.6f %d %.6f %.6f %.3f %.1f %.6f %d %.3e %.4f %.1e\n",
-         s.N, (int) md->A->nrow, T.setup, T.cold, T.cold_steps, T.analyse,
+         s.problem.N, (int) md->A->nrow, T.setup, T.cold, T.cold_steps, T.analyse,
          T.factor_solve, (T.setup + T.cold) / (T.analyse + T.factor_solve),
          T.rss, T.warm, T.warm_steps, T.grad, T.grad / T.warm, T.residual);
   model_free(md);

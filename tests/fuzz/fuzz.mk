@@ -22,7 +22,7 @@ FUZZ_DIR     := build/fuzz
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_CFLAGS  := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
                 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-                -fno-omit-frame-pointer -Isrc
+                -fno-omit-frame-pointer -I/usr/include/suitesparse -Isrc
 # a value that broke the contract aborts; so does any UB (no recovery)
 FUZZ_ENV     := UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                 ASAN_OPTIONS=detect_leaks=1
@@ -41,11 +41,13 @@ fuzz-replay: $(FUZZ_DIR)/fuzz_scene
 	@mkdir -p $(FUZZ_DIR)/crashes
 	$(FUZZ_ENV) $< $(FUZZ_RUN) tests/fuzz/corpus/* $(wildcard tests/scenes/fuzz-*.scene)
 
-$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c src/scene.c src/status.c \
-                        src/scene.h src/status.h | fuzz-deps
+# The scene adapter reads the modules' defaults and samples the initial
+# shape with the design module, so the fuzzer links every module.
+$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(MODULES:%=src/%.c) \
+                        $(MODULES:%=src/%.h) | fuzz-deps
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c src/scene.c \
-	  src/status.c -linih -lm
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c \
+	  $(MODULES:%=src/%.c) $(LDLIBS)
 
 fuzz-deps:
 	@missing=$$(for p in $(FUZZ_PACKAGES); do \

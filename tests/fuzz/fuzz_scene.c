@@ -1,5 +1,5 @@
 /* fuzz_scene.c: libFuzzer harness for the scene parser and validator
-   (scene_load, paper/setting.nw).  Built and run by `make fuzz` (rules in
+   (scene_load, paper/scene.nw).  Built and run by `make fuzz` (rules in
    tests/fuzz/fuzz.mk) with AddressSanitizer, UBSan and LeakSanitizer.
 
    An input is the text of a scene file, optionally followed by a line
@@ -74,29 +74,29 @@ static void check_contract(int rc, const Scene *s, const Status *st)
 {
   int i;
   if (rc == STATUS_OK) {
-    if (binary || st->code != STATUS_OK || !s->alpha0 || s->N < 1
-        || s->M < 1 || s->R < 1
-        || !(72.0 * s->N * ((double)s->M + s->R) <= INT_MAX)
-        || !(s->a < s->b) || !isfinite(s->gamma * (s->b - s->a))
-        || !(s->C0 > 0) || !(s->C1 >= 0) || !(s->C2 > 0) || !(s->C0 < s->C0prime)
-        || !(s->C0prime < s->gamma) || !(s->E > 0) || !(s->nu > -1)
-        || !(s->nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
+    if (binary || st->code != STATUS_OK || !s->alpha0 || s->problem.N < 1
+        || s->problem.M < 1 || s->problem.R < 1
+        || !(72.0 * s->problem.N * ((double)s->problem.M + s->problem.R) <= INT_MAX)
+        || !(s->problem.a < s->problem.b) || !isfinite(s->problem.gamma * (s->problem.b - s->problem.a))
+        || !(s->problem.C0 > 0) || !(s->problem.C1 >= 0) || !(s->problem.C2 > 0) || !(s->problem.C0 < s->problem.C0prime)
+        || !(s->problem.C0prime < s->problem.gamma) || !(s->problem.E > 0) || !(s->problem.nu > -1)
+        || !(s->problem.nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
         || s->solver.max_iter < 1 || !(s->solver.omega > 0 && s->solver.omega < 2)
-        || !(s->opt_tol > 0 && s->opt_tol < 1) || s->opt_max_iter < 1
+        || !(s->optimizer.tol > 0 && s->optimizer.tol < 1) || s->optimizer.max_iter < 1
         || strcmp(s->path, path) != 0)
       abort();
-    for (i = 0; i <= s->N; i++)
+    for (i = 0; i <= s->problem.N; i++)
       if (!isfinite(s->alpha0[i]) || !(s->alpha0[i] >= 0)
-          || !(s->alpha0[i] < s->C0prime))
+          || !(s->alpha0[i] < s->problem.C0prime))
         abort();
     for (i = 0; i < SIDE_COUNT; i++)
-      if (s->side[i].kind == BC_TRACTION
-          && (!(s->side[i].from < s->side[i].to)
-              || (s->side[i].P[0] == 0 && s->side[i].P[1] == 0)))
+      if (s->problem.side[i].kind == BC_TRACTION
+          && (!(s->problem.side[i].from < s->problem.side[i].to)
+              || (s->problem.side[i].P[0] == 0 && s->problem.side[i].P[1] == 0)))
         abort();
     if (strcmp(qp_method_name(s->solver.method), "?") == 0
-        || strcmp(scene_opt_name(s->opt), "?") == 0
-        || strcmp(scene_model_name(s->model), "?") == 0)
+        || strcmp(opt_method_name(s->optimizer.method), "?") == 0
+        || strcmp(problem_model_name(s->problem.model), "?") == 0)
       abort();
     return;
   }

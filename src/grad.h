@@ -1,6 +1,6 @@
-#line 71 "paper/sensitivity.nw"
-#ifndef CONTACTOPT_SENSITIVITY_H
-#define CONTACTOPT_SENSITIVITY_H
+#line 71 "paper/grad.nw"
+#ifndef CONTACTOPT_GRAD_H
+#define CONTACTOPT_GRAD_H
 #include "status.h"
 #include "model.h"
 

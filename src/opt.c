@@ -1,4 +1,4 @@
-#line 96 "paper/optimize.nw"
+#line 112 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,14 +6,34 @@
 #include <nlopt.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
-#include "optimize.h"
-#include "sensitivity.h"
+#include "opt.h"
+#include "grad.h"
 
-#line 117 "paper/optimize.nw"
+#line 131 "paper/opt.nw"
+const char *const opt_method_names[] = {"slsqp", "projgrad", NULL};
+const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
+
+Opt_options opt_options_default(Opt_method method)
+{
+  return (Opt_options) { method, method == OPT_SLSQP ? OPT_METRIC_SCHUR
+                                                     : OPT_METRIC_EUCLIDEAN,
+                         1e-6, 200 };
+}
+
+const char *opt_method_name(Opt_method m)
+{
+  return (unsigned)m <= OPT_PROJGRAD ? opt_method_names[m] : "?";
+}
+
+const char *opt_metric_name(Opt_metric m)
+{
+  return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
+}
+#line 159 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
-  const Scene *s;
+  const Opt_options *o;
   int n;                  /* N+1 */
   double *X;              /* n: the last design evaluated */
   double *G;              /* n: grad E there */
@@ -28,14 +48,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 298 "paper/optimize.nw"
+#line 340 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 385 "paper/optimize.nw"
+#line 427 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -46,7 +66,7 @@ typedef struct {
   int stalled;            /* evaluations since the last accepted one */
 } Slsqp;
 enum { STALL = 10 };
-#line 138 "paper/optimize.nw"
+#line 180 "paper/opt.nw"
 static double opt_clock(void)
 {
   struct timespec t;
@@ -70,7 +90,7 @@ static int evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 164 "paper/optimize.nw"
+#line 206 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -79,14 +99,14 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 175 "paper/optimize.nw"
+#line 217 "paper/opt.nw"
 static void report_iterate(Evaluator *ev, int iteration, double pg)
 {
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, opt_clock() - ev->start };
   if (ev->monitor) ev->monitor(&p, ev->X, ev->data);
 }
-#line 195 "paper/optimize.nw"
+#line 237 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
@@ -114,7 +134,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 225 "paper/optimize.nw"
+#line 267 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -127,15 +147,15 @@ static int projgrad(Evaluator *ev, double *X)
     report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 247 "paper/optimize.nw"
-const char *why = pg <= ev->s->opt_tol ? "converged"
+#line 289 "paper/opt.nw"
+const char *why = pg <= ev->o->tol ? "converged"
                 : !accepted ? "no_progress"
-                : k >= ev->s->opt_max_iter ? "max_iter" : NULL;
+                : k >= ev->o->max_iter ? "max_iter" : NULL;
 if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 237 "paper/optimize.nw"
+#line 279 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -143,7 +163,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 307 "paper/optimize.nw"
+#line 349 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -155,7 +175,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 322 "paper/optimize.nw"
+#line 364 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -187,7 +207,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
     }
   (void) m;
 }
-#line 357 "paper/optimize.nw"
+#line 399 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -205,7 +225,7 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 398 "paper/optimize.nw"
+#line 440 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static void slsqp_stop(Slsqp *q, const char *why)
 {
@@ -233,7 +253,7 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
   return ev->E / q->metric.scale;
 }
-#line 428 "paper/optimize.nw"
+#line 470 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -248,18 +268,18 @@ static void slsqp_accept(Slsqp *q)
   memcpy(q->bestX, ev->X, ev->n * sizeof *ev->X);
   ev->rep->iterations = q->k;
   ev->rep->pgnorm = pg;
-  if (pg <= ev->s->opt_tol) slsqp_stop(q, "converged");
-  else if (q->k >= ev->s->opt_max_iter) slsqp_stop(q, "max_iter");
+  if (pg <= ev->o->tol) slsqp_stop(q, "converged");
+  else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 452 "paper/optimize.nw"
+#line 494 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
   double C0 = ev->B->C0, Gmax = 0;
   memset(mt->R, 0, (size_t) n * n * sizeof *mt->R);
   for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i]));
-  if (ev->s->metric == METRIC_EUCLIDEAN) {
+  if (ev->o->metric == OPT_METRIC_EUCLIDEAN) {
     for (int i = 0; i < n; i++) mt->R[(size_t) i * n + i] = 1;
     mt->scale = C0 * (Gmax > 0 ? Gmax : 1.0);
     return STATUS_OK;
@@ -267,7 +287,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = opt_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 472 "paper/optimize.nw"
+#line 514 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -289,11 +309,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 466 "paper/optimize.nw"
+#line 508 "paper/opt.nw"
   ev->rep->metric_seconds = opt_clock() - start;
   return rc;
 }
-#line 502 "paper/optimize.nw"
+#line 544 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -308,16 +328,16 @@ static int slsqp(Evaluator *ev, double *X)
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
     else {
       
-#line 524 "paper/optimize.nw"
+#line 566 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
 nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
 nlopt_set_min_objective(q.opt, slsqp_objective, &q);
-nlopt_set_maxeval(q.opt, 50 * (ev->s->opt_max_iter + 1));
+nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 540 "paper/optimize.nw"
+#line 582 "paper/opt.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -325,18 +345,19 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 516 "paper/optimize.nw"
+#line 558 "paper/opt.nw"
     }
   }
   free(work);
   return rc;
 }
-#line 556 "paper/optimize.nw"
-int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
-                 Opt_monitor monitor, void *data, Opt_report *rep, Status *st)
+#line 598 "paper/opt.nw"
+int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
+                 double *X, Opt_monitor monitor, void *data, Opt_report *rep,
+                 Status *st)
 {
   int n = B->N + 1, rc;
-  Evaluator ev = { md, B, s, n, malloc(2 * n * sizeof(double)), NULL, 0, 0,
+  Evaluator ev = { md, B, o, n, malloc(2 * n * sizeof(double)), NULL, 0, 0,
                    0, 0, opt_clock(), monitor, data, rep, st, 0 };
   memset(rep, 0, sizeof *rep);
   if (!ev.X) return status_set(st, STATUS_SYSTEM, "optimiser: out of memory");
@@ -345,7 +366,7 @@ int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
     double Gmax = 0;
     for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
     ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-    rc = s->opt == OPT_SLSQP ? slsqp(&ev, X) : projgrad(&ev, X);
+    rc = o->method == OPT_SLSQP ? slsqp(&ev, X) : projgrad(&ev, X);
   }
   if (!rc) rep->energy = md->energy;
   rep->seconds = opt_clock() - ev.start;

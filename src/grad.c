@@ -1,8 +1,8 @@
-#line 85 "paper/sensitivity.nw"
+#line 85 "paper/grad.nw"
 #include <string.h>
-#include "sensitivity.h"
+#include "grad.h"
 
-#line 93 "paper/sensitivity.nw"
+#line 93 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G);
 static double grad_element_height(const double gx[3], const double gy[3],
                                   double u[3][2], const double e[3],
@@ -21,13 +21,13 @@ int grad_energy(const Model *md, double *G, Status *st)
   for (int t = 0; t < moving; t++) grad_element(md, t, G);
   return STATUS_OK;
 }
-#line 120 "paper/sensitivity.nw"
+#line 120 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
   double x[3], y[3], u[3][2], gx[3], gy[3], e[3], De[3];
   
-#line 139 "paper/sensitivity.nw"
+#line 139 "paper/grad.nw"
 for (int v = 0; v < 3; v++) {
   int node = m->tri[3 * t + v];
   x[v] = m->xy[2 * node];
@@ -37,9 +37,9 @@ for (int v = 0; v < 3; v++) {
     u[v][c] = k < 0 ? 0.0 : md->Q[k];
   }
 }
-#line 125 "paper/sensitivity.nw"
+#line 125 "paper/grad.nw"
   
-#line 151 "paper/sensitivity.nw"
+#line 151 "paper/grad.nw"
 for (int k = 0; k < 3; k++) {
   gx[k] = y[(k + 1) % 3] - y[(k + 2) % 3];
   gy[k] = x[(k + 2) % 3] - x[(k + 1) % 3];
@@ -52,18 +52,18 @@ e[2] = gy[0] * u[0][0] + gy[1] * u[1][0] + gy[2] * u[2][0]
 for (int r = 0; r < 3; r++)
   De[r] = md->hooke.D[r][0] * e[0] + md->hooke.D[r][1] * e[1]
         + md->hooke.D[r][2] * e[2];
-#line 126 "paper/sensitivity.nw"
+#line 126 "paper/grad.nw"
   for (int v = 0; v < 3; v++) {
     int node = m->tri[3 * t + v];
     double rate = mesh_motion(m, node);
     if (rate == 0) continue;
     double de_dy = grad_element_height(gx, gy, u, e, De, d, v);
-    if (md->scene->has_body_force)
-      de_dy -= grad_body_force(md->scene->F, u, gy[v]);
+    if (md->problem->has_body_force)
+      de_dy -= grad_body_force(md->problem->F, u, gy[v]);
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 168 "paper/sensitivity.nw"
+#line 168 "paper/grad.nw"
 static double grad_element_height(const double gx[3], const double gy[3],
                                   double u[3][2], const double e[3],
                                   const double De[3], double d, int m)
@@ -75,7 +75,7 @@ static double grad_element_height(const double gx[3], const double gy[3],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 183 "paper/sensitivity.nw"
+#line 183 "paper/grad.nw"
 static double grad_body_force(const double F[2], double u[3][2],
                               double gy_m)
 {

@@ -1,10 +1,21 @@
-#line 54 "paper/optimize.nw"
-#ifndef CONTACTOPT_OPTIMIZE_H
-#define CONTACTOPT_OPTIMIZE_H
+#line 54 "paper/opt.nw"
+#ifndef CONTACTOPT_OPT_H
+#define CONTACTOPT_OPT_H
 #include "status.h"
-#include "scene.h"
 #include "model.h"
 #include "design.h"
+
+typedef enum { OPT_SLSQP, OPT_PROJGRAD } Opt_method;
+typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
+extern const char *const opt_method_names[]; /* slsqp, projgrad, NULL */
+extern const char *const opt_metric_names[]; /* schur, euclidean, NULL */
+
+typedef struct {
+  Opt_method method;      /* slsqp (NLopt) or projgrad (Algorithm 4.1) */
+  Opt_metric metric;      /* the metric of the design space SLSQP starts in */
+  double tol;             /* projected-gradient norm pi at which it stops */
+  int max_iter;           /* iteration limit */
+} Opt_options;
 
 typedef struct {
   int iteration;          /* 0 is the start */
@@ -29,8 +40,13 @@ typedef struct {
   double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
-int opt_minimize(Model *md, const Design_set *B, const Scene *s, double *X,
-                 Opt_monitor monitor, void *data, Opt_report *rep,
+/* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
+   max_iter 200 */
+Opt_options opt_options_default(Opt_method method);
+const char *opt_method_name(Opt_method m);   /* or "?" */
+const char *opt_metric_name(Opt_metric m);   /* or "?" */
+int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
+                 double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,

@@ -1,0 +1,24 @@
+#line 167 "paper/problem.nw"
+#include <stddef.h>
+#include "problem.h"
+
+const char *const problem_model_names[] = {"plane_stress", "plane_strain",
+                                           NULL};
+const char *const problem_bc_names[] = {"free", "clamped", "roller",
+                                        "traction", NULL};
+
+const char *problem_model_name(Plane_model m)
+{
+  return (unsigned)m <= MODEL_PLANE_STRAIN ? problem_model_names[m] : "?";
+}
+
+const char *problem_bc_name(Bc_kind k)
+{
+  return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
+}
+#line 189 "paper/problem.nw"
+double problem_node_x(const Problem *p, int i)
+{
+  double t = (double)i / p->N;
+  return (1 - t) * p->a + t * p->b;
+}

@@ -1,0 +1,49 @@
+#line 87 "paper/problem.nw"
+#ifndef CONTACTOPT_PROBLEM_H
+#define CONTACTOPT_PROBLEM_H
+
+#line 101 "paper/problem.nw"
+/* The three sides of the body other than the contact surface. */
+typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
+/* What a side does: nothing, holds u = 0, holds the normal displacement
+   (u1 = 0 on left/right, u2 = 0 on top), or carries a traction. */
+typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Bc_kind;
+
+typedef struct {
+  Bc_kind kind;      /* the condition on the side */
+  double from, to;   /* BC_TRACTION: loaded interval of the side's own
+                        coordinate (x2 on left/right, x1 on top), from < to */
+  double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
+} Side;
+#line 117 "paper/problem.nw"
+typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
+#line 121 "paper/problem.nw"
+typedef struct {
+  /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
+  double a, b, gamma;
+  /* U_ad (2.1): 0 <= alpha <= C0, |alpha'| <= C1, meas Omega = C2, and
+     its discretisation by N intervals: X = (alpha_0 .. alpha_N) */
+  int N;
+  double C0, C1, C2;
+  /* the mesh: M moving rows of cells up to C0prime, R fixed ones above */
+  int M, R;
+  double C0prime;
+  /* the material: isotropic, unit thickness, E in N/m^2 */
+  double E, nu;
+  Plane_model model;
+  /* the conditions of the sides: Gamma_D and Gamma_P */
+  Side side[SIDE_COUNT];
+  /* the body force F = (F1, F2), N/m^3, constant */
+  double F[2];
+  int has_body_force;  /* F != 0: only then is its load assembled */
+} Problem;
+
+#line 156 "paper/problem.nw"
+extern const char *const problem_model_names[]; /* plane_stress, ... */
+extern const char *const problem_bc_names[];    /* free, clamped, ... */
+const char *problem_model_name(Plane_model m);
+const char *problem_bc_name(Bc_kind k);
+/* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
+double problem_node_x(const Problem *p, int i);
+#line 95 "paper/problem.nw"
+#endif
