@@ -1,10 +1,10 @@
-#line 69 "paper/fem.nw"
+#line 70 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
 
-#line 83 "paper/fem.nw"
+#line 84 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
@@ -23,7 +23,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 107 "paper/fem.nw"
+#line 108 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -31,10 +31,10 @@ for (int i = 0; i < m->ncol; i++)
     d->contact[d->nc] = d->unknown[2 * i + 1];
     d->contact_col[d->nc++] = i;
   }
-#line 101 "paper/fem.nw"
+#line 102 "paper/fem.nw"
   return d;
 }
-#line 118 "paper/fem.nw"
+#line 119 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -56,7 +56,7 @@ void fem_dofs_free(Dofs *d)
   free(d->contact_col);
   free(d);
 }
-#line 158 "paper/fem.nw"
+#line 159 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -71,19 +71,54 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 184 "paper/fem.nw"
+#line 214 "paper/fem.nw"
+static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
+
+void fem_element_xy(const Mesh *m, int t, double xy[6])
+{
+  for (int k = 0; k < 3; k++) {
+    xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
+    xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
+  }
+}
+
+void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
+                   double q[6])
+{
+  int g[6];
+  fem_element_dofs(m, d, t, g);
+  for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
+}
+
+double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
+{
+  for (int k = 0; k < 3; k++) {
+    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    gx[k] = xy[2 * k1 + 1] - xy[2 * k2 + 1];
+    gy[k] = xy[2 * k2] - xy[2 * k1];
+  }
+  return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
+}
+
+void fem_element_strain(const double gx[3], const double gy[3],
+                        const double q[6], long double e[3])
+{
+  e[0] = e[1] = e[2] = 0;
+  for (int k = 0; k < 3; k++) {
+    e[0] += (long double) gx[k] * q[2 * k];
+    e[1] += (long double) gy[k] * q[2 * k + 1];
+    e[2] += (long double) gy[k] * q[2 * k] + (long double) gx[k] * q[2 * k + 1];
+  }
+}
+#line 259 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
-  double area2 = (xy[2] - xy[0]) * (xy[5] - xy[1])
-               - (xy[4] - xy[0]) * (xy[3] - xy[1]);
+  double gx[3], gy[3], area2 = fem_element_gradients(xy, gx, gy);
   memset(B, 0, 3 * sizeof B[0]);
   for (int k = 0; k < 3; k++) {
-    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-    double gx = (xy[2 * k1 + 1] - xy[2 * k2 + 1]) / area2;
-    double gy = (xy[2 * k2] - xy[2 * k1]) / area2;
-    B[0][2 * k] = gx; B[1][2 * k + 1] = gy;
-    B[2][2 * k] = gy; B[2][2 * k + 1] = gx;
+    B[0][2 * k] = gx[k] / area2; B[1][2 * k + 1] = gy[k] / area2;
+    B[2][2 * k] = gy[k] / area2; B[2][2 * k + 1] = gx[k] / area2;
   }
   return area2;
 }
@@ -93,7 +128,7 @@ void fem_element_stiffness(const double xy[6], const Hooke *H,
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 209 "paper/fem.nw"
+#line 280 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -103,11 +138,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 205 "paper/fem.nw"
+#line 276 "paper/fem.nw"
 }
-#line 228 "paper/fem.nw"
-static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
-
+#line 299 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -118,7 +151,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
     int g[6];
     fem_element_dofs(m, d, t, g);
     
-#line 249 "paper/fem.nw"
+#line 318 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -126,14 +159,14 @@ for (int r = 0; r < 6; r++)
       ((int *) T->j)[T->nnz] = g[c];
       ((double *) T->x)[T->nnz++] = 0;
     }
-#line 240 "paper/fem.nw"
+#line 309 "paper/fem.nw"
   }
   cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
   cholmod_free_triplet(&T, cm);
   if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
   return A;
 }
-#line 260 "paper/fem.nw"
+#line 329 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -142,7 +175,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 273 "paper/fem.nw"
+#line 342 "paper/fem.nw"
 static double *fem_entry(cholmod_sparse *A, int r, int c)
 {
   int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
@@ -160,17 +193,11 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
   for (int t = 0; t < m->ntri; t++) {
     double xy[6], K[6][6];
     int g[6];
-    
-#line 300 "paper/fem.nw"
-for (int k = 0; k < 3; k++) {
-  xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
-  xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
-}
-#line 291 "paper/fem.nw"
+    fem_element_xy(m, t, xy);
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 307 "paper/fem.nw"
+#line 369 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -180,11 +207,11 @@ for (int r = 0; r < 6; r++)
                           "stiffness: pattern does not match the mesh");
       *a += K[r][c];
     }
-#line 294 "paper/fem.nw"
+#line 363 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 327 "paper/fem.nw"
+#line 389 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -198,7 +225,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 343 "paper/fem.nw"
+#line 405 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -213,7 +240,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 364 "paper/fem.nw"
+#line 426 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -231,7 +258,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-#line 410 "paper/fem.nw"
+#line 472 "paper/fem.nw"
 /* (Ax)_j: column j is row j, A being stored symmetric */
 static double fem_row_dot(const cholmod_sparse *A, size_t j, const double *x)
 {
@@ -252,26 +279,16 @@ double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
-    double xy[6], B[3][6], q[6];
-    int g[6];
-    
-#line 300 "paper/fem.nw"
-for (int k = 0; k < 3; k++) {
-  xy[2 * k] = m->xy[2 * m->tri[3 * t + k]];
-  xy[2 * k + 1] = m->xy[2 * m->tri[3 * t + k] + 1];
-}
-#line 433 "paper/fem.nw"
-    fem_element_dofs(m, d, t, g);
-    for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
-    long double area2 = fem_element_B(xy, B), e[3], De;
-    for (int r = 0; r < 3; r++) {
-      e[r] = 0;
-      for (int c = 0; c < 6; c++) e[r] += (long double) B[r][c] * q[c];
-    }
+    double xy[6], q[6], gx[3], gy[3];
+    long double e[3], De;
+    fem_element_xy(m, t, xy);
+    fem_element_q(m, d, Q, t, q);
+    long double area2 = fem_element_gradients(xy, gx, gy);
+    fem_element_strain(gx, gy, q, e);
     for (int r = 0; r < 3; r++) {
       De = 0;
       for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
-      U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
+      U += e[r] * De / (4 * area2);     /* 1/2 |T| e'De, e = 2|T| strain */
     }
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];

@@ -22,6 +22,18 @@ typedef struct { double D[3][3]; } Hooke;
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
+#line 200 "paper/fem.nw"
+/* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
+void fem_element_xy(const Mesh *m, int t, double xy[6]);
+/* q = (u1, u2) at the three vertices of triangle t; 0 where held */
+void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
+                   double q[6]);
+/* gx, gy = 2|T| times the shape-function gradients; returns 2|T| */
+double fem_element_gradients(const double xy[6], double gx[3], double gy[3]);
+/* e = the unnormalised strain 2|T| (e11, e22, 2 e12) of q */
+void fem_element_strain(const double gx[3], const double gy[3],
+                        const double q[6], long double e[3]);
+#line 54 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,

@@ -1,11 +1,11 @@
-#line 56 "paper/model.nw"
+#line 58 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 68 "paper/model.nw"
+#line 70 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -20,7 +20,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 88 "paper/model.nw"
+#line 90 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -31,19 +31,19 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 82 "paper/model.nw"
+#line 84 "paper/model.nw"
   
-#line 101 "paper/model.nw"
+#line 103 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 83 "paper/model.nw"
+#line 85 "paper/model.nw"
   return md;
 }
-#line 112 "paper/model.nw"
-static double model_clock(void)
+#line 116 "paper/model.nw"
+double model_clock(void)
 {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
@@ -67,7 +67,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 145 "paper/model.nw"
+#line 149 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -107,7 +107,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 214 "paper/model.nw"
+#line 218 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;

@@ -34,6 +34,8 @@ double model_pressure(const Model *md, int c);
 /* standard deviation over mean of the pressure on the contact zone;
    0 when no node presses */
 double model_pressure_cv(const Model *md);
+/* seconds on a monotonic clock: the one clock of the package's timings */
+double model_clock(void);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);
 /* S (N+1 x N+1, row-major): the stiffness of the body seen from its

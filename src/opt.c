@@ -2,14 +2,13 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <nlopt.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt.h"
 #include "grad.h"
 
-#line 131 "paper/opt.nw"
+#line 130 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -29,7 +28,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 159 "paper/opt.nw"
+#line 158 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -48,14 +47,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 340 "paper/opt.nw"
+#line 332 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 427 "paper/opt.nw"
+#line 419 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -66,31 +65,24 @@ typedef struct {
   int stalled;            /* evaluations since the last accepted one */
 } Slsqp;
 enum { STALL = 10 };
-#line 180 "paper/opt.nw"
-static double opt_clock(void)
-{
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
+#line 179 "paper/opt.nw"
 static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
-  double start = opt_clock();
+  double start = model_clock();
   int rc = model_solve(ev->md, X, ev->st);
   ev->solves++;
   if (!rc) rc = grad_energy(ev->md, ev->G, ev->st);
   if (ev->rep)
-    ev->rep->evaluations++, ev->rep->state_seconds += opt_clock() - start;
+    ev->rep->evaluations++, ev->rep->state_seconds += model_clock() - start;
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
   ev->E = ev->md->energy;
   ev->have = 1;
   return STATUS_OK;
 }
-#line 206 "paper/opt.nw"
+#line 198 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -99,14 +91,14 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 217 "paper/opt.nw"
+#line 209 "paper/opt.nw"
 static void report_iterate(Evaluator *ev, int iteration, double pg)
 {
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
-                     ev->md->report.iterations, opt_clock() - ev->start };
+                     ev->md->report.iterations, model_clock() - ev->start };
   if (ev->monitor) ev->monitor(&p, ev->X, ev->data);
 }
-#line 237 "paper/opt.nw"
+#line 229 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
@@ -134,7 +126,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 267 "paper/opt.nw"
+#line 259 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -147,7 +139,7 @@ static int projgrad(Evaluator *ev, double *X)
     report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 289 "paper/opt.nw"
+#line 281 "paper/opt.nw"
 const char *why = pg <= ev->o->tol ? "converged"
                 : !accepted ? "no_progress"
                 : k >= ev->o->max_iter ? "max_iter" : NULL;
@@ -155,7 +147,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 279 "paper/opt.nw"
+#line 271 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -163,7 +155,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 349 "paper/opt.nw"
+#line 341 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -175,7 +167,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 364 "paper/opt.nw"
+#line 356 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -207,7 +199,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
     }
   (void) m;
 }
-#line 399 "paper/opt.nw"
+#line 391 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -225,7 +217,7 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 440 "paper/opt.nw"
+#line 432 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static void slsqp_stop(Slsqp *q, const char *why)
 {
@@ -253,7 +245,7 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
   return ev->E / q->metric.scale;
 }
-#line 470 "paper/opt.nw"
+#line 462 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -272,7 +264,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 494 "paper/opt.nw"
+#line 486 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -284,10 +276,10 @@ static int metric_setup(Evaluator *ev, Metric *mt)
     mt->scale = C0 * (Gmax > 0 ? Gmax : 1.0);
     return STATUS_OK;
   }
-  double start = opt_clock();
+  double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 514 "paper/opt.nw"
+#line 506 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -309,11 +301,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 508 "paper/opt.nw"
-  ev->rep->metric_seconds = opt_clock() - start;
+#line 500 "paper/opt.nw"
+  ev->rep->metric_seconds = model_clock() - start;
   return rc;
 }
-#line 544 "paper/opt.nw"
+#line 536 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -328,7 +320,7 @@ static int slsqp(Evaluator *ev, double *X)
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
     else {
       
-#line 566 "paper/opt.nw"
+#line 558 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -337,7 +329,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 582 "paper/opt.nw"
+#line 574 "paper/opt.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -345,20 +337,20 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 558 "paper/opt.nw"
+#line 550 "paper/opt.nw"
     }
   }
   free(work);
   return rc;
 }
-#line 598 "paper/opt.nw"
+#line 590 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
 {
   int n = B->N + 1, rc;
   Evaluator ev = { md, B, o, n, malloc(2 * n * sizeof(double)), NULL, 0, 0,
-                   0, 0, opt_clock(), monitor, data, rep, st, 0 };
+                   0, 0, model_clock(), monitor, data, rep, st, 0 };
   memset(rep, 0, sizeof *rep);
   if (!ev.X) return status_set(st, STATUS_SYSTEM, "optimiser: out of memory");
   ev.G = ev.X + n;
@@ -369,7 +361,7 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X) : projgrad(&ev, X);
   }
   if (!rc) rep->energy = md->energy;
-  rep->seconds = opt_clock() - ev.start;
+  rep->seconds = model_clock() - ev.start;
   free(ev.X);
   return rc;
 }
