@@ -1,4 +1,4 @@
-#line 84 "paper/contactopt.nw"
+#line 43 "paper/status.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include "status.h"
