@@ -107,10 +107,11 @@ void fem_element_strain(const double gx[3], const double gy[3],
   for (int k = 0; k < 3; k++) {
     e[0] += (long double) gx[k] * q[2 * k];
     e[1] += (long double) gy[k] * q[2 * k + 1];
-    e[2] += (long double) gy[k] * q[2 * k] + (long double) gx[k] * q[2 * k + 1];
+    e[2] += (long double) gy[k] * q[2 * k];
+    e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 259 "paper/fem.nw"
+#line 260 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -128,7 +129,7 @@ void fem_element_stiffness(const double xy[6], const Hooke *H,
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 280 "paper/fem.nw"
+#line 281 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -138,9 +139,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 276 "paper/fem.nw"
+#line 277 "paper/fem.nw"
 }
-#line 299 "paper/fem.nw"
+#line 300 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -151,7 +152,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
     int g[6];
     fem_element_dofs(m, d, t, g);
     
-#line 318 "paper/fem.nw"
+#line 319 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -159,14 +160,14 @@ for (int r = 0; r < 6; r++)
       ((int *) T->j)[T->nnz] = g[c];
       ((double *) T->x)[T->nnz++] = 0;
     }
-#line 309 "paper/fem.nw"
+#line 310 "paper/fem.nw"
   }
   cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
   cholmod_free_triplet(&T, cm);
   if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
   return A;
 }
-#line 329 "paper/fem.nw"
+#line 330 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -175,7 +176,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 342 "paper/fem.nw"
+#line 343 "paper/fem.nw"
 static double *fem_entry(cholmod_sparse *A, int r, int c)
 {
   int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
@@ -197,7 +198,7 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 369 "paper/fem.nw"
+#line 370 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -207,11 +208,11 @@ for (int r = 0; r < 6; r++)
                           "stiffness: pattern does not match the mesh");
       *a += K[r][c];
     }
-#line 363 "paper/fem.nw"
+#line 364 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 389 "paper/fem.nw"
+#line 390 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -225,7 +226,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 405 "paper/fem.nw"
+#line 406 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -240,7 +241,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 426 "paper/fem.nw"
+#line 427 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -258,7 +259,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-#line 472 "paper/fem.nw"
+#line 473 "paper/fem.nw"
 /* (Ax)_j: column j is row j, A being stored symmetric */
 static double fem_row_dot(const cholmod_sparse *A, size_t j, const double *x)
 {
@@ -283,12 +284,14 @@ double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
     long double e[3], De;
     fem_element_xy(m, t, xy);
     fem_element_q(m, d, Q, t, q);
-    long double area2 = fem_element_gradients(xy, gx, gy);
-    fem_element_strain(gx, gy, q, e);
+    double a2 = fem_element_gradients(xy, gx, gy);
+    long double area2 = a2;
+    for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
+    fem_element_strain(gx, gy, q, e);      /* now the strain itself */
     for (int r = 0; r < 3; r++) {
       De = 0;
       for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
-      U += e[r] * De / (4 * area2);     /* 1/2 |T| e'De, e = 2|T| strain */
+      U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
     }
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];

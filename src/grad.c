@@ -21,7 +21,7 @@ int grad_energy(const Model *md, double *G, Status *st)
   for (int t = 0; t < moving; t++) grad_element(md, t, G);
   return STATUS_OK;
 }
-#line 121 "paper/grad.nw"
+#line 128 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
@@ -29,7 +29,8 @@ static void grad_element(const Model *md, int t, double *G)
   long double el[3];
   fem_element_xy(m, t, xy);
   fem_element_q(m, md->dofs, md->Q, t, q);
-  double d = fem_element_gradients(xy, gx, gy);              /* 2|T| */
+  fem_element_gradients(xy, gx, gy);
+  double d = xy[0] * gx[0] + xy[2] * gx[1] + xy[4] * gx[2];   /* 2|T| */
   fem_element_strain(gx, gy, q, el);
   for (int r = 0; r < 3; r++) e[r] = (double) el[r];
   for (int r = 0; r < 3; r++)
@@ -45,7 +46,7 @@ static void grad_element(const Model *md, int t, double *G)
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 149 "paper/grad.nw"
+#line 157 "paper/grad.nw"
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
                                   double d, int m)
@@ -56,7 +57,7 @@ static double grad_element_height(const double gy[3], const double q[6],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 163 "paper/grad.nw"
+#line 171 "paper/grad.nw"
 static double grad_body_force(const double F[2], const double q[6],
                               double gy_m)
 {
