@@ -9,7 +9,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
 # Modules tangled into src/ (each has a .h and a .c), and the program.
 MODULES := status problem scene mesh fem state model grad design opt output
-SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh \
+SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
@@ -48,18 +48,25 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
+# $(call apt_install,NAME,PACKAGES): the recipe of a target NAME that
+# installs the Debian PACKAGES not yet installed: as root (its log in
+# build-NAME.log if apt-get fails), by sudo without a password, or else it
+# prints the command to run as root and fails.  deps and fuzz-deps use it.
+define apt_install
+@missing=$$(for p in $(2); do \
+  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; \
+done); \
+if [ -n "$$missing" ]; then \
+  cmd="apt-get update && apt-get install -y --no-install-recommends $$(echo $$missing)"; \
+  if [ "$$(id -u)" = 0 ]; then echo "$(1): installing $$(echo $$missing)"; \
+    export DEBIAN_FRONTEND=noninteractive; sh -c "$$cmd" >build-$(1).log 2>&1 \
+      || { echo "$(1): apt-get failed, see build-$(1).log"; exit 1; }; rm -f build-$(1).log; \
+  elif sudo -n true 2>/dev/null; then sudo sh -c "$$cmd"; \
+  else echo "$(1): missing Debian packages; run as root:"; echo "  $$cmd"; exit 1; fi; \
+fi
+endef
 deps:
-	@missing=$$(for p in $(PACKAGES); do \
-	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; \
-	done); \
-	if [ -n "$$missing" ]; then \
-	  cmd="apt-get update && apt-get install -y --no-install-recommends $$(echo $$missing)"; \
-	  if [ "$$(id -u)" = 0 ]; then echo "deps: installing $$(echo $$missing)"; \
-	    export DEBIAN_FRONTEND=noninteractive; sh -c "$$cmd" >build-deps.log 2>&1 \
-	      || { echo "deps: apt-get failed, see build-deps.log"; exit 1; }; rm -f build-deps.log; \
-	  elif sudo -n true 2>/dev/null; then sudo sh -c "$$cmd"; \
-	  else echo "deps: missing Debian packages; run as root:"; echo "  $$cmd"; exit 1; fi; \
-	fi
+	$(call apt_install,deps,$(PACKAGES))
 
 # ---- tangling ----------------------------------------------------------------
 tangle: src/.tangled
@@ -204,12 +211,13 @@ out/example-%-strain-optimize/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt optimize $< -o $(@D) -s material.model=plane_strain > $(@D).log
 
 # Decision (area): C2 = 3.91 as printed.  The alternative, the C2 for which
-# Example 5.1's arc is feasible (its own area under the design's trapezoid
-# rule), shows what that decision changes.
-out/example-5.1-C2arc-optimize/summary.dat: data/example-5.1.scene out/example-5.1/summary.dat bin/contactopt
+# Example 5.1's arc (gamma = 1) is feasible (src/c2-of-shape.sh), shows what
+# that decision changes.
+out/example-5.1-C2arc-optimize/summary.dat: data/example-5.1.scene out/example-5.1/summary.dat \
+                                            src/c2-of-shape.sh bin/contactopt
 	@mkdir -p out
-	bin/contactopt optimize $< -o $(@D) -s design.C2=$$(awk '!/^#/ { if (n++) s += (x + $$2) / 2 * 0.25; \
-	  x = $$2 } END { printf "%.17g", 4 - s }' out/example-5.1/shape.dat) > $(@D).log
+	c2=$$(sh src/c2-of-shape.sh 1 out/example-5.1/shape.dat) && \
+	  bin/contactopt optimize $< -o $(@D) -s design.C2=$$c2 > $(@D).log
 
 # Fig. 5.1 and 5.3: the initial bodies; Fig. 5.2 and 5.4: the results.
 figures/fig-5.1.pdf figures/fig-5.1.png &: src/fig-body.gp out/example-5.1/summary.dat

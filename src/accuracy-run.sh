@@ -12,14 +12,20 @@ case $point in
 esac
 set -- $(echo "$point" | tr _ ' ')
 n=${1#N} state=$2 tol=$3 method=$4 otol=$5
+case $n in
+  *[!0-9]*) n=0 ;;
+esac
+if [ $((n % 16)) -ne 0 ] || [ $n -eq 0 ]; then
+  echo "accuracy-run.sh: $point: N must be a positive multiple of 16" >&2; exit 2
+fi
 metric=
 case $method in
   *-*) metric="-s optimizer.metric=${method#*-}"; method=${method%%-*} ;;
 esac
 rm -rf "$dir" && mkdir -p "$dir" || exit 1
 t0=$(date +%s.%N)
-"$prog" optimize "$scene" -o "$dir" -s design.N=$n -s mesh.M=$((n / 16)) \
-  -s mesh.R=$((3 * n / 16)) -s solver.state=$state -s solver.tol=$tol \
+"$prog" optimize "$scene" -o "$dir" -s mesh.refine=$((n / 16)) \
+  -s solver.state=$state -s solver.tol=$tol \
   -s optimizer.method=$method $metric -s optimizer.tol=$otol \
   > "$dir/optimize.log" 2>&1
 rc=$?

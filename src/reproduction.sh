@@ -5,7 +5,7 @@ out=${1:-out}
 v() { awk -v k=$1 '$1 == k { print $2 }' $out/$2/summary.dat; }
 sci() { awk -v x=$1 'BEGIN { e = int(log(x < 0 ? -x : x) / log(10)); if ((x < 0 ? -x : x) < 1) e--;
           printf "$%.6f\\cdot10^{%d}$\n", x / 10 ^ e, e }'; }
-near() { awk -v f=$1 '!/^#/ { it[n] = $1; E[n++] = $2 } END {
+within() { awk -v f=$1 '!/^#/ { it[n] = $1; E[n++] = $2 } END {
   for (k = 0; k < n; k++) { d = E[k] - E[n-1]; if (d < 0) d = -d
     if (d <= f * (E[0] - E[n-1])) { print it[k]; exit } } }' $out/$2/history.dat; }
 shapediff() { case $2 in $1|*C2arc*) echo --; return;; esac
@@ -35,8 +35,8 @@ line '\midrule'
 row '$E_h(\alpha^0)$, J/m' $(each E_alpha0)
 row '$E_h$ at the start $P_B(\alpha^0)$' $(each E_start)
 row '$E_h^*$ (plane stress)' $(each E_final)
-row 'iterations to within 1\,\% of $E_h^*-E_h^0$' $(each near 1e-2)
-row 'iterations to within 0.1\,\%' $(each near 1e-3)
+row 'iterations to within 1\,\% of $E_h^*-E_h^0$' $(each within 1e-2)
+row 'iterations to within 0.1\,\%' $(each within 1e-3)
 row 'iterations / state solves' $(each solves)
 row 'stop' $(each v stop_reason)
 row 'contact nodes in contact, start $\to$ end' $(each contact_nodes)

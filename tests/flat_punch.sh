@@ -11,20 +11,18 @@ for model in plane_strain plane_stress; do
   for solver in pdas psor cgssor; do
     for N in 16 64; do
       out=$TMP/$model-$solver-$N
-      M=$((N / 16)); R=$((3 * N / 16))
       if ! $BIN solve $scene -o $out -s material.model=$model -s solver.state=$solver \
-           -s design.N=$N -s mesh.M=$M -s mesh.R=$R -s solver.tol=1e-12 >/dev/null 2>$TMP/err; then
+           -s mesh.refine=$((N / 16)) -s solver.tol=1e-12 >/dev/null 2>$TMP/err; then
         fail "flat punch $model $solver N=$N: $(cat $TMP/err)"; continue
       fi
-      worst=$(awk -v p=5.75e8 '!/^#/ { e = ($6 - p) / p; if (e < 0) e = -e; if (e > w) w = e }
-                               END { printf "%.2e", w }' $out/contact.dat)
-      check "flat punch $model $solver N=$N: contact pressure = applied, rel. error $worst <= 1e-10" \
-        awk -v w=$worst 'BEGIN { exit !(w <= 1e-10) }'
-      top=$(awk -v row=$((M + R)) -v want=$want '!/^#/ && $3 == row {
-              e = ($7 - want) / want; if (e < 0) e = -e; if (e > w) w = e }
-              END { printf "%.2e", w }' $out/nodes.dat)
-      check "flat punch $model $solver N=$N: top u2 = $want, rel. error $top <= 1e-10" \
-        awk -v w=$top 'BEGIN { exit !(w <= 1e-10) }'
+      worst=$(rows_max 'abs(($6 - p) / p)' $out/contact.dat p=5.75e8)
+      check "flat punch $model $solver N=$N: contact pressure = applied, rel. error $(show %.2e "$worst") <= 1e-10" \
+        le "$worst" 1e-10
+      # the top is the row M + R of the mesh
+      top=$(rows_max -w '$3 == row' 'abs(($7 - want) / want)' $out/nodes.dat \
+              row="$(calc 'M + R' M="$(value M $out)" R="$(value R $out)")" want="$want")
+      check "flat punch $model $solver N=$N: top u2 = $want, rel. error $(show %.2e "$top") <= 1e-10" \
+        le "$top" 1e-10
     done
   done
 done

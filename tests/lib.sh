@@ -1,21 +1,182 @@
-# lib.sh: shell helpers for the tests; every check prints one line,
-# "ok - what" or "FAIL - what", and tests/run counts them.
+# lib.sh: shell helpers for the tests (sourced by every tests/*.sh, and by
+# tests/reference/generate.sh for value); every check prints one line,
+# "ok - what" or "FAIL - what", and tests/run counts them.  The helpers'
+# own variables begin with _l, so that they leave the caller's alone.
 BIN=${BIN:-bin/contactopt}
 TMP=${TMP:-$(mktemp -d)}
 failures=0
 ok()   { echo "ok - $*"; }
 fail() { echo "FAIL - $*"; failures=$((failures + 1)); }
-# expect COND-COMMAND... -- description
+# check DESCRIPTION COMMAND...: one line, ok if COMMAND succeeds
 check() { desc=$1; shift; if "$@"; then ok "$desc"; else fail "$desc"; fi; }
 finish() { rm -rf "$TMP"; [ "$failures" -eq 0 ]; }
+
+# ---- the numeric guard ------------------------------------------------------
+# A check compares numbers only: every value it compares must be a finite
+# decimal number (number() below: not empty, not NaN or Inf, not a word),
+# or the check fails with a line on stderr, "# WHAT: NAME = 'VALUE' is not
+# a finite number", where plain awk would read the empty value or the word
+# as 0 and pass.  A maximum, minimum or sum over no rows fails likewise.
+# Numbers pass between the helpers with 17 digits; show rounds them for
+# the descriptions only.
+#
+# awk_lib: the awk functions of the guard, for the helpers and for the
+# tests' own awk: number(s), 1 if the string s is a finite decimal number;
+# abs, max, min; named(i, what), the value of ARGV[i] = "NAME=VALUE"
+# (removed from ARGV), with a message and _bad = 1 unless it is a number.
+awk_lib='
+function number(s) {
+  return s ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ &&
+         abs(s + 0) <= 1.7976931348623157e308 }
+function abs(x) { return x < 0 ? -x : x }
+function max(a, b) { return a > b ? a : b }
+function min(a, b) { return a < b ? a : b }
+function named(i, what,   k, s) {
+  k = index(ARGV[i], "="); s = substr(ARGV[i], k + 1)
+  if (k < 2) { _bad = 1
+    printf "# %s: \047%s\047 is not NAME=VALUE\n", what, ARGV[i] > "/dev/stderr" }
+  else if (!number(s)) { _bad = 1
+    printf "# %s: %s = \047%s\047 is not a finite number\n", what, substr(ARGV[i], 1, k - 1), s > "/dev/stderr" }
+  delete ARGV[i]; return s + 0 }'
+# _lset FIRST NAME=VALUE...: the awk statements that set each NAME from
+# ARGV[FIRST], ARGV[FIRST + 1], ... by named()
+_lset() { _li=$1; shift; _lc=
+  for _la; do
+    case $_la in [A-Za-z_]*=*) _ln=${_la%%=*} ;; *) _ln=_noname ;; esac
+    case $_ln in *[!A-Za-z0-9_]*) _ln=_noname ;; esac
+    _lc="$_lc $_ln = named($_li, _what);"; _li=$((_li + 1))
+  done
+  echo "$_lc"; }
+# _leval holds|calc EXPR NAME=VALUE...: the awk expression EXPR of the NAMEs
+_leval() { _lm=$1 _lx=$2; shift 2
+  awk -v _what="$_lx" "$awk_lib
+    BEGIN { $(_lset 1 "$@") if (_bad) exit 2
+      if (\"$_lm\" == \"holds\") exit !($_lx)
+      _s = sprintf(\"%.17g\", $_lx)
+      if (!number(_s)) { printf \"# %s = %s is not a finite number\\n\", _what, _s > \"/dev/stderr\"; exit 2 }
+      print _s }" "$@"; }
+
+# holds EXPR NAME=VALUE...: the awk expression EXPR (of the NAMEs and the
+# functions of awk_lib) is true, and every VALUE is a finite number
+holds() { _leval holds "$@"; }
+# calc EXPR NAME=VALUE...: prints EXPR to 17 digits; fails on a VALUE or a
+# result that is not a finite number
+calc() { _leval calc "$@"; }
+# le A B: A <= B;  lt A B: A < B;  both finite numbers (quote them: "$x")
+le() { _larity le 2 "$@" && holds 'value <= bound' value="$1" bound="$2"; }
+lt() { _larity lt 2 "$@" && holds 'value < bound' value="$1" bound="$2"; }
+# near_ref REF X TOL: |X - REF| <= TOL |REF|, X within TOL of the reference
+# REF relative to it
+near_ref() { _larity near_ref 3 "$@" && holds 'abs(value - ref) <= tol * abs(ref)' ref="$1" value="$2" tol="$3"; }
+_larity() { [ $# -eq $(($2 + 2)) ] && return 0
+  echo "# $1: $2 values expected, got $(($# - 2)):$(shift 2; printf " '%s'" "$@")" >&2; return 2; }
+# rate E1 E2 E3: the observed order log2((E1 - E2) / (E2 - E3)) of three
+# successive halvings of h
+rate() { calc 'log((a - b) / (b - c)) / log(2)' a="$1" b="$2" c="$3"; }
+# show FORMAT X: X by the printf FORMAT if a finite number, else 'X'
+show() { awk -v f="$1" -v x="$2" "$awk_lib"'
+  BEGIN { if (number(x)) printf f "\n", x; else printf "\047%s\047\n", x }'; }
+
+# rows_max [-w WHERE] EXPR FILE [NAME=VALUE...]: the largest value of the
+# awk expression EXPR (of the fields $1, $2, ..., the NAMEs, prev(K), field
+# K of the data row before, and _row, the count of data rows so far) over
+# the data rows of FILE (- for standard input; lines starting with # and
+# blank lines are no data) where WHERE holds; rows_min the smallest,
+# rows_sum the sum; 17 digits.  Fails, printing nothing, when no row is
+# left, when a field that EXPR or WHERE names as $K is not a finite number
+# in any data row, or when EXPR, a VALUE or the result is not.
+rows_max() { _lrows max "$@"; }
+rows_min() { _lrows min "$@"; }
+rows_sum() { _lrows sum "$@"; }
+_lrows() { _lh=$1 _lw=1; shift
+  if [ "$1" = -w ]; then _lw=$2; shift 2; fi
+  _lx=$1 _lf=$2; shift 2
+  _lk=$(printf '%s %s\n' "$_lx" "$_lw" | grep -o '\$[0-9][0-9]*' | tr -d '$' | sort -un | tr '\n' ' ')
+  awk -v _what="rows_$_lh $_lx over $_lf" -v _how=$_lh -v _fields="$_lk" "$awk_lib
+    function prev(k) { return _p[k] }
+    BEGIN { $(_lset 2 "$@") _nk = split(_fields, _k, \" \") }
+    _bad { exit }
+    /^#/ || NF == 0 { next }
+    { _row++; for (_i = 1; _i <= _nk; _i++) if (!number(\$_k[_i])) { _bad = 1
+        printf \"# %s: field %d of line %d, \\047%s\\047, is not a finite number\\n\", _what, _k[_i], FNR, \$_k[_i] > \"/dev/stderr\"; exit } }
+    $_lw { _v = $_lx; _s = sprintf(\"%.17g\", _v)
+        if (!number(_s)) { _bad = 1; printf \"# %s: %s at line %d\\n\", _what, _s, FNR > \"/dev/stderr\"; exit }
+        if (!_n++) _r = _v; else if (_how == \"max\") _r = max(_r, _v); else if (_how == \"min\") _r = min(_r, _v); else _r += _v }
+    { for (_i = 1; _i <= NF; _i++) _p[_i] = \$_i }
+    END { if (_bad) exit 2
+      if (!_n) { printf \"# %s: no rows\\n\", _what > \"/dev/stderr\"; exit 1 }
+      _s = sprintf(\"%.17g\", _r)
+      if (!number(_s)) { printf \"# %s: the result %s is not a finite number\\n\", _what, _s > \"/dev/stderr\"; exit 1 }
+      print _s }" "$_lf" "$@"; }
+
+# ---- a clean failure ------------------------------------------------------------
+# clean_failure RC CODE ERR DIR PATTERN...: a command was refused cleanly:
+# its exit status RC is CODE, its standard error (the file ERR) is one line
+# that matches every PATTERN (grep -E), and it wrote nothing (no DIR)
+clean_failure() { _lrc=$1 _lcode=$2 _lerr=$3 _ldir=$4; shift 4
+  [ "$_lrc" -eq "$_lcode" ] && [ "$(wc -l < "$_lerr")" -eq 1 ] && [ ! -e "$_ldir" ] || return 1
+  for _lp; do grep -q -E -- "$_lp" "$_lerr" || return 1; done; }
+
+# ---- reading the program's files ---------------------------------------------
+# value KEY PATH: the value of the line "KEY value" of PATH/summary.dat (of
+# PATH itself if it is a file); nothing if there is none
+value() { if [ -d "$2" ]; then _lf=$2/summary.dat; else _lf=$2; fi
+  awk -v k="$1" '$1 == k { print $2 }' "$_lf"; }
+# umax DIR: max |u1|, |u2| over DIR/nodes.dat
+umax() { rows_max 'max(abs($6), abs($7))' "$1/nodes.dat"; }
+# uncomment FILE: FILE without its comments (from #) and blank lines
+uncomment() { sed 's/#.*//; /^ *$/d' "$1"; }
+# numbers ABS REL A B [COLUMN]: the files A and B agree (comments dropped,
+# one column if given) within absolute ABS or relative REL (numdiff)
+numbers() {
+  uncomment "$3" > $TMP/numbers.a; uncomment "$4" > $TMP/numbers.b
+  if [ -n "$5" ]; then
+    awk -v c=$5 '{ print $c }' $TMP/numbers.a > $TMP/numbers.c; mv $TMP/numbers.c $TMP/numbers.a
+    awk -v c=$5 '{ print $c }' $TMP/numbers.b > $TMP/numbers.c; mv $TMP/numbers.c $TMP/numbers.b
+  fi
+  numdiff -q -a $1 -r $2 $TMP/numbers.a $TMP/numbers.b; }
+
+# ---- the design set B and the optimality of a design --------------------------
+# B of the three shipped scenes on the article's mesh: C0, d = C1 h, the
+# area S = gamma (b - a) - C2, b - a and h, as in_B takes them
+B_article="0.05 0.00625 0.09 4 0.25"
+# violation FILE C0 d S L h: the largest violation of B (4.4) by an iterate
+# of FILE (iterates.dat: one block per iteration, alpha in column 4),
+# relative to C0 (to C0 L for the area); fails on no iterate or a value
+# that is not a finite number
+violation() { awk -v C0=$2 -v d=$3 -v S=$4 -v L=$5 -v h=$6 "$awk_lib"'
+  function up(v) { if (v > w) w = v }
+  function done(  i) {
+    for (i = 0; i < n; i++) {
+      up(-x[i] / C0); up(x[i] / C0 - 1)
+      if (i > 0) { up((x[i] - x[i-1] - d) / C0); up((x[i-1] - x[i] - d) / C0)
+                   area += h * (x[i] + x[i-1]) / 2 }
+    }
+    up((area - S) / (C0 * L)); up((S - area) / (C0 * L))
+    n = 0; blocks++ }
+  /^#/ { next }
+  NF == 0 { if (n) done(); next }
+  !number($2) || !number($4) { printf "# violation: line %d of %s is not numbers: %s\n", FNR, FILENAME, $0 > "/dev/stderr"; bad = 1; exit }
+  { if ($2 == 0) { n = 0; area = 0 } x[n++] = $4 }
+  END { if (bad) exit 2; if (n) done()
+    if (!blocks) { printf "# violation: no iterate in %s\n", FILENAME > "/dev/stderr"; exit 1 }
+    printf "%.17g\n", w }' "$1"; }
+# in_B LABEL DIR TOL C0 d S L h: a check: every iterate of DIR/iterates.dat
+# lies in B, its largest violation at most TOL
+in_B() { _lv=$(violation "$2/iterates.dat" $4 $5 $6 $7 $8)
+  check "$1: every iterate lies in B (largest violation $(show %.1e "$_lv") <= $3)" le "$_lv" "$3"; }
 # kkt FILE C0 d h: the KKT conditions of min E over B from multipliers.dat
-# (C0, d = C1 h and h are the scene's constants): prints
-# the stationarity relative to max |dE/dX|, fails on a sign or a
-# complementarity violated
-kkt() { awk -v C0=$2 -v d=$3 -v h=$4 '
+# (C0, d = C1 h and h are the scene's constants): prints the stationarity
+# relative to max |dE/dX|; fails on a sign or a complementarity violated,
+# on no row, or on a value that is not a finite number
+kkt() { awk -v C0=$2 -v d=$3 -v h=$4 "$awk_lib"'
   /^#/ { split($0, a, "mu = "); mu = a[2]; next }
-  { i = $1; x[i] = $3; G[i] = $4; lo[i] = $5; up[i] = $6; ri[i] = $7; fa[i] = $8; n = i + 1 }
+  NF == 0 { next }
+  { for (k = 1; k <= 8; k++) if (!number($k)) { printf "# kkt: line %d of %s: field %d, \047%s\047, is not a finite number\n", FNR, FILENAME, k, $k > "/dev/stderr"; broken = 1; exit }
+    i = $1; x[i] = $3; G[i] = $4; lo[i] = $5; up[i] = $6; ri[i] = $7; fa[i] = $8; n = i + 1 }
   END {
+    if (broken) exit 2
+    if (!n || !number(mu)) { printf "# kkt: %s has no rows or no mu = (\047%s\047)\n", FILENAME, mu > "/dev/stderr"; exit 2 }
     for (i = 0; i < n; i++) {
       if (lo[i] < 0 || up[i] < 0 || ri[i] < 0 || fa[i] < 0) bad = 1
       if (lo[i] > 0 && x[i] > 1e-9 * C0) bad = 1
@@ -27,4 +188,9 @@ kkt() { awk -v C0=$2 -v d=$3 -v h=$4 '
       if (r < 0) r = -r; if (r > rmax) rmax = r
       g = G[i] < 0 ? -G[i] : G[i]; if (g > gmax) gmax = g
     }
-    printf "%.1e\n", (gmax > 0 ? rmax / gmax : rmax); exit bad }' $1; }
+    printf "%.17g\n", (gmax > 0 ? rmax / gmax : rmax); exit bad }' "$1"; }
+# kkt_point LABEL DIR C0 d h: a check: the final design of DIR is a KKT
+# point (kkt above), with the stationarity at most 1e-4
+kkt_point() { _lr=$(kkt "$2/multipliers.dat" $3 $4 $5); _lrc=$?
+  check "$1: the final design is a KKT point (signs, complementarity; stationarity $(show %.1e "$_lr") <= 1e-4)" \
+    holds 'rc == 0 && r <= 1e-4' rc=$_lrc r="$_lr"; }

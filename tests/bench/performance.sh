@@ -26,8 +26,8 @@ scene=data/example-5.1.scene
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "performance: FAILED: $*" >&2; exit 1; }
-# the refined meshes of Example 5.1, as in state.sh: M = N/16, R = 3N/16
-mesh() { echo "design.N=$1 mesh.M=$(($1 / 16)) mesh.R=$((3 * $1 / 16))"; }
+# mesh N: the setting of Example 5.1 refined to N, as in state.sh
+mesh() { echo "mesh.refine=$(($1 / 16))"; }
 [ "$nmax" -ge 16 ] 2>/dev/null || fail "BENCH_NMAX=$nmax: must be a number >= 16"
 [ "$runs" -ge 1 ] 2>/dev/null || fail "BENCH_RUNS=$runs: must be a number >= 1"
 [ "$runs4" -ge 1 ] 2>/dev/null || fail "BENCH_RUNS4=$runs4: must be a number >= 1"
@@ -70,7 +70,7 @@ k=1
 while [ $k -le "$runs" ]; do optimize "$tmp/opt16-$k" 16; k=$((k + 1)); done
 k=1
 while [ $k -le "$runs4" ]; do
-  optimize "$tmp/opt$N4-$k" $N4 $(for o in $(mesh $N4); do echo "-s $o"; done)
+  optimize "$tmp/opt$N4-$k" $N4 -s $(mesh $N4)
   k=$((k + 1))
 done
 

@@ -1,6 +1,6 @@
 #!/bin/sh
 # make bench: the state solvers on Example 5.1's initial shape for
-# N = 16 .. 512 (M = N/16, R = 3N/16), all at the same relative KKT
+# N = 16 .. 512 (mesh.refine = N/16), all at the same relative KKT
 # tolerance.  Prints a table and writes it as LaTeX into
 # paper/bench-state.tex, which the woven document shows.  Not a test.
 cd "$(dirname "$0")/../.." || exit 1
@@ -16,9 +16,8 @@ for N in 16 32 64 128 256 512; do
   for solver in pdas cgssor psor; do
     d=$tmp/$N-$solver
     t0=$(date +%s.%N)
-    if bin/contactopt solve data/example-5.1.scene -o $d -s design.N=$N \
-         -s mesh.M=$((N / 16)) -s mesh.R=$((3 * N / 16)) -s solver.state=$solver \
-         -s solver.tol=$tol -s solver.max_iter=$cap >/dev/null 2>$tmp/err; then
+    if bin/contactopt solve data/example-5.1.scene -o $d -s mesh.refine=$((N / 16)) \
+         -s solver.state=$solver -s solver.tol=$tol -s solver.max_iter=$cap >/dev/null 2>$tmp/err; then
       awk -v N=$N -v s=$solver '{ v[$1] = $2 } END {
         printf "%d %d %s %d %.4f %.1e\n", N, v["dofs"], s, v["iterations"], v["seconds"], v["kkt_residual"] }' \
         $d/summary.dat >> $out

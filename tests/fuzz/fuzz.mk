@@ -2,7 +2,7 @@
 # paper/setting.nw) with libFuzzer, under AddressSanitizer, UBSan and
 # LeakSanitizer.  Included by the Makefile; it relies on nothing of it but
 # the tangled sources (src/scene.c, src/status.c and their headers, made by
-# the rule of src/.tangled).
+# the rule of src/.tangled) and the Makefile's recipe apt_install.
 #
 #   make fuzz [FUZZ_SECONDS=60] [FUZZ_JOBS=1]
 #       fuzz for FUZZ_SECONDS seconds; the corpus grows in build/fuzz/corpus
@@ -50,15 +50,4 @@ $(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(MODULES:%=src/%.c) \
 	  $(MODULES:%=src/%.c) $(LDLIBS)
 
 fuzz-deps:
-	@missing=$$(for p in $(FUZZ_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; \
-	done); \
-	if [ -n "$$missing" ]; then \
-	  cmd="apt-get update && apt-get install -y --no-install-recommends $$(echo $$missing)"; \
-	  if [ "$$(id -u)" = 0 ]; then echo "fuzz-deps: installing $$(echo $$missing)"; \
-	    DEBIAN_FRONTEND=noninteractive sh -c "$$cmd" >build-fuzz-deps.log 2>&1 \
-	      || { echo "fuzz-deps: apt-get failed, see build-fuzz-deps.log"; exit 1; }; \
-	    rm -f build-fuzz-deps.log; \
-	  elif sudo -n true 2>/dev/null; then sudo sh -c "$$cmd"; \
-	  else echo "fuzz-deps: missing Debian packages; run as root:"; echo "  $$cmd"; exit 1; fi; \
-	fi
+	$(call apt_install,fuzz-deps,$(FUZZ_PACKAGES))

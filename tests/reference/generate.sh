@@ -9,7 +9,8 @@
 # the results; commit the result with the reason.
 cd "$(dirname "$0")/../.." || exit 1
 set -e
-tmp=$(mktemp -d)
+. tests/lib.sh
+tmp=$TMP
 trap 'rm -rf $tmp' EXIT
 today=$(date -u +%Y-%m-%d)
 for ex in 5.1 5.2; do
@@ -25,15 +26,14 @@ for ex in 5.1 5.2; do
     -s design.initial=file -s design.file=$tmp/opt/initial/shape.dat $unset >/dev/null
   bin/contactopt solve $scene -o $tmp/final -s solver.state=cgssor -s solver.tol=1e-12 \
     -s design.initial=file -s design.file=$tmp/opt/final/shape.dat $unset >/dev/null
-  v() { awk -v k=$1 '$1 == k { print $2 }' $2/summary.dat; }
   {
     echo "# Reference values for Example $ex on the article's mesh (N = 16, M = 1, R = 3),"
     echo "# plane stress; written by tests/reference/generate.sh on $today."
     echo "# name value # provenance"
-    echo "energy_alpha0 $(v energy $tmp/alpha0) # E at alpha0 as given: solve, cgssor, tol 1e-12"
-    echo "energy_start $(v energy $tmp/start) # E at the projection of alpha0 onto B: solve, cgssor, tol 1e-12"
-    echo "energy_final $(v energy $tmp/final) # E at the optimum of Algorithm 4.1 (projgrad, tol 1e-7): solve, cgssor, tol 1e-12"
-    echo "active_final $(v active_contact_nodes $tmp/final) # contact nodes in contact at that optimum (cgssor)"
+    echo "energy_alpha0 $(value energy $tmp/alpha0) # E at alpha0 as given: solve, cgssor, tol 1e-12"
+    echo "energy_start $(value energy $tmp/start) # E at the projection of alpha0 onto B: solve, cgssor, tol 1e-12"
+    echo "energy_final $(value energy $tmp/final) # E at the optimum of Algorithm 4.1 (projgrad, tol 1e-7): solve, cgssor, tol 1e-12"
+    echo "active_final $(value active_contact_nodes $tmp/final) # contact nodes in contact at that optimum (cgssor)"
   } > $ref
   {
     echo "# Final shape of Example $ex: Algorithm 4.1 (projgrad, optimizer.tol 1e-7);"
