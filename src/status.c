@@ -1,4 +1,4 @@
-#line 84 "paper/contactopt.nw"
+#line 94 "paper/contactopt.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include "status.h"

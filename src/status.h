@@ -1,4 +1,4 @@
-#line 53 "paper/contactopt.nw"
+#line 63 "paper/contactopt.nw"
 #ifndef CONTACTOPT_STATUS_H
 #define CONTACTOPT_STATUS_H
 #include <stddef.h>
@@ -15,11 +15,11 @@ typedef struct {
   char msg[1024];     /* one line, no trailing newline */
 } Status;
 
-#line 76 "paper/contactopt.nw"
+#line 86 "paper/contactopt.nw"
 int status_set(Status *st, Status_code code, const char *fmt, ...)
 #if defined(__GNUC__)
   __attribute__((format(printf, 3, 4)))
 #endif
   ;
-#line 70 "paper/contactopt.nw"
+#line 80 "paper/contactopt.nw"
 #endif
