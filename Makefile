@@ -4,15 +4,17 @@
 
 # The parts of the paper, in the order of the argument (the driver first).
 NW := paper/contactopt.nw paper/setting.nw paper/mesh.nw paper/fem.nw \
-      paper/state.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
+      paper/qp.nw paper/pdas.nw paper/mprgp.nw paper/psor.nw paper/model.nw paper/sensitivity.nw paper/design.nw \
       paper/optimize.nw paper/output.nw paper/main.nw paper/figures.nw \
       paper/reproduction.nw paper/stability.nw paper/accuracy.nw paper/closing.nw
 
-# Modules tangled into src/ (each has a .h and a .c), and the program.
-MODULES := status scene mesh fem state model sensitivity design optimize output
+# Modules tangled into src/ (each has a .c, and a .h but for the methods of
+# the state solver, which share src/qp_private.h), and the program.
+MODULES := status scene mesh fem qp pdas mprgp psor model sensitivity design optimize output
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
-TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
+TANGLED := $(filter-out src/pdas.h src/mprgp.h src/psor.h,$(MODULES:%=src/%.h)) \
+           src/qp_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)

@@ -6,7 +6,7 @@
 #include "scene.h"
 #include "mesh.h"
 #include "fem.h"
-#include "state.h"
+#include "qp.h"
 
 typedef struct {
   const Scene *scene;   /* the problem (not owned) */

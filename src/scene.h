@@ -2,7 +2,7 @@
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"
-#include "state.h"
+#include "qp.h"
 
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
