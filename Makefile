@@ -7,11 +7,13 @@
 PARTS := $(shell sed -n 's/^\\input{\([a-z0-9_-]*\)}$$/\1/p' paper/contactopt.nw)
 NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
-# Modules tangled into src/ (each has a .h and a .c), and the program.
-MODULES := status problem scene mesh fem state model grad design opt output
+# Modules tangled into src/ (each has a .c, and a .h but for the methods of
+# the state solver, which share src/qp_private.h), and the program.
+MODULES := status problem scene mesh fem qp pdas mprgp psor model grad design opt output
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
-TANGLED := $(MODULES:%=src/%.h) $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
+TANGLED := $(filter-out src/pdas.h src/mprgp.h src/psor.h,$(MODULES:%=src/%.h)) \
+           src/qp_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)

@@ -6,7 +6,7 @@
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
-#include "state.h"
+#include "qp.h"
 
 typedef struct {
   const Problem *problem; /* the problem (not owned) */

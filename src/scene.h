@@ -3,7 +3,7 @@
 #define CONTACTOPT_SCENE_H
 #include "status.h"
 #include "problem.h"
-#include "state.h"
+#include "qp.h"
 #include "opt.h"
 
 typedef struct {

@@ -1,10 +1,11 @@
-/* test_qp.c: the state solvers of state.nw on small bound-constrained QPs
-   min 1/2 x'Ax - b'x, x[ic] >= lo, built here with cholmod_triplet:
+/* test_qp.c: the state solvers of qp.nw, pdas.nw, mprgp.nw and psor.nw on
+   small bound-constrained QPs min 1/2 x'Ax - b'x, x[ic] >= lo, built here
+   with cholmod_triplet:
    (a) 1D obstacle problems, (b) a semidefinite 1D Neumann problem held only
    by the bounds, (c) 2D grid Laplacians with mixed contact, (d) a small
    elastic body of Example 5.1 (not an M-matrix).  The reference
    for the tiny ones enumerates every active set and solves each linear
-   system with GSL's Cholesky factorisation: independent of state.c. */
+   system with GSL's Cholesky factorisation: independent of the solvers. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +13,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include "check.h"
-#include "state.h"
+#include "qp.h"
 
 #define TOL 1e-10
 

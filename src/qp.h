@@ -1,9 +1,10 @@
-#line 68 "paper/state.nw"
-#ifndef CONTACTOPT_STATE_H
-#define CONTACTOPT_STATE_H
+#line 58 "paper/qp.nw"
+#ifndef CONTACTOPT_QP_H
+#define CONTACTOPT_QP_H
 #include <cholmod.h>
 #include "status.h"
 
+#line 72 "paper/qp.nw"
 /* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
    x[ic[c]] >= lo[c], c = 0..nc-1.  A is symmetric positive semidefinite,
    and positive definite on the subspace x[ic] = 0. */
@@ -14,7 +15,7 @@ typedef struct {
   const int *ic;           /* nc: their indices, increasing */
   const double *lo;        /* nc: their lower bounds, -X_i */
 } Qp;
-
+#line 85 "paper/qp.nw"
 typedef enum { QP_PDAS, QP_PSOR, QP_CGSSOR } Qp_method;
 
 typedef struct {
@@ -24,6 +25,11 @@ typedef struct {
   double omega;            /* relaxation, 0 < omega < 2 (psor, cgssor) */
 } Qp_options;
 
+/* the defaults: tol 1e-10, max_iter 100 (pdas) or 100000, omega 1.5 */
+Qp_options qp_options_default(Qp_method method);
+/* "pdas", "psor", "cgssor", or "?" */
+const char *qp_method_name(Qp_method method);
+#line 101 "paper/qp.nw"
 typedef struct {
   int iterations;          /* sweeps, CG steps or Newton steps used */
   double kkt;              /* qp_kkt at the returned x */
@@ -32,12 +38,7 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-
-/* the defaults: tol 1e-10, max_iter 100 (pdas) or 100000, omega 1.5 */
-Qp_options qp_options_default(Qp_method method);
-/* "pdas", "psor", "cgssor", or "?" */
-const char *qp_method_name(Qp_method method);
-
+#line 116 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
@@ -46,7 +47,7 @@ int qp_iterate(Qp_workspace *w, Status *st);
 int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
 void qp_free(Qp_workspace *w);
-
+#line 127 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]]; STATUS_NUMERIC when not converged. */
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
@@ -63,4 +64,5 @@ double qp_kkt(const Qp *qp, const double *x, double *T);
    own S when it has one.  Needs GSL's error handler off
    (gsl_set_error_handler_off), as the Newton method does. */
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
+#line 68 "paper/qp.nw"
 #endif

@@ -1,0 +1,398 @@
+#line 177 "paper/pdas.nw"
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include "qp_private.h"
+
+#line 303 "paper/pdas.nw"
+#define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
+#line 501 "paper/pdas.nw"
+#define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
+
+#line 655 "paper/pdas.nw"
+/* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
+static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
+                      Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  cholmod_common *cm = w->cm;
+  if (!cholmod_solve2(sys1, pd->L, *v, NULL, &pd->sol, NULL, &pd->Y, &pd->E, cm)
+      || !cholmod_solve2(sys2, pd->L, pd->sol, NULL, v, NULL, &pd->Y, &pd->E, cm))
+    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
+                      "(CHOLMOD status %d)", cm->status);
+  return STATUS_OK;
+}
+
+#line 246 "paper/pdas.nw"
+static int analyse_contact_last(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  cholmod_common *cm = w->cm;
+  size_t n = (size_t) w->n;
+  int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
+  int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
+  int postorder = cm->postorder, ok = last && perm;
+  for (int c = 0; ok && c < w->nc; c++) last[w->qp->ic[c]] = 1;
+  cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
+  ok = ok && cholmod_camd(&pd->K, NULL, 0, last, perm, cm)
+          && (pd->Ls = cholmod_analyze_p(&pd->K, perm, NULL, 0, cm));
+  cm->nmethods = nmethods, cm->method[0].ordering = ordering;
+  cm->postorder = postorder;
+  free(last), free(perm);
+  
+#line 266 "paper/pdas.nw"
+pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
+pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
+if (!ok || !pd->rhs || !pd->Lb)
+  return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
+                    "analyse A (CHOLMOD status %d)", cm->status);
+const int *P = pd->Ls->Perm;
+for (int t = 0; t < w->nc; t++)
+  if ((pd->tc[t] = w->bnd[P[pd->first + t]]) < 0)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
+                      "the bounded unknowns last");
+return STATUS_OK;
+#line 262 "paper/pdas.nw"
+}
+
+#line 217 "paper/pdas.nw"
+int pdas_alloc(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  const cholmod_sparse *A = w->qp->A;
+  size_t nz = (size_t) ((const int *) A->p)[w->n], nc = (size_t) w->nc + 1;
+  pd->K = *A;                /* the header: p and i are shared with A */
+  pd->K.x = malloc((nz + 1) * sizeof(double));
+  pd->K.nzmax = nz, pd->K.stype = -1;
+  pd->act = malloc(nc), pd->tc = malloc(nc * sizeof *pd->tc);
+  pd->fr = malloc(nc * sizeof *pd->fr);
+  pd->f = malloc(nc * sizeof *pd->f), pd->y = malloc(nc * sizeof *pd->y);
+  pd->r = malloc(nc * sizeof *pd->r);
+  pd->Lcc = malloc(nc * nc * sizeof *pd->Lcc);
+  pd->S = malloc(nc * nc * sizeof *pd->S), pd->M = malloc(nc * nc * sizeof *pd->M);
+  if (!pd->K.x || !pd->act || !pd->tc || !pd->fr || !pd->f || !pd->y || !pd->r
+      || !pd->Lcc || !pd->S || !pd->M)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas, "
+                      "nc = %d)", w->nc);
+  memcpy(pd->K.x, A->x, nz * sizeof(double));
+  pd->first = w->n - w->nc;
+  return analyse_contact_last(w, st);
+}
+
+#line 280 "paper/pdas.nw"
+void pdas_free(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  free(pd->K.x), free(pd->act), free(pd->tc), free(pd->fr);
+  free(pd->f), free(pd->y), free(pd->r), free(pd->Lcc), free(pd->S), free(pd->M);
+  cholmod_free_factor(&pd->Ls, w->cm), cholmod_free_factor(&pd->L, w->cm);
+  cholmod_free_dense(&pd->rhs, w->cm), cholmod_free_dense(&pd->sol, w->cm);
+  cholmod_free_dense(&pd->Lb, w->cm);
+  cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
+}
+
+#line 192 "paper/pdas.nw"
+/* the first active set: all of I; a warm start guesses after condensing */
+void pdas_set(Qp_workspace *w, int warm)
+{
+  Pdas_workspace *pd = &w->pdas;
+  pd->warm = warm, pd->condensed = 0;
+  for (int c = 0; c < w->nc; c++) pd->act[c] = 1;
+}
+
+/* the size of the active set */
+static int count_act(const Qp_workspace *w)
+{
+  int m = 0;
+  for (int c = 0; c < w->nc; c++) m += w->pdas.act[c];
+  return m;
+}
+
+#line 390 "paper/pdas.nw"
+/* K = A + diag(A_ii) on the bounded unknowns; the values only */
+static void fill_contact_matrix(Qp_workspace *w)
+{
+  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
+  double *Kx = w->pdas.K.x;
+  memcpy(Kx, w->qp->A->x, (size_t) Ap[w->n] * sizeof *Kx);
+  for (int c = 0; c < w->nc; c++) {
+    int j = w->qp->ic[c];
+    for (int k = Ap[j]; k < Ap[j + 1]; k++)
+      if (Ai[k] == j) Kx[k] += w->d[j];
+  }
+}
+
+#line 410 "paper/pdas.nw"
+/* Lcc = the rows and columns first..n-1 of L, row-major, lower */
+static void read_trailing_block(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  const cholmod_factor *L = pd->L;
+  const double *Lx = L->x;
+  int nc = w->nc, first = pd->first;
+  memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
+  if (L->is_super) {
+    
+#line 430 "paper/pdas.nw"
+const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
+for (size_t s = 0; s < L->nsuper; s++) {
+  int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
+  for (int k = k1 > first ? k1 : first; k < k2; k++)
+    for (int q = k - k1; q < nrow; q++)
+      pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
+        Lx[px[s] + q + (size_t) (k - k1) * nrow];
+}
+#line 420 "paper/pdas.nw"
+  } else {
+    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    for (int k = first; k < w->n; k++)
+      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
+        pd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
+  }
+}
+
+#line 443 "paper/pdas.nw"
+static void schur_complement(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  int nc = w->nc;
+  if (nc == 0) return;
+  gsl_matrix_view L = gsl_matrix_view_array(pd->Lcc, nc, nc),
+                  LLt = gsl_matrix_view_array(pd->M, nc, nc);
+  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, &L.matrix, 0.0, &LLt.matrix);
+  for (int t = 0; t < nc; t++)
+    for (int u = 0; u <= t; u++) {
+      int a = pd->tc[t], b = pd->tc[u];
+      double v = pd->M[(size_t) t * nc + u] - (t == u ? w->d[w->qp->ic[a]] : 0);
+      pd->S[(size_t) a * nc + b] = pd->S[(size_t) b * nc + a] = v;
+    }
+}
+
+#line 463 "paper/pdas.nw"
+static int condensed_load(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  const double *b = w->qp->b;
+  memcpy(pd->rhs->x, b, (size_t) w->n * sizeof *b);
+  if (solve_pair(w, CHOLMOD_P, CHOLMOD_L, &pd->rhs, st)) return st->code;
+  cholmod_dense *swap = pd->Lb;
+  pd->Lb = pd->rhs, pd->rhs = swap;      /* keep z, reuse the old vector */
+  const double *z = pd->Lb->x;
+  pd->bu2 = 0;
+  for (int i = 0; i < w->n; i++)
+    if (w->bnd[i] < 0) pd->bu2 += b[i] * b[i];
+  for (int t = 0; t < w->nc; t++) {
+    double s = 0;
+    for (int u = 0; u <= t; u++) s += pd->Lcc[(size_t) t * w->nc + u] * z[pd->first + u];
+    pd->f[pd->tc[t]] = s;
+  }
+  return STATUS_OK;
+}
+
+#line 366 "paper/pdas.nw"
+static int condense(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  cholmod_common *cm = w->cm;
+  int print = cm->print, final_ll = cm->final_ll, ok;
+  fill_contact_matrix(w);
+  cholmod_free_factor(&pd->L, cm);
+  cm->print = 0, cm->final_ll = 1;  /* a singular K is our message to give */
+  pd->L = cholmod_copy_factor(pd->Ls, cm);
+  ok = pd->L && cholmod_factorize(&pd->K, pd->L, cm) && cm->status >= CHOLMOD_OK;
+  cm->print = print, cm->final_ll = final_ll;
+  if (!ok)
+    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to factorise "
+                      "(CHOLMOD status %d)", cm->status);
+  if (pd->L->minor < pd->L->n) return SINGULAR;
+  read_trailing_block(w);
+  schur_complement(w);
+  int code = condensed_load(w, st);
+  pd->condensed = !code;
+  return code;
+}
+
+#line 505 "paper/pdas.nw"
+/* y = lo on the active set, the solution of the Newton system off it */
+static int newton_solve(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  int nc = w->nc, m = 0;
+  const double *lo = w->qp->lo;
+  
+#line 530 "paper/pdas.nw"
+for (int c = 0; c < nc; c++)
+  if (pd->act[c]) pd->y[c] = lo[c];
+  else pd->fr[m++] = c;
+for (int a = 0; a < m; a++) {
+  const double *Sa = pd->S + (size_t) pd->fr[a] * nc;
+  double s = pd->f[pd->fr[a]];
+  for (int c = 0; c < nc; c++) if (pd->act[c]) s -= Sa[c] * lo[c];
+  pd->r[a] = s;
+  for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
+}
+#line 512 "paper/pdas.nw"
+  if (m == 0) return STATUS_OK;
+  gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
+  gsl_vector_view r = gsl_vector_view_array(pd->r, m);
+  double dmin = INFINITY, dmax = 0;
+  if (gsl_linalg_cholesky_decomp1(&M.matrix)) return SINGULAR;
+  for (int a = 0; a < m; a++) {
+    double p = pd->M[(size_t) a * m + a] * pd->M[(size_t) a * m + a];
+    dmin = fmin(dmin, p), dmax = fmax(dmax, p);
+  }
+  if (!(dmin >= PDAS_RCOND_MIN * dmax)) return SINGULAR;
+  gsl_linalg_cholesky_svx(&M.matrix, &r.vector);
+  for (int a = 0; a < m; a++) pd->y[pd->fr[a]] = pd->r[a];
+  return STATUS_OK;
+}
+
+#line 547 "paper/pdas.nw"
+static void condensed_forces(Qp_workspace *w)
+{
+  const Pdas_workspace *pd = &w->pdas;
+  for (int c = 0; c < w->nc; c++) {
+    const double *Sc = pd->S + (size_t) c * w->nc;
+    double s = -pd->f[c];
+    for (int e = 0; e < w->nc; e++) s += Sc[e] * pd->y[e];
+    w->T[c] = s;
+  }
+}
+
+#line 561 "paper/pdas.nw"
+static double condensed_kkt(const Qp_workspace *w)
+{
+  const Pdas_workspace *pd = &w->pdas;
+  double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
+  
+#line 575 "paper/pdas.nw"
+for (int c = 0; c < w->nc; c++) {
+  double T = w->T[c], gap = pd->y[c] - w->qp->lo[c], bc = w->qp->b[w->qp->ic[c]];
+  if (T < 0) tn += T * T;
+  if (gap < 0) inf += gap * gap;
+  comp += fabs(T) * fabs(gap);
+  bb += bc * bc, axax += (bc + T) * (bc + T);
+  yy += pd->y[c] * pd->y[c], ll += w->qp->lo[c] * w->qp->lo[c];
+}
+#line 566 "paper/pdas.nw"
+  double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
+  double k = fmax(qp_ratio(sqrt(tn), sf),
+                  fmax(qp_ratio(sqrt(inf), su),
+                       qp_ratio(qp_ratio(comp, sf), su)));
+  return isfinite(tn + inf + comp + sf + su) ? k : NAN;
+}
+
+#line 592 "paper/pdas.nw"
+/* act = { c : T_c + A_ii (lo_c - y_c) > 0 }; 1 if it did not change */
+static int predict_active_set(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  int same = 1;
+  for (int c = 0; c < w->nc; c++) {
+    char a = w->T[c] + w->d[w->qp->ic[c]] * (w->qp->lo[c] - pd->y[c]) > 0;
+    same &= a == pd->act[c];
+    pd->act[c] = a;
+  }
+  return same;
+}
+
+#line 612 "paper/pdas.nw"
+static int expand(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  double *v = pd->rhs->x;
+  memcpy(v, pd->Lb->x, (size_t) w->n * sizeof *v);
+  for (int t = 0; t < w->nc; t++) {
+    double s = 0;
+    for (int u = t; u < w->nc; u++)
+      s += pd->Lcc[(size_t) u * w->nc + t] * pd->y[pd->tc[u]];
+    v[pd->first + t] = s;
+  }
+  if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &pd->rhs, st)) return st->code;
+  memcpy(w->x, pd->rhs->x, (size_t) w->n * sizeof *w->x);
+  for (int c = 0; c < w->nc; c++) w->x[w->qp->ic[c]] = pd->y[c];
+  qp_refresh(w);
+  return STATUS_OK;
+}
+
+#line 637 "paper/pdas.nw"
+static int refine(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  double *v = pd->rhs->x;
+  for (int i = 0; i < w->n; i++) v[i] = w->bnd[i] < 0 ? -w->g[i] : 0;
+  if (solve_pair(w, CHOLMOD_P, CHOLMOD_L, &pd->rhs, st)) return st->code;
+  v = pd->rhs->x;
+  memset(v + pd->first, 0, (size_t) w->nc * sizeof *v);
+  if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &pd->rhs, st)) return st->code;
+  v = pd->rhs->x;
+  for (int i = 0; i < w->n; i++) if (w->bnd[i] < 0) w->x[i] += v[i];
+  qp_refresh(w);
+  return STATUS_OK;
+}
+
+#line 307 "paper/pdas.nw"
+int pdas_iterate(Qp_workspace *w, Status *st)
+{
+  Pdas_workspace *pd = &w->pdas;
+  int code;
+  if (!pd->condensed) {
+    
+#line 327 "paper/pdas.nw"
+if ((code = condense(w, st)) == SINGULAR)
+  return qp_not_held(w, st, "A is singular even with every bound held", w->nc);
+if (code) return code;
+if (pd->warm) {
+  for (int c = 0; c < w->nc; c++) pd->y[c] = w->x[w->qp->ic[c]];
+  condensed_forces(w);
+  predict_active_set(w);
+}
+#line 313 "paper/pdas.nw"
+  }
+  if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
+    pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
+    code = newton_solve(w);
+  }
+  if (code == SINGULAR)
+    return qp_not_held(w, st, "the Newton matrix is singular", count_act(w));
+  condensed_forces(w);
+  w->kkt = condensed_kkt(w);
+  
+#line 346 "paper/pdas.nw"
+int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
+if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
+if ((code = expand(w, st))) return code;
+if (w->kkt > w->opt.tol && (same || solved) && (code = refine(w, st))) return code;
+if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
+return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
+  "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
+  "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
+#line 323 "paper/pdas.nw"
+}
+
+#line 676 "paper/pdas.nw"
+/* *c = a workspace of the Newton method for w's problem, condensed at
+   its current values (NULL when it cannot be allocated) */
+int pdas_condense_apart(const Qp_workspace *w, Qp_workspace **c, Status *st)
+{
+  Qp_options opt = { QP_PDAS, 1, 1, 1 };
+  int code;
+  if (!(*c = qp_alloc(w->qp, &opt, w->cm, st))) return st->code;
+  code = qp_read_values(*c, st);
+  if (!code && (code = condense(*c, st)) == SINGULAR)
+    code = status_set(st, STATUS_NUMERIC, "qp_schur: A is singular even "
+                      "with every bounded unknown held");
+  return code;
+}
+
+#line 693 "paper/pdas.nw"
+/* S = the Schur complement of w, its diagonal raised by shift A_ii */
+void pdas_schur(const Qp_workspace *w, double shift, double *S)
+{
+  int nc = w->nc;
+  memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
+  for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->qp->ic[k]];
+}

@@ -1,0 +1,329 @@
+#line 357 "paper/qp.nw"
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "qp_private.h"
+
+#line 423 "paper/qp.nw"
+/* the relative KKT residual of x; g = Ax - b if known, else NULL;
+   T (nc, may be NULL) receives the contact forces */
+double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
+                   double *T)
+{
+  const double *b = qp->b;
+  double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
+  for (int j = 0, c = 0; j < (int) qp->A->ncol; j++) {
+    double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
+    bb += b[j] * b[j];
+    axax += axj * axj;
+    xx += x[j] * x[j];
+    if (c < qp->nc && qp->ic[c] == j) {
+      
+#line 446 "paper/qp.nw"
+double gap = x[j] - qp->lo[c];
+if (r < 0) tn += r * r;          /* a pulling contact force */
+if (gap < 0) inf += gap * gap;   /* a penetration */
+comp += fabs(r) * fabs(gap);     /* a force without contact */
+ll += qp->lo[c] * qp->lo[c];
+if (T) T[c] = r;
+#line 437 "paper/qp.nw"
+      c++;
+    } else
+      rf += r * r;
+  }
+  
+#line 457 "paper/qp.nw"
+double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
+double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
+                fmax(qp_ratio(sqrt(inf), su),
+                     qp_ratio(qp_ratio(comp, sf), su)));
+return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
+#line 442 "paper/qp.nw"
+}
+
+#line 465 "paper/qp.nw"
+double qp_kkt(const Qp *qp, const double *x, double *T)
+{
+  return qp_kkt_eval(qp, x, NULL, T);
+}
+
+#line 494 "paper/qp.nw"
+/* y = A x */
+void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
+{
+  for (int j = 0; j < (int) A->ncol; j++) y[j] = qp_row_dot(A, j, x);
+}
+
+/* g = A x - b, then kkt and T at x */
+void qp_refresh(Qp_workspace *w)
+{
+  qp_matvec(w->qp->A, w->x, w->g);
+  for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
+  w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
+}
+
+#line 559 "paper/qp.nw"
+Qp_options qp_options_default(Qp_method method)
+{
+  return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
+}
+
+#line 568 "paper/qp.nw"
+static int check_options(const Qp_options *opt, Status *st)
+{
+  if (opt->method != QP_PDAS && opt->method != QP_PSOR
+      && opt->method != QP_CGSSOR)
+    return status_set(st, STATUS_INPUT, "qp_alloc: unknown method %d",
+                      (int) opt->method);
+  if (!(opt->tol > 0) || opt->max_iter < 1)
+    return status_set(st, STATUS_INPUT, "qp_alloc: tol = %g must be positive "
+                      "and max_iter = %d at least 1", opt->tol, opt->max_iter);
+  if (opt->method != QP_PDAS && !(opt->omega > 0 && opt->omega < 2))
+    return status_set(st, STATUS_INPUT, "qp_alloc: omega = %g is not in (0, 2)",
+                      opt->omega);
+  return STATUS_OK;
+}
+
+#line 533 "paper/qp.nw"
+static int check_problem(const Qp *qp, const Qp_options *opt,
+                         cholmod_common *cm, Status *st)
+{
+  if (!qp || !qp->A || !qp->b || !opt || !cm
+      || (qp->nc > 0 && (!qp->ic || !qp->lo)))
+    return status_set(st, STATUS_INPUT, "qp_alloc: a NULL argument");
+  const cholmod_sparse *A = qp->A;
+  if (A->nrow != A->ncol || A->ncol > INT_MAX || A->stype != 0
+      || A->itype != CHOLMOD_INT || A->xtype != CHOLMOD_REAL
+      || A->dtype != CHOLMOD_DOUBLE || !A->packed || !A->sorted)
+    return status_set(st, STATUS_INPUT, "qp_alloc: A must be square, real "
+                      "double with int indices, both triangles stored "
+                      "(stype 0), sorted and packed");
+  if (qp->nc < 0 || qp->nc > (int) A->ncol)
+    return status_set(st, STATUS_INPUT, "qp_alloc: nc = %d is not in [0, %d]",
+                      qp->nc, (int) A->ncol);
+  for (int c = 0; c < qp->nc; c++)
+    if (qp->ic[c] < (c ? qp->ic[c - 1] + 1 : 0) || qp->ic[c] >= (int) A->ncol)
+      return status_set(st, STATUS_INPUT, "qp_alloc: ic[%d] = %d: the bounded "
+                        "unknowns must increase within [0, %d)", c, qp->ic[c],
+                        (int) A->ncol);
+  return check_options(opt, st);
+}
+
+#line 587 "paper/qp.nw"
+static int alloc_common(Qp_workspace *w, Status *st)
+{
+  size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
+  w->bnd = malloc(n * sizeof *w->bnd);
+  w->lo = malloc(n * sizeof *w->lo), w->d = malloc(n * sizeof *w->d);
+  w->x = malloc(n * sizeof *w->x), w->g = malloc(n * sizeof *w->g);
+  w->T = malloc(nc * sizeof *w->T);
+  if (!w->bnd || !w->lo || !w->d || !w->x || !w->g || !w->T)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (n = %d)",
+                      w->n);
+  for (int i = 0; i < w->n; i++) w->bnd[i] = -1;
+  for (int c = 0; c < w->nc; c++) w->bnd[w->qp->ic[c]] = c;
+  return STATUS_OK;
+}
+
+#line 609 "paper/qp.nw"
+/* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
+static int check_pattern(Qp_workspace *w, Status *st)
+{
+  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
+  int *next = malloc(((size_t) w->n + 1) * sizeof *next);
+  int oom = !next, bad = oom;
+  for (int i = 0; !bad && i < w->n; i++) next[i] = Ap[i];
+  for (int j = 0; !bad && j < w->n; j++)
+    for (int k = Ap[j]; !bad && k < Ap[j + 1]; k++) {
+      int i = Ai[k];
+      bad = next[i] >= Ap[i + 1] || Ai[next[i]++] != j;
+    }
+  for (int i = 0; !bad && i < w->n; i++) bad = next[i] != Ap[i + 1];
+  free(next);
+  if (oom) return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory");
+  return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
+    "pattern of A is not symmetric (both triangles must be stored)");
+}
+
+#line 514 "paper/qp.nw"
+Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
+                       cholmod_common *cm, Status *st)
+{
+  if (check_problem(qp, opt, cm, st)) return NULL;
+  Qp_workspace *w = calloc(1, sizeof *w);
+  if (!w) { status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory"); return NULL; }
+  w->qp = qp, w->opt = *opt, w->cm = cm;
+  w->n = (int) qp->A->ncol, w->nc = qp->nc;
+  int code = alloc_common(w, st);
+  if (!code) code = check_pattern(w, st);
+  if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
+  if (!code && opt->method == QP_CGSSOR) code = mprgp_alloc(w, st);
+  if (code) { qp_free(w); return NULL; }
+  return w;
+}
+
+#line 631 "paper/qp.nw"
+void qp_free(Qp_workspace *w)
+{
+  if (!w) return;
+  pdas_free(w);
+  mprgp_free(w);
+  free(w->bnd), free(w->lo), free(w->d);
+  free(w->x), free(w->g), free(w->T);
+  free(w);
+}
+
+#line 651 "paper/qp.nw"
+/* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
+static int read_matrix(Qp_workspace *w, Status *st)
+{
+  const cholmod_sparse *A = w->qp->A;
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  w->normA = 0;
+  for (int j = 0; j < w->n; j++) {
+    double sum = 0;
+    w->d[j] = 0;
+    for (int k = Ap[j]; k < Ap[j + 1]; k++) {
+      if (!isfinite(Ax[k])) return status_set(st, STATUS_NUMERIC,
+        "qp_set: A(%d,%d) = %g is not finite", Ai[k], j, Ax[k]);
+      sum += fabs(Ax[k]);
+      if (Ai[k] == j) w->d[j] = Ax[k];
+    }
+    if (!(w->d[j] > 0)) return status_set(st, STATUS_INPUT, "qp_set: A(%d,%d) = "
+      "%g: a diagonal entry must be positive (an unknown without stiffness?)",
+      j, j, w->d[j]);
+    w->normA = fmax(w->normA, sum);
+  }
+  return STATUS_OK;
+}
+
+#line 677 "paper/qp.nw"
+/* b and lo finite; lo expanded to all unknowns */
+static int read_vectors(Qp_workspace *w, Status *st)
+{
+  for (int i = 0; i < w->n; i++)
+    if (!isfinite(w->qp->b[i])) return status_set(st, STATUS_NUMERIC,
+      "qp_set: b[%d] = %g is not finite", i, w->qp->b[i]);
+  for (int i = 0; i < w->n; i++) {
+    int c = w->bnd[i];
+    w->lo[i] = c < 0 ? -INFINITY : w->qp->lo[c];
+    if (c >= 0 && !isfinite(w->lo[i])) return status_set(st, STATUS_NUMERIC,
+      "qp_set: lo[%d] = %g is not finite", c, w->lo[i]);
+  }
+  return STATUS_OK;
+}
+
+#line 695 "paper/qp.nw"
+/* the current values of A, b and lo, read and checked */
+int qp_read_values(Qp_workspace *w, Status *st)
+{
+  int code = read_matrix(w, st);
+  if (!code) code = read_vectors(w, st);
+  return code;
+}
+
+#line 707 "paper/qp.nw"
+int qp_set(Qp_workspace *w, const double *x0, Status *st)
+{
+  int code = qp_read_values(w, st);
+  if (code) return code;
+  for (int i = 0; i < w->n; i++) w->x[i] = qp_proj(w, i, x0 ? x0[i] : 0);
+  w->iter = 0;
+  qp_refresh(w);
+  if (!isfinite(w->kkt))
+    return status_set(st, STATUS_NUMERIC, "qp_set: the starting point is not finite");
+  if (w->opt.method == QP_PDAS) pdas_set(w, x0 != NULL);
+  if (w->opt.method == QP_CGSSOR) mprgp_set(w);
+  return STATUS_OK;
+}
+
+#line 746 "paper/qp.nw"
+const char *qp_method_name(Qp_method m)
+{
+  return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
+       : m == QP_CGSSOR ? "cgssor" : "?";
+}
+
+#line 728 "paper/qp.nw"
+int qp_iterate(Qp_workspace *w, Status *st)
+{
+  Qp_method m = w->opt.method;
+  int code = m == QP_PDAS ? pdas_iterate(w, st)
+           : m == QP_PSOR ? psor_iterate(w, st) : mprgp_iterate(w, st);
+  w->iter++;
+  if (!code && !isfinite(w->kkt))
+    code = status_set(st, STATUS_NUMERIC, "%s: NaN or infinity after %d "
+                      "iterations", qp_method_name(m), w->iter);
+  return code;
+}
+
+int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
+
+const double *qp_x(const Qp_workspace *w) { return w->x; }
+
+#line 793 "paper/qp.nw"
+/* bounded unknowns at their bound */
+int qp_count_active(const Qp_workspace *w)
+{
+  int m = 0;
+  for (int c = 0; c < w->nc; c++) m += !qp_is_free(w, w->qp->ic[c]);
+  return m;
+}
+
+/* "" or why nothing may hold the body, for a message */
+const char *qp_hint(const Qp_workspace *w)
+{
+  return qp_count_active(w) ? "" : "; no bounded unknown touches its bound: "
+    "if only the contact holds the body, the load lifts it off";
+}
+
+#line 812 "paper/qp.nw"
+/* (4.3) has no solution: why, with how many bounds active */
+int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
+                int active)
+{
+  return status_set(st, STATUS_NUMERIC, "%s: the body is not held (a load "
+    "that lifts it off, with nothing else holding it): %s, with %d of %d "
+    "bounds active, at iteration %d", qp_method_name(w->opt.method), why,
+    active, w->nc, w->iter + 1);
+}
+
+#line 784 "paper/qp.nw"
+static int not_converged(const Qp_workspace *w, Status *st)
+{
+  return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
+    "iteration%s (kkt = %.3g > tol = %.3g)%s", qp_method_name(w->opt.method),
+    w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
+}
+
+#line 762 "paper/qp.nw"
+int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
+             Qp_report *rep, Status *st)
+{
+  int code = qp_set(w, x0, st);
+  if (code) return code;
+  while (!code && (!qp_test(w) || (w->iter == 0 && w->opt.method == QP_PDAS)))
+    code = w->iter >= w->opt.max_iter ? not_converged(w, st)
+                                      : qp_iterate(w, st);
+  memcpy(x, w->x, (size_t) w->n * sizeof *x);
+  if (T) memcpy(T, w->T, (size_t) w->nc * sizeof *T);
+  if (rep) {
+    rep->iterations = w->iter, rep->kkt = w->kkt;
+    rep->active = qp_count_active(w), rep->converged = qp_test(w);
+  }
+  return code;
+}
+
+#line 832 "paper/qp.nw"
+int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
+{
+  Qp_workspace *c = NULL;
+  int code = STATUS_OK;
+  if (w->opt.method != QP_PDAS || !w->pdas.condensed)
+    code = pdas_condense_apart(w, &c, st);
+  if (!code) pdas_schur(c ? c : w, shift, S);
+  qp_free(c);
+  return code;
+}

@@ -1,0 +1,131 @@
+#line 164 "paper/qp.nw"
+#ifndef CONTACTOPT_QP_PRIVATE_H
+#define CONTACTOPT_QP_PRIVATE_H
+/* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
+   it, no other module does. */
+#include "qp.h"
+
+#line 219 "paper/qp.nw"
+typedef struct {
+  cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
+                            values, stype -1 */
+  cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, bounded
+                            unknowns last */
+  cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
+  int first;             /* n - nc: where the bounded unknowns start in L */
+  int *tc;               /* nc: the bounded unknown c at position first + t */
+  double *Lcc;           /* nc x nc, row-major: the trailing block of L */
+  double *S;             /* nc x nc, row-major: the Schur complement of A */
+  double *f;             /* nc: the condensed load */
+  double *y;             /* nc: the condensed iterate x[ic] */
+  double *M;             /* nc x nc: S on the free set, then its factor
+                            (L_cc L_cc' while condensing) */
+  double *r;             /* nc: a right-hand side on the free set */
+  int *fr;               /* nc: the free set, listed */
+  double bu2;            /* ||b_u||^2, for the residual */
+  cholmod_dense *rhs;    /* n x 1: the vector that two solves overwrite */
+  cholmod_dense *sol;    /* n x 1: the vector between the two solves */
+  cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
+  cholmod_dense *Lb;     /* n x 1: z = L \ P b */
+  char *act;             /* nc: the active set of the next Newton step */
+  int condensed;         /* S, f belong to the current values of A and b */
+  int warm;              /* the first active set is to be guessed from x0 */
+} Pdas_workspace;
+
+#line 248 "paper/qp.nw"
+typedef struct {
+  double *p;             /* n: the conjugate direction */
+  double *q;             /* n: A p, or A beta in a proportioning step */
+  double *z;             /* n: the preconditioned free gradient, or beta */
+  double abar;           /* the expansion step length 1.9 / normA */
+  int restart;           /* 1: p must restart from z (the face changed) */
+} Mprgp_workspace;
+
+#line 194 "paper/qp.nw"
+struct Qp_workspace {
+  const Qp *qp;          /* the problem: its pattern fixed, values may change */
+  Qp_options opt;        /* a copy of the caller's options */
+  cholmod_common *cm;    /* the caller's CHOLMOD environment */
+  int n;                 /* the number of unknowns: A is n x n */
+  int nc;                /* the number of bounded unknowns, |I| */
+  int *bnd;              /* n: c when unknown i = ic[c], -1 when unbounded */
+  double *lo;            /* n: the lower bound of each unknown, -INFINITY if none */
+  double *d;             /* n: the diagonal A_ii > 0 */
+  double normA;          /* max row sum of |A|: an upper bound of ||A||_2 */
+  double *x;             /* n: the iterate */
+  double *g;             /* n: the gradient A x - b at x */
+  double *T;             /* nc: the contact forces g[ic[c]] (4.6) */
+  double kkt;            /* qp_kkt at x */
+  int iter;              /* iterations since qp_set */
+  Pdas_workspace pdas;   /* method pdas only (pdas.c), zero otherwise */
+  Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
+};
+
+#line 400 "paper/qp.nw"
+/* num/den, and 0 whenever num is 0 (den may then be 0 too) */
+static inline double qp_ratio(double num, double den)
+{
+  return num == 0 ? 0 : num / den;
+}
+
+/* (Ax)_j: column j of A, which is also its row j */
+static inline double qp_row_dot(const cholmod_sparse *A, int j,
+                                const double *x)
+{
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  double s = 0;
+  for (int k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
+  return s;
+}
+
+#line 479 "paper/qp.nw"
+/* unknown i is off its bound */
+static inline int qp_is_free(const Qp_workspace *w, int i)
+{
+  return w->x[i] > w->lo[i];
+}
+
+/* the projection of value y of unknown i onto x_i >= lo_i */
+static inline double qp_proj(const Qp_workspace *w, int i, double y)
+{
+  return y < w->lo[i] ? w->lo[i] : y;
+}
+
+#line 261 "paper/qp.nw"
+/* y = A x */
+void qp_matvec(const cholmod_sparse *A, const double *x, double *y);
+/* the relative KKT residual of x; g = Ax - b if known, else NULL;
+   T (nc, may be NULL) receives the contact forces */
+double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
+                   double *T);
+/* g = A x - b, then kkt and T at x */
+void qp_refresh(Qp_workspace *w);
+/* the current values of A, b and lo, read and checked */
+int qp_read_values(Qp_workspace *w, Status *st);
+/* bounded unknowns at their bound */
+int qp_count_active(const Qp_workspace *w);
+/* "" or why nothing may hold the body, for a message */
+const char *qp_hint(const Qp_workspace *w);
+/* (4.3) has no solution: why, with how many bounds active */
+int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
+                int active);
+
+#line 285 "paper/qp.nw"
+/* pdas.c: the primal-dual active set method */
+int pdas_alloc(Qp_workspace *w, Status *st);
+void pdas_set(Qp_workspace *w, int warm);
+int pdas_iterate(Qp_workspace *w, Status *st);
+void pdas_free(Qp_workspace *w);
+int pdas_condense_apart(const Qp_workspace *w, Qp_workspace **c,
+                        Status *st);
+void pdas_schur(const Qp_workspace *w, double shift, double *S);
+/* mprgp.c: MPRGP, CG-SSOR with projection */
+int mprgp_alloc(Qp_workspace *w, Status *st);
+void mprgp_set(Qp_workspace *w);
+int mprgp_iterate(Qp_workspace *w, Status *st);
+void mprgp_free(Qp_workspace *w);
+/* psor.c: projected SOR */
+int psor_iterate(Qp_workspace *w, Status *st);
+#line 183 "paper/qp.nw"
+#endif
