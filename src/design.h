@@ -50,5 +50,11 @@ void design_multipliers_free(Design_multipliers *m);
 #line 143 "paper/design.nw"
 /* X_i = alpha0(x_i), i = 0..N, for the shape sh */
 int design_shape(const Problem *p, const Shape *sh, double *X, Status *st);
+#line 157 "paper/design.nw"
+/* X = alpha0 if design_violation(alpha0) <= tol, else P_B(alpha0);
+   violation = design_violation(alpha0), moved = ||X - alpha0||_2 */
+int design_feasible_start(const Design_set *B, const double *alpha0,
+                          double tol, double *X, double *violation,
+                          double *moved, Status *st);
 #line 99 "paper/design.nw"
 #endif

@@ -1,8 +1,10 @@
-#line 85 "paper/grad.nw"
+#line 123 "paper/grad.nw"
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "grad.h"
 
-#line 93 "paper/grad.nw"
+#line 137 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G);
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
@@ -21,7 +23,7 @@ int grad_energy(const Model *md, double *G, Status *st)
   for (int t = 0; t < moving; t++) grad_element(md, t, G);
   return STATUS_OK;
 }
-#line 128 "paper/grad.nw"
+#line 172 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
@@ -46,7 +48,7 @@ static void grad_element(const Model *md, int t, double *G)
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 157 "paper/grad.nw"
+#line 201 "paper/grad.nw"
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
                                   double d, int m)
@@ -57,11 +59,115 @@ static double grad_element_height(const double gy[3], const double q[6],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 171 "paper/grad.nw"
+#line 215 "paper/grad.nw"
 static double grad_body_force(const double F[2], const double q[6],
                               double gy_m)
 {
   double work = 0;
   for (int v = 0; v < 3; v++) work += F[0] * q[2 * v] + F[1] * q[2 * v + 1];
   return work * gy_m / 6;
+}
+#line 245 "paper/grad.nw"
+Grad_check *grad_check_new(int N, Status *st)
+{
+  if (N < 1) {
+    status_set(st, STATUS_INPUT, "gradcheck: N = %d < 1", N);
+    return NULL;
+  }
+  Grad_check *gc = malloc(sizeof *gc);
+  double *v = malloc(4 * ((size_t) N + 1) * sizeof *v);
+  if (!gc || !v) {
+    free(gc);
+    free(v);
+    status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
+    return NULL;
+  }
+  gc->N = N;
+  gc->worst = 0;
+  gc->G = v;
+  gc->fd = gc->G + N + 1;
+  gc->err = gc->fd + N + 1;
+  gc->X = gc->err + N + 1;
+  return gc;
+}
+
+void grad_check_free(Grad_check *gc)
+{
+  if (!gc) return;
+  free(gc->G);
+  free(gc);
+}
+#line 280 "paper/grad.nw"
+/* E at the design X with X_i = x */
+static int energy_with(Model *md, double *X, int i, double x, double *E,
+                       Status *st)
+{
+  X[i] = x;
+  int rc = model_solve(md, X, st);
+  *E = md->energy;
+  return rc;
+}
+
+/* fd = dE/dX_i by a difference with step s; X is restored */
+static int grad_difference(Model *md, double *X, int i, double s,
+                           double *fd, Status *st)
+{
+  double x0 = X[i];
+  int rc;
+  if (x0 - s >= 0) {
+    
+#line 307 "paper/grad.nw"
+double Em, Ep;
+if (!(rc = energy_with(md, X, i, x0 - s, &Em, st))
+    && !(rc = energy_with(md, X, i, x0 + s, &Ep, st)))
+  *fd = (Ep - Em) / (2 * s);
+#line 298 "paper/grad.nw"
+  } else {
+    
+#line 314 "paper/grad.nw"
+double E0, E1, E2;
+if (!(rc = energy_with(md, X, i, x0, &E0, st))
+    && !(rc = energy_with(md, X, i, x0 + s, &E1, st))
+    && !(rc = energy_with(md, X, i, x0 + 2 * s, &E2, st)))
+  *fd = (-3 * E0 + 4 * E1 - E2) / (2 * s);
+#line 300 "paper/grad.nw"
+  }
+  X[i] = x0;
+  return rc;
+}
+#line 322 "paper/grad.nw"
+static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
+                           Status *st)
+{
+  gc->err[i] = INFINITY;
+  gc->fd[i] = NAN;
+  for (double step = 1e-2; step >= 1e-6 * 0.999; step /= 10) {
+    double fd;
+    int rc = grad_difference(md, gc->X, i, step * md->problem->C0, &fd, st);
+    if (rc) return rc;
+    double e = fabs(fd - gc->G[i]) / (Gmax > 0 ? Gmax : 1);
+    if (e < gc->err[i]) { gc->err[i] = e; gc->fd[i] = fd; }
+  }
+  return STATUS_OK;
+}
+#line 340 "paper/grad.nw"
+int grad_check(Model *md, const double *X, Grad_check *gc,
+               Grad_check_progress progress, void *data, Status *st)
+{
+  int rc, n = gc->N + 1;
+  double Gmax = 0;
+  if (gc->N != md->problem->N)
+    return status_set(st, STATUS_INPUT, "gradcheck: made for N = %d, the "
+                      "model has N = %d", gc->N, md->problem->N);
+  if ((rc = model_solve(md, X, st)) || (rc = grad_energy(md, gc->G, st)))
+    return rc;
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(gc->G[i]));
+  memcpy(gc->X, X, n * sizeof *X);
+  for (int i = 0; i < n; i++) {
+    if ((rc = grad_check_node(md, gc, i, Gmax, st))) return rc;
+    if (progress) progress(i, gc, data);
+  }
+  gc->worst = 0;
+  for (int i = 1; i < n; i++) if (gc->err[i] > gc->err[gc->worst]) gc->worst = i;
+  return model_solve(md, X, st);
 }

@@ -7,4 +7,25 @@
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
    model solved last.  It is a checked error to call it before a solve. */
 int grad_energy(const Model *md, double *G, Status *st);
+#line 99 "paper/grad.nw"
+typedef struct {
+  int N;          /* the design has N+1 nodes */
+  double *G;      /* N+1: dE/dX_i by (4.8) at X */
+  double *fd;     /* N+1: the finite difference closest to G_i */
+  double *err;    /* N+1: |fd_i - G_i| / max_k |G_k| (/ 1 when G = 0) */
+  int worst;      /* the node of the largest err, the first of equals */
+  double *X;      /* N+1: scratch, the perturbed design */
+} Grad_check;
+
+/* called once per node i, when fd[i] and err[i] are known */
+typedef void (*Grad_check_progress)(int i, const Grad_check *gc, void *data);
+
+Grad_check *grad_check_new(int N, Status *st);
+void grad_check_free(Grad_check *gc);
+/* gc->G = grad E(X) by (4.8), gc->fd its best finite differences at the
+   steps C0 1e-2 .. 1e-6; leaves the model solved at X.  progress may be
+   NULL. */
+int grad_check(Model *md, const double *X, Grad_check *gc,
+               Grad_check_progress progress, void *data, Status *st);
+#line 80 "paper/grad.nw"
 #endif

@@ -1,5 +1,4 @@
-#line 10 "paper/main.nw"
-#include <math.h>
+#line 16 "paper/main.nw"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,13 +6,8 @@
 #include <gsl/gsl_errno.h>
 #include "status.h"
 #include "scene.h"
-#include "model.h"
 #include "output.h"
-#include "grad.h"
-#include "design.h"
-#include "opt.h"
-
-#line 30 "paper/main.nw"
+#line 34 "paper/main.nw"
 static const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
@@ -68,7 +62,7 @@ static const char usage_optimize[] =
   "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
   "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
   "multipliers.dat, and initial/ and final/ with the files of solve.\n";
-#line 87 "paper/main.nw"
+#line 91 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -77,7 +71,7 @@ typedef struct {
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
-#line 98 "paper/main.nw"
+
 static int args_read(int argc, char **argv, Args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -86,12 +80,11 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
     int more = k + 1 < argc;
     if (!strcmp(s, "-o") && more) a->outdir = argv[++k];
     else if (!strcmp(s, "--matrix-market") && more) a->matrix_market = argv[++k];
-    else if (!strcmp(s, "-s") && more) {
-      if (a->noverride == MAX_OVERRIDES)
-        return status_set(st, STATUS_INPUT, "command line: more than %d -s",
-                          MAX_OVERRIDES);
-      a->override[a->noverride++] = argv[++k];
-    } else if (s[0] != '-' && !a->scene) a->scene = s;
+    else if (!strcmp(s, "-s") && more && a->noverride == MAX_OVERRIDES)
+      return status_set(st, STATUS_INPUT, "command line: more than %d -s",
+                        MAX_OVERRIDES);
+    else if (!strcmp(s, "-s") && more) a->override[a->noverride++] = argv[++k];
+    else if (s[0] != '-' && !a->scene) a->scene = s;
     else return status_set(st, STATUS_INPUT, "command line: %s: %s", s,
                            s[0] == '-' ? "unknown option or missing value"
                                        : "more than one scene");
@@ -99,396 +92,143 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 124 "paper/main.nw"
-static void output_dir(const Args *a, const char *suffix, char *dir,
-                       size_t size)
-{
-  if (a->outdir) { snprintf(dir, size, "%s", a->outdir); return; }
-  const char *base = strrchr(a->scene, '/');
-  base = base ? base + 1 : a->scene;
-  size_t len = strlen(base);
-  if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
-  snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
-}
-#line 143 "paper/main.nw"
-static int write_summary(Output *o, const Scene *s, const Model *md, Status *st)
-{
-  FILE *f = output_open(o, "summary.dat", st);
-  if (!f) return st->code;
-  fprintf(f, "# name value\n");
-  fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", s->path,
-          qp_method_name(s->solver.method), problem_model_name(s->problem.model));
-  fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
-          s->problem.N, s->problem.M, s->problem.R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
-  fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
-          md->report.kkt, md->report.iterations);
-  fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
-          md->seconds);
-  return output_close(o, f, st);
-}
-#line 162 "paper/main.nw"
-static int write_matrix_market(const char *path, cholmod_sparse *A,
-                               cholmod_common *cm, Status *st)
-{
-  char tmp[1100];
-  snprintf(tmp, sizeof tmp, "%s.partial", path);
-  FILE *f = fopen(tmp, "w");
-  if (!f) return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
-  int ok = cholmod_write_sparse(f, A, NULL, NULL, cm) >= 0;
-  ok = !fclose(f) && ok;
-  if (!ok || rename(tmp, path)) {
-    remove(tmp);
-    return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
-  }
-  return STATUS_OK;
-}
-#line 180 "paper/main.nw"
-static int solve_write(const Args *a, const Scene *s, Model *md,
+#line 132 "paper/main.nw"
+typedef struct {
+  const Args *a;            /* the command line */
+  Scene s;                  /* the scene, overrides applied */
+  Model *md;                /* the discrete problem of s.problem */
+  Output_run run;           /* the scene's facts for the summaries */
+  char dir[1024];           /* the output folder */
+} Run;
+
+static int run_command(const Args *a, const char *suffix,
+                       int (*command)(Run *r, Status *st),
                        cholmod_common *cm, Status *st)
 {
-  char dir[1024];
-  Output o;
-  output_dir(a, "", dir, sizeof dir);
-  int rc = output_begin(&o, dir, st);
+  Run r = { .a = a };
+  int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
-  if ((rc = output_state(&o, "", md, s->alpha0, st))
-      || (rc = write_summary(&o, s, md, st))) {
-    output_abort(&o);
-    return rc;
-  }
-  if (a->matrix_market && (rc = write_matrix_market(a->matrix_market, md->A, cm, st))) {
-    output_abort(&o);
-    return rc;
-  }
-  if ((rc = output_commit(&o, st))) return rc;
+  r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
+                         opt_method_name(r.s.optimizer.method),
+                         opt_metric_name(r.s.optimizer.metric) };
+  if (a->outdir) snprintf(r.dir, sizeof r.dir, "%s", a->outdir);
+  else output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
+  r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
+  rc = r.md ? command(&r, st) : (int) st->code;
+  model_free(r.md);
+  scene_free(&r.s);
+  return rc;
+}
+#line 166 "paper/main.nw"
+static int command_solve(Run *r, Status *st)
+{
+  Output o;
+  Model *md = r->md;
+  int rc = model_solve(md, r->s.alpha0, st);
+  if (rc || (rc = output_begin(&o, r->dir, st))) return rc;
+  rc = output_solve(&o, &r->run, md, r->s.alpha0, st);
+  if (!rc && r->a->matrix_market)
+    rc = output_matrix_market(r->a->matrix_market, md, st);
+  if ((rc = output_end(&o, rc, st))) return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
-         "%d of %d contact nodes active, %.3f s -> %s/\n", s->path, md->energy,
-         md->report.kkt, md->report.iterations, qp_method_name(s->solver.method),
-         md->report.active, md->dofs->nc, md->seconds, dir);
+         "%d of %d contact nodes active, %.3f s -> %s/\n", r->s.path, md->energy,
+         md->report.kkt, md->report.iterations, r->run.state_solver,
+         md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-
-static int command_solve(const Args *a, cholmod_common *cm, Status *st)
+#line 192 "paper/main.nw"
+static int command_gradcheck(Run *r, Status *st)
 {
-  Scene s;
-  int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
-  if (rc) return rc;
-  Model *md = model_new(&s.problem, &s.solver, cm, st);
-  if (!md) rc = st->code;
-  else if (!(rc = model_solve(md, s.alpha0, st)))
-    rc = solve_write(a, &s, md, cm, st);
-  model_free(md);
-  scene_free(&s);
-  return rc;
-}
-#line 234 "paper/main.nw"
-static int energy_at(Model *md, const double *X, double *E, Status *st)
-{
-  int rc = model_solve(md, X, st);
-  *E = md->energy;
-  return rc;
-}
-
-static int finite_difference(Model *md, double *X, int i, double s,
-                             double *fd, Status *st)
-{
-  double x0 = X[i], E1, E2, E0;
-  int rc, central = x0 - s >= 0;
-  X[i] = central ? x0 - s : x0;
-  if (!(rc = energy_at(md, X, &E0, st))) {
-    X[i] = x0 + s;
-    if (!(rc = energy_at(md, X, &E1, st)) && !central) {
-      X[i] = x0 + 2 * s;
-      rc = energy_at(md, X, &E2, st);
-    }
-  }
-  X[i] = x0;
-  if (!rc) *fd = central ? (E1 - E0) / (2 * s) : (-3 * E0 + 4 * E1 - E2) / (2 * s);
-  return rc;
-}
-#line 261 "paper/main.nw"
-static int best_differences(Model *md, const Scene *s, const double *G,
-                            double *best, double *err, Status *st)
-{
-  int n = s->problem.N + 1, rc = STATUS_OK;
-  double Gmax = 0, *X = malloc(n * sizeof *X);
-  if (!X) return status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
-  memcpy(X, s->alpha0, n * sizeof *X);
-  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(G[i]));
-  for (int i = 0; i < n && !rc; i++) {
-    err[i] = INFINITY;
-    for (double step = 1e-2; step >= 1e-6 * 0.999 && !rc; step /= 10) {
-      double fd;
-      if ((rc = finite_difference(md, X, i, step * s->problem.C0, &fd, st))) break;
-      double e = fabs(fd - G[i]) / (Gmax > 0 ? Gmax : 1);
-      if (e < err[i]) { err[i] = e; best[i] = fd; }
-    }
-  }
-  free(X);
-  return rc;
-}
-#line 284 "paper/main.nw"
-static int write_gradient(Output *o, const Model *md, const double *G,
-                          const double *best, const double *err, Status *st)
-{
-  FILE *f = output_open(o, "gradient.dat", st);
-  if (!f) return st->code;
-  fprintf(f, "# i x1[m] dE/dX_i[J/m^2] finite_difference[J/m^2] relative_error\n");
-  for (int i = 0; i < md->mesh->ncol; i++)
-    fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i], G[i],
-            best[i], err[i]);
-  return output_close(o, f, st);
-}
-
-static int gradcheck_write(const Args *a, const Scene *s, const Model *md,
-                           const double *G, const double *best,
-                           const double *err, Status *st)
-{
-  char dir[1024];
   Output o;
-  int worst = 0, rc;
-  for (int i = 1; i <= s->problem.N; i++) if (err[i] > err[worst]) worst = i;
-  output_dir(a, "-gradcheck", dir, sizeof dir);
-  if ((rc = output_begin(&o, dir, st))) return rc;
-  FILE *f = output_open(&o, "summary.dat", st);
-  if (!f) { output_abort(&o); return st->code; }
-  fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
-             "max_relative_error %.3e\nworst_node %d\n", s->path,
-          problem_model_name(s->problem.model), s->problem.N, md->energy, err[worst], worst);
-  if ((rc = output_close(&o, f, st)) || (rc = write_gradient(&o, md, G, best, err, st))
-      || (rc = output_commit(&o, st))) {
-    output_abort(&o);
-    return rc;
-  }
-  printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
-         s->path, err[worst], worst, dir);
-  return STATUS_OK;
-}
-#line 324 "paper/main.nw"
-static int command_gradcheck(const Args *a, cholmod_common *cm, Status *st)
-{
-  Scene s;
-  int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
-  if (rc) return rc;
-  Model *md = model_new(&s.problem, &s.solver, cm, st);
-  double *G = malloc(3 * (s.problem.N + 1) * sizeof *G);
-  if (!md) rc = st->code;
-  else if (!G) rc = status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
-  else if (!(rc = model_solve(md, s.alpha0, st)) && !(rc = grad_energy(md, G, st))) {
-    double *best = G + s.problem.N + 1, *err = best + s.problem.N + 1;
-    if (!(rc = best_differences(md, &s, G, best, err, st))
-        && !(rc = model_solve(md, s.alpha0, st)))
-      rc = gradcheck_write(a, &s, md, G, best, err, st);
-  }
-  free(G);
-  model_free(md);
-  scene_free(&s);
+  Grad_check *gc = grad_check_new(r->s.problem.N, st);
+  int rc = gc ? grad_check(r->md, r->s.alpha0, gc, NULL, NULL, st) : (int) st->code;
+  if (!rc && !(rc = output_begin(&o, r->dir, st))
+      && !(rc = output_end(&o, output_gradcheck(&o, &r->run, r->md, gc, st), st)))
+    printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
+           r->s.path, gc->err[gc->worst], gc->worst, r->dir);
+  grad_check_free(gc);
   return rc;
 }
-#line 354 "paper/main.nw"
-typedef struct {
-  int n, size;              /* iterations recorded, room */
-  int ndesign;              /* N+1 */
-  Opt_progress *p;          /* the history */
-  double *X;                /* ndesign per iteration: the iterates */
-  int failed;               /* out of memory while recording */
-} History;
-
-static int history_grow(History *h)
-{
-  int size = 2 * h->size + 16;
-  Opt_progress *p = realloc(h->p, size * sizeof *p);
-  if (p) h->p = p;
-  double *X = realloc(h->X, (size_t) size * h->ndesign * sizeof *X);
-  if (X) h->X = X;
-  if (!p || !X) return h->failed = 1;
-  h->size = size;
-  return 0;
-}
-
+#line 221 "paper/main.nw"
+#define START_TOL 1e-12     /* the violation of B that moves the start */
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
-  History *h = data;
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
          p->iteration, p->energy, p->pgnorm, p->active, p->state_iterations,
          p->seconds);
   fflush(stdout);
-  if (h->failed || (h->n == h->size && history_grow(h))) return;
-  memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
-  h->p[h->n++] = *p;
+  output_history_add(data, p, X);
 }
-#line 390 "paper/main.nw"
-static int feasible_start(const Scene *s, const Design_set *B, double *X,
+
+static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
 {
-  int n = s->problem.N + 1, rc = STATUS_OK;
-  *moved = 0;
-  memcpy(X, s->alpha0, n * sizeof *X);
-  double v = design_violation(B, X);
-  if (v <= 1e-12) return STATUS_OK;
-  if ((rc = design_project(B, s->alpha0, X, NULL, st))) return rc;
-  for (int i = 0; i < n; i++) *moved += (X[i] - s->alpha0[i]) * (X[i] - s->alpha0[i]);
-  *moved = sqrt(*moved);
-  printf("%s: the initial design is not in B (largest relative violation "
-         "%.3g): moved to the nearest point of B, at distance %.6g m\n",
-         s->path, v, *moved);
-  return STATUS_OK;
+  double v;
+  int rc = design_feasible_start(B, r->s.alpha0, START_TOL, X, &v, moved, st);
+  if (!rc && v > START_TOL)
+    printf("%s: the initial design is not in B (largest relative violation "
+           "%.3g): moved to the nearest point of B, at distance %.6g m\n",
+           r->s.path, v, *moved);
+  return rc ? rc : model_solve(r->md, X, st);
 }
-#line 409 "paper/main.nw"
-static int write_history(Output *o, const Scene *s, const History *h,
-                         Status *st)
+#line 249 "paper/main.nw"
+static int command_optimize(Run *r, Status *st)
 {
-  int rc;
-  FILE *f = output_open(o, "history.dat", st);
-  if (!f) return st->code;
-  fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
-  for (int k = 0; k < h->n; k++)
-    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
-            h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
-  if ((rc = output_close(o, f, st))) return rc;
-  if (!(f = output_open(o, "iterates.dat", st))) return st->code;
-  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration\n");
-  for (int k = 0; k < h->n; k++, fprintf(f, "\n"))
-    for (int i = 0; i < h->ndesign; i++)
-      fprintf(f, "%d %d %.10g %.17g\n", h->p[k].iteration, i,
-              s->problem.a + i * (s->problem.b - s->problem.a) / s->problem.N, h->X[(size_t) k * h->ndesign + i]);
-  return output_close(o, f, st);
-}
-
-#line 438 "paper/main.nw"
-static int write_multipliers(Output *o, const Scene *s, const Model *md,
-                             const double *X, double *mu, Status *st)
-{
-  Design_set B = design_set(&s->problem);
-  int n = s->problem.N + 1, rc;
-  double *G = malloc(n * sizeof *G), residual;
+  Design_set B = design_set(&r->s.problem);
+  Output o;
+  Output_start start;
+  Opt_report rep;
+  int n = r->s.problem.N + 1, rc;
+  double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
+  Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
-  FILE *f = NULL;
-  if (!m) rc = st->code;
-  else if (!G) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
-  else if (!(rc = grad_energy(md, G, st))
-           && !(rc = design_kkt(&B, X, G, -1, NULL, m, &residual, st))
-           && !(rc = (f = output_open(o, "multipliers.dat", st)) ? 0 : st->code)) {
-    fprintf(f, "# i x1[m] alpha[m] dE/dX_i lower(-X_i<=0) upper(X_i-C0<=0) "
-               "rise(X_i+1-X_i-d<=0) fall(X_i-X_i+1-d<=0); mu = %.15g\n", m->mu);
-    for (int i = 0; i < n; i++)
-      fprintf(f, "%d %.10g %.17g %.15g %.15g %.15g %.15g %.15g\n", i,
-              s->problem.a + i * B.h, X[i], G[i], m->lower[i], m->upper[i],
-              i < s->problem.N ? m->up[i] : 0.0, i < s->problem.N ? m->down[i] : 0.0);
-    *mu = m->mu;
-    rc = output_close(o, f, st);
-  }
-  free(G);
-  design_multipliers_free(m);
-  return rc;
-}
-
-static int write_opt_summary(Output *o, const Scene *s, const Model *md,
-                             const Opt_report *r, double E0, double cv0,
-                             double moved, double mu, Status *st)
-{
-  FILE *f = output_open(o, "summary.dat", st);
-  if (!f) return st->code;
-  fprintf(f, "# name value\nscene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
-          "model %s\n", s->path, opt_method_name(s->optimizer.method), opt_metric_name(s->optimizer.metric),
-          qp_method_name(s->solver.method), problem_model_name(s->problem.model));
-  fprintf(f, "N %d\nM %d\nR %d\ninitial_projected %d\ninitial_moved %.6e\n",
-          s->problem.N, s->problem.M, s->problem.R, moved > 0, moved);
-  fprintf(f, "initial_energy %.15g\nenergy %.15g\niterations %d\nevaluations %d\n",
-          E0, r->energy, r->iterations, r->evaluations);
-  fprintf(f, "projected_gradient %.6e\nstop_reason %s\n", r->pgnorm, r->stop_reason);
-  fprintf(f, "seconds %.6f\nmetric_seconds %.6f\nstate_seconds %.6f\n",
-          r->seconds, r->metric_seconds, r->state_seconds);
-  fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
-          cv0, model_pressure_cv(md));
-  fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
-          md->report.active, md->report.kkt, mu);
-  return output_close(o, f, st);
-}
-#line 491 "paper/main.nw"
-static int optimize_run(const Scene *s, Model *md, double *X,
-                        Output *o, Status *st)
-{
-  Design_set B = design_set(&s->problem);
-  History h = { 0, 0, s->problem.N + 1, NULL, NULL, 0 };
-  Opt_report r;
-  double moved, E0, cv0, mu = 0;
-  int rc;
-  if ((rc = feasible_start(s, &B, X, &moved, st)) || (rc = model_solve(md, X, st))
-      || (rc = output_state(o, "initial", md, X, st)))
-    return rc;
-  E0 = md->energy;
-  cv0 = model_pressure_cv(md);
-  if (!(rc = opt_minimize(md, &B, &s->optimizer, X, monitor, &h, &r, st))) {
-    if (h.failed) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
-    else if (!(rc = output_state(o, "final", md, X, st))
-             && !(rc = write_history(o, s, &h, st))
-             && !(rc = write_multipliers(o, s, md, X, &mu, st)))
-      rc = write_opt_summary(o, s, md, &r, E0, cv0, moved, mu, st);
+  if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  else if (!h || !m) rc = st->code;
+  else if (!(rc = output_begin(&o, r->dir, st))) {
+    if (!(rc = optimize_start(r, &B, X, &moved, st))
+        && !(rc = output_start(&o, r->md, X, moved, &start, st))
+        && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
+        && !(rc = output_state(&o, "final", r->md, X, st))
+        && !(rc = output_history(&o, &r->s.problem, h, st))
+        && !(rc = grad_energy(r->md, G, st))
+        && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
+        && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
+      rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
+    rc = output_end(&o, rc, st);
   }
   if (!rc)
     printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
-           "projected gradient %.2e (%s) -> %s/\n", s->path, E0, r.energy,
-           r.iterations, r.evaluations, r.pgnorm, r.stop_reason, o->dir);
-  free(h.p);
-  free(h.X);
-  return rc;
-}
-
-static int command_optimize(const Args *a, cholmod_common *cm, Status *st)
-{
-  Scene s;
-  char dir[1024];
-  Output o;
-  int rc = scene_load(&s, a->scene, a->noverride, a->override, st);
-  if (rc) return rc;
-  Model *md = model_new(&s.problem, &s.solver, cm, st);
-  double *X = malloc((s.problem.N + 1) * sizeof *X);
-  output_dir(a, "-optimize", dir, sizeof dir);
-  if (!md) rc = st->code;
-  else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
-  else if (!(rc = output_begin(&o, dir, st))) {
-    if ((rc = optimize_run(&s, md, X, &o, st)) || (rc = output_commit(&o, st)))
-      output_abort(&o);
-  }
+           "projected gradient %.2e (%s) -> %s/\n", r->s.path, start.energy,
+           rep.energy, rep.iterations, rep.evaluations, rep.pgnorm,
+           rep.stop_reason, r->dir);
   free(X);
-  model_free(md);
-  scene_free(&s);
+  output_history_free(h);
+  design_multipliers_free(m);
   return rc;
 }
-#line 548 "paper/main.nw"
+#line 291 "paper/main.nw"
 typedef struct {
-  const char *name;
-  const char *usage;
-  int (*run)(const Args *a, cholmod_common *cm, Status *st);
+  const char *name, *usage, *suffix;  /* the command, its help, its folder */
+  int (*run)(Run *r, Status *st);     /* the command itself */
 } Command;
 
 static const Command commands[] = {
-  { "solve", usage_solve, command_solve },
-  { "gradcheck", usage_gradcheck, command_gradcheck },
-  { "optimize", usage_optimize, command_optimize },
+  { "solve", usage_solve, "", command_solve },
+  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck },
+  { "optimize", usage_optimize, "-optimize", command_optimize },
 };
-
-static const Command *command_find(const char *name)
-{
-  for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)
-    if (!strcmp(commands[k].name, name)) return &commands[k];
-  return NULL;
-}
-
-static int wants_help(int argc, char **argv)
-{
-  for (int k = 1; k < argc; k++)
-    if (!strcmp(argv[k], "-h") || !strcmp(argv[k], "--help")) return 1;
-  return 0;
-}
 
 int main(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
   Args a;
-  const Command *c = argc > 1 ? command_find(argv[1]) : NULL;
-  if (argc < 2 || (!c && wants_help(argc, argv))) {
+  const Command *c = NULL;
+  int help = 0;
+  for (size_t k = 0; argc > 1 && k < sizeof commands / sizeof *commands; k++)
+    if (!strcmp(commands[k].name, argv[1])) c = &commands[k];
+  for (int k = 1; k < argc; k++)
+    help |= !strcmp(argv[k], "-h") || !strcmp(argv[k], "--help");
+  if (argc < 2 || (!c && help)) {
     fputs(usage_main, argc < 2 ? stderr : stdout);
     return argc < 2 ? STATUS_INPUT : STATUS_OK;
   }
@@ -496,13 +236,13 @@ int main(int argc, char **argv)
     fprintf(stderr, "contactopt: unknown command '%s' (try --help)\n", argv[1]);
     return STATUS_INPUT;
   }
-  if (wants_help(argc, argv)) { fputs(c->usage, stdout); return STATUS_OK; }
+  if (help) { fputs(c->usage, stdout); return STATUS_OK; }
   cholmod_common cm;
   cholmod_start(&cm);
   cm.print = 0;             /* the library reports through Status, not stderr */
   gsl_set_error_handler_off();  /* likewise GSL: its codes are checked */
   int rc = args_read(argc, argv, &a, &st);
-  if (!rc) rc = c->run(&a, &cm, &st);
+  if (!rc) rc = run_command(&a, c->suffix, c->run, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
   cholmod_finish(&cm);
   return rc;

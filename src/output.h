@@ -1,9 +1,11 @@
-#line 27 "paper/output.nw"
+#line 50 "paper/output.nw"
 #ifndef CONTACTOPT_OUTPUT_H
 #define CONTACTOPT_OUTPUT_H
 #include <stdio.h>
 #include "status.h"
 #include "model.h"
+#include "grad.h"
+#include "opt.h"
 
 #define OUTPUT_MAX_FILES 64
 typedef struct {
@@ -18,7 +20,63 @@ FILE *output_open(Output *o, const char *name, Status *st);
 int output_close(Output *o, FILE *f, Status *st);
 int output_commit(Output *o, Status *st);
 void output_abort(Output *o);
+/* commit when rc is STATUS_OK, else abort; returns rc or the commit's */
+int output_end(Output *o, int rc, Status *st);
 /* the files of the state at the model's last design, in folder sub/ */
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st);
+/* out/NAME + suffix for the scene file path/NAME.scene */
+void output_default_dir(const char *scene, const char *suffix, char *dir,
+                        size_t size);
+#line 86 "paper/output.nw"
+typedef struct {
+  const char *scene;        /* the scene file, as given */
+  const char *state_solver; /* the name of the state solver */
+  const char *optimizer;    /* the name of the optimiser */
+  const char *metric;       /* the name of its metric */
+} Output_run;
+
+/* solve: the state files at X and summary.dat */
+int output_solve(Output *o, const Output_run *run, const Model *md,
+                 const double *X, Status *st);
+/* A(X) of the model's last design, Dirichlet DOFs removed, into path */
+int output_matrix_market(const char *path, const Model *md, Status *st);
+/* gradcheck: summary.dat and gradient.dat, the model solved at X */
+int output_gradcheck(Output *o, const Output_run *run, const Model *md,
+                     const Grad_check *gc, Status *st);
+#line 106 "paper/output.nw"
+typedef struct {
+  int n, size;              /* iterations recorded, room */
+  int ndesign;              /* N+1 */
+  Opt_progress *p;          /* n: the progress of each iteration */
+  double *X;                /* n x ndesign: the iterates */
+  int failed;               /* out of memory while recording */
+} Output_history;
+
+Output_history *output_history_new(int ndesign, Status *st);
+void output_history_add(Output_history *h, const Opt_progress *p,
+                        const double *X);
+void output_history_free(Output_history *h);
+/* history.dat and iterates.dat of the design problem p */
+int output_history(Output *o, const Problem *p, const Output_history *h,
+                   Status *st);
+/* multipliers.dat: X, G = grad E(X) and the multipliers m of min_B E */
+int output_multipliers(Output *o, const Problem *p, const double *X,
+                       const double *G, const Design_multipliers *m,
+                       Status *st);
+#line 129 "paper/output.nw"
+typedef struct {
+  double energy;            /* E at the start, in B */
+  double cv;                /* the contact-pressure CV there */
+  double moved;             /* ||start - alpha0||_2, 0: alpha0 was in B */
+} Output_start;
+
+/* initial/: the state files at the start X, solved by the model; start
+   receives what the summary will say of it */
+int output_start(Output *o, const Model *md, const double *X, double moved,
+                 Output_start *start, Status *st);
+int output_opt_summary(Output *o, const Output_run *run, const Model *md,
+                       const Output_start *start, const Opt_report *r,
+                       double mu, Status *st);
+#line 80 "paper/output.nw"
 #endif

@@ -6,7 +6,7 @@
    tied on purpose (multiples of 1/8); (3) the properties of a
    projection (fixed points, idempotence, non-expansiveness); (4) Example
    5.1's data; (5) N = 1024, timed; (6) degenerate and empty sets; (7) the
-   stationarity measure of the shape problem. */
+   stationarity measure of the shape problem; (8) the feasible start. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -498,6 +498,51 @@ static void test_kkt(void)
   design_multipliers_free(m);
 }
 
+/* ---- (8) the feasible start ------------------------------------------- */
+
+static void test_feasible_start(void)
+{
+  Design_set B = make_set(16, 4, 0.05, 0.025, 0.09);
+  double Y[17], X[17], P[17], v = -1, moved = -1, d2 = 0, R1 = 160.025;
+  for (int i = 0; i <= 16; i++)
+    Y[i] = R1 - sqrt(R1 * R1 - (0.25 * i - 4) * (0.25 * i - 4));
+  int rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, NULL);
+  design_project(&B, Y, P, NULL, NULL);
+  for (int i = 0; i <= 16; i++) d2 += (P[i] - Y[i]) * (P[i] - Y[i]);
+  check(rc == 0 && !memcmp(X, P, sizeof X) && v == design_violation(&B, Y)
+        && moved == sqrt(d2) && moved > 0.02,
+        "feasible start: Example 5.1's arc (violation %.3g) moves to its "
+        "projection, bit for bit, by %.6g m", v, moved);
+  memcpy(Y, P, sizeof Y);
+  v = design_violation(&B, Y);
+  rc = design_feasible_start(&B, Y, v, X, NULL, &moved, NULL);
+  check(rc == 0 && !memcmp(X, Y, sizeof X) && moved == 0,
+        "feasible start: a point of B (violation %.1e = tol) is kept, bit "
+        "for bit, moved 0", v);
+  Y[3] += 1e-3;
+  v = design_violation(&B, Y);
+  rc = design_feasible_start(&B, Y, 0.99 * v, X, NULL, &moved, NULL);
+  check(rc == 0 && design_violation(&B, X) <= 1e-12 && moved > 0,
+        "feasible start: a violation %.2e above the tolerance moves the "
+        "start into B (by %.3g m)", v, moved);
+  Status st;
+  double keep = X[0];
+  check(design_feasible_start(&B, Y, -1, X, NULL, NULL, &st) == STATUS_INPUT
+        && X[0] == keep, "feasible start: a negative tolerance is refused, "
+        "X not written: %s", st.msg);
+  check(design_feasible_start(&B, Y, NAN, X, NULL, NULL, &st) == STATUS_INPUT,
+        "feasible start: a NaN tolerance is refused: %s", st.msg);
+  check(design_feasible_start(&B, Y, 0, Y, NULL, NULL, &st) == STATUS_INPUT,
+        "feasible start: X aliasing alpha0 is refused: %s", st.msg);
+  Y[5] = NAN;
+  check(design_feasible_start(&B, Y, 0, X, NULL, NULL, &st) == STATUS_NUMERIC,
+        "feasible start: a NaN in alpha0 is refused: %s", st.msg);
+  Y[5] = 0.01;
+  B.area = 1;
+  check(design_feasible_start(&B, Y, 0, X, NULL, NULL, &st) == STATUS_INPUT,
+        "feasible start: an empty B is refused: %s", st.msg);
+}
+
 int main(void)
 {
   test_brute_force(0);
@@ -508,5 +553,6 @@ int main(void)
   test_degenerate();
   test_errors();
   test_kkt();
+  test_feasible_start();
   return check_done();
 }

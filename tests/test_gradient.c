@@ -3,7 +3,10 @@
    E is: the analytic derivative must agree with the one-sided differences
    from both sides (the node leaves contact on one side, presses on the
    other).  The weakly active design is found by bisection on alpha_i
-   between a design where node i is free and one where it presses. */
+   between a design where node i is free and one where it presses.
+   Then grad_check, the gradient check of the command gradcheck, called
+   directly: its gradient, its progress calls, the one-sided difference
+   at a node on the foundation, the model it leaves, its errors. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,10 +77,76 @@ static void weakly_active(const char *path, Plane_model model)
   cholmod_finish(&cm);
 }
 
+typedef struct { int calls, in_order; } Progress;
+
+static void progress(int i, const Grad_check *gc, void *data)
+{
+  Progress *p = data;
+  p->in_order &= i == p->calls && gc->err[i] < INFINITY;
+  p->calls++;
+}
+
+static void check_grad_check(const char *path)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  test_start(&cm);
+  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
+  int N = s.problem.N;
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
+  Model *fresh = model_new(&s.problem, &s.solver, &cm, &st);
+  Grad_check *gc = grad_check_new(N, &st);
+  double *G = malloc((N + 1) * sizeof *G), worst = 0;
+  model_solve(fresh, s.alpha0, &st);
+  grad_energy(fresh, G, &st);
+  Progress p = { 0, 1 };
+  int rc = grad_check(md, s.alpha0, gc, progress, &p, &st);
+  for (int i = 0; i <= N; i++) worst = fmax(worst, gc->err[i]);
+  check(rc == 0 && !memcmp(G, gc->G, (N + 1) * sizeof *G),
+        "%s: grad_check's G is grad_energy's at alpha0, bit for bit", path);
+  check(p.calls == N + 1 && p.in_order, "%s: progress called once per node, "
+        "in order (%d calls for %d nodes)", path, p.calls, N + 1);
+  check(worst < 1e-6 && gc->err[gc->worst] == worst,
+        "%s: largest relative error %.2e < 1e-6, at node worst = %d", path,
+        worst, gc->worst);
+  if (s.alpha0[0] == 0)
+    check(gc->err[0] < 1e-6, "%s: node 0 on the foundation (alpha_0 = 0), "
+          "one-sided difference: error %.2e", path, gc->err[0]);
+  check(fabs(md->energy - fresh->energy) <= 1e-12 * fabs(fresh->energy),
+        "%s: the model is left solved at alpha0 (E %.15g, fresh %.15g)", path,
+        md->energy, fresh->energy);
+  Grad_check *other = grad_check_new(N / 2, &st);
+  check(grad_check(md, s.alpha0, other, NULL, NULL, &st) == STATUS_INPUT,
+        "%s: a check made for another N is refused: %s", path, st.msg);
+  grad_check_free(other);
+  free(G);
+  grad_check_free(gc);
+  model_free(fresh);
+  model_free(md);
+  s.solver = qp_options_default(QP_CGSSOR);
+  s.solver.max_iter = 2;
+  md = model_new(&s.problem, &s.solver, &cm, &st);
+  gc = grad_check_new(N, &st);
+  p = (Progress) { 0, 1 };
+  rc = grad_check(md, s.alpha0, gc, progress, &p, &st);
+  check(rc == STATUS_NUMERIC && p.calls == 0, "%s: a state solve that fails "
+        "stops the check with its status: %s", path, st.msg);
+  grad_check_free(gc);
+  model_free(md);
+  scene_free(&s);
+  cholmod_finish(&cm);
+}
+
 int main(void)
 {
   weakly_active("data/example-5.1.scene", MODEL_PLANE_STRESS);
   weakly_active("data/example-5.1.scene", MODEL_PLANE_STRAIN);
   weakly_active("data/example-5.2.scene", MODEL_PLANE_STRESS);
+  check_grad_check("data/example-5.1.scene");
+  check_grad_check("data/example-5.2.scene");
+  Status st;
+  check(grad_check_new(0, &st) == NULL && st.code == STATUS_INPUT,
+        "grad_check_new(0) is refused: %s", st.msg);
   return check_done();
 }
