@@ -1,4 +1,4 @@
-#line 26 "paper/fem.nw"
+#line 50 "paper/fem.nw"
 #ifndef CONTACTOPT_FEM_H
 #define CONTACTOPT_FEM_H
 #include <cholmod.h>
@@ -18,11 +18,11 @@ typedef struct {
 /* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
 typedef struct { double D[3][3]; } Hooke;
 
-#line 50 "paper/fem.nw"
+#line 74 "paper/fem.nw"
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 200 "paper/fem.nw"
+#line 261 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -33,7 +33,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3]);
 /* e = the unnormalised strain 2|T| (e11, e22, 2 e12) of q */
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3]);
-#line 54 "paper/fem.nw"
+#line 78 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
@@ -45,5 +45,5 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
 void fem_multiply(const cholmod_sparse *A, const double *x, double *y);
-#line 46 "paper/fem.nw"
+#line 70 "paper/fem.nw"
 #endif

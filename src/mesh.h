@@ -1,4 +1,4 @@
-#line 38 "paper/mesh.nw"
+#line 40 "paper/mesh.nw"
 #ifndef CONTACTOPT_MESH_H
 #define CONTACTOPT_MESH_H
 #include "status.h"
@@ -15,11 +15,11 @@ typedef struct {
   int *tri;          /* 3*ntri: the nodes of each triangle, counter-clockwise */
 } Mesh;
 
-#line 59 "paper/mesh.nw"
+#line 61 "paper/mesh.nw"
 Mesh *mesh_new(const Problem *p, Status *st);     /* topology, fixed nodes */
 int mesh_move(Mesh *m, const double *X, Status *st); /* place nodes for X */
 double mesh_motion(const Mesh *m, int k); /* d x2(node k) / d alpha_i, (4.2) */
 double mesh_area(const Mesh *m, int t);   /* signed area of triangle t */
 void mesh_free(Mesh *m);
-#line 55 "paper/mesh.nw"
+#line 57 "paper/mesh.nw"
 #endif

@@ -1,11 +1,11 @@
-#line 58 "paper/model.nw"
+#line 127 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 70 "paper/model.nw"
+#line 137 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -20,7 +20,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 90 "paper/model.nw"
+#line 157 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -31,18 +31,18 @@ if (!md->b || !md->Q || !md->lo || !md->T) {
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 84 "paper/model.nw"
+#line 151 "paper/model.nw"
   
-#line 103 "paper/model.nw"
+#line 170 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 85 "paper/model.nw"
+#line 152 "paper/model.nw"
   return md;
 }
-#line 116 "paper/model.nw"
+#line 183 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -50,6 +50,7 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+#line 193 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -67,7 +68,7 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 149 "paper/model.nw"
+#line 222 "paper/model.nw"
 static double model_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -78,11 +79,13 @@ static double model_tributary(const Mesh *m, int i)
   return len;
 }
 
+#line 234 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / model_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
+#line 242 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -97,6 +100,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
+#line 258 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -107,7 +111,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T);
   free(md);
 }
-#line 218 "paper/model.nw"
+#line 295 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -119,11 +123,14 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if (!Scc) return status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
-  memset(S, 0, (size_t) N1 * N1 * sizeof *S);
-  for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
-  for (int c = 0; c < nc; c++)
-    for (int e = 0; e < nc; e++)
-      S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
+  
+#line 314 "paper/model.nw"
+memset(S, 0, (size_t) N1 * N1 * sizeof *S);
+for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
+for (int c = 0; c < nc; c++)
+  for (int e = 0; e < nc; e++)
+    S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
+#line 307 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

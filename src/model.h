@@ -1,4 +1,4 @@
-#line 11 "paper/model.nw"
+#line 39 "paper/model.nw"
 #ifndef CONTACTOPT_MODEL_H
 #define CONTACTOPT_MODEL_H
 #include <cholmod.h>
@@ -8,6 +8,7 @@
 #include "fem.h"
 #include "qp.h"
 
+#line 56 "paper/model.nw"
 typedef struct {
   const Problem *problem; /* the problem (not owned) */
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
@@ -27,6 +28,7 @@ typedef struct {
   int solved;           /* Q holds a state: warm start the next solve */
 } Model;
 
+#line 77 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -42,4 +44,5 @@ int model_solve(Model *md, const double *X, Status *st);
    contact nodes at the last design solved (see below) */
 int model_contact_stiffness(Model *md, double *S, Status *st);
 void model_free(Model *md);
+#line 51 "paper/model.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 112 "paper/opt.nw"
+#line 168 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,7 +8,7 @@
 #include "opt.h"
 #include "grad.h"
 
-#line 130 "paper/opt.nw"
+#line 183 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -28,7 +28,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 158 "paper/opt.nw"
+#line 211 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -47,14 +47,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 332 "paper/opt.nw"
+#line 400 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 419 "paper/opt.nw"
+#line 498 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -65,7 +65,7 @@ typedef struct {
   int stalled;            /* evaluations since the last accepted one */
 } Slsqp;
 enum { STALL = 10 };
-#line 179 "paper/opt.nw"
+#line 233 "paper/opt.nw"
 static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -82,7 +82,7 @@ static int evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 198 "paper/opt.nw"
+#line 252 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -91,20 +91,21 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 209 "paper/opt.nw"
+#line 263 "paper/opt.nw"
 static void report_iterate(Evaluator *ev, int iteration, double pg)
 {
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, model_clock() - ev->start };
   if (ev->monitor) ev->monitor(&p, ev->X, ev->data);
 }
-#line 229 "paper/opt.nw"
+#line 286 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_work;
 
+#line 296 "paper/opt.nw"
 static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
@@ -114,19 +115,22 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   memcpy(G, ev->G, n * sizeof *G);
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
-    for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
-    if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
-    double descent = 0;
-    for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
-    if (descent >= 0) continue;                /* the arc has collapsed */
-    if ((rc = evaluate(ev, Xn))) return rc;
-    *accepted = ev->E <= E0 + 1e-4 * descent;
+    
+#line 315 "paper/opt.nw"
+for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
+if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
+double descent = 0;
+for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
+if (descent >= 0) continue;                /* the arc has collapsed */
+if ((rc = evaluate(ev, Xn))) return rc;
+*accepted = ev->E <= E0 + 1e-4 * descent;
+#line 306 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 259 "paper/opt.nw"
+#line 327 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -139,7 +143,7 @@ static int projgrad(Evaluator *ev, double *X)
     report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 281 "paper/opt.nw"
+#line 349 "paper/opt.nw"
 const char *why = pg <= ev->o->tol ? "converged"
                 : !accepted ? "no_progress"
                 : k >= ev->o->max_iter ? "max_iter" : NULL;
@@ -147,7 +151,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 271 "paper/opt.nw"
+#line 339 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -155,7 +159,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 341 "paper/opt.nw"
+#line 409 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -167,7 +171,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 356 "paper/opt.nw"
+#line 424 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -176,30 +180,36 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   const double *R = q->metric.R;
   double X[n], d = B->delta / B->C0;
   metric_design(&q->metric, B->C0, y, X);
-  for (unsigned i = 0; i < n; i++) {
-    c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
-    c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
-  }
-  for (unsigned i = 0; i + 1 < n; i++) {
-    double rise = (X[i + 1] - X[i]) / B->C0;
-    c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
-    c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
-  }
+  
+#line 444 "paper/opt.nw"
+for (unsigned i = 0; i < n; i++) {
+  c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
+  c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
+}
+for (unsigned i = 0; i + 1 < n; i++) {
+  double rise = (X[i + 1] - X[i]) / B->C0;
+  c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
+  c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
+}
+#line 433 "paper/opt.nw"
   if (grad)
     for (unsigned j = 0; j < n; j++) {
-      for (unsigned i = 0; i < n; i++) {
-        grad[2 * i * n + j] = -R[i * n + j];
-        grad[(2 * i + 1) * n + j] = R[i * n + j];
-      }
-      for (unsigned i = 0; i + 1 < n; i++) {
-        double rise = R[(i + 1) * n + j] - R[i * n + j];
-        grad[(2 * n + 2 * i) * n + j] = rise;
-        grad[(2 * n + 2 * i + 1) * n + j] = -rise;
-      }
+      
+#line 457 "paper/opt.nw"
+for (unsigned i = 0; i < n; i++) {
+  grad[2 * i * n + j] = -R[i * n + j];
+  grad[(2 * i + 1) * n + j] = R[i * n + j];
+}
+for (unsigned i = 0; i + 1 < n; i++) {
+  double rise = R[(i + 1) * n + j] - R[i * n + j];
+  grad[(2 * n + 2 * i) * n + j] = rise;
+  grad[(2 * n + 2 * i + 1) * n + j] = -rise;
+}
+#line 436 "paper/opt.nw"
     }
   (void) m;
 }
-#line 391 "paper/opt.nw"
+#line 470 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -217,14 +227,14 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 432 "paper/opt.nw"
-static void slsqp_accept(Slsqp *q);
+#line 512 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-
+#line 521 "paper/opt.nw"
+static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -236,16 +246,19 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   for (unsigned i = 0; i < n; i++) X[i] = fmin(fmax(X[i], 0), C0);
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
-    for (unsigned j = 0; j < n; j++) {
-      double g = 0;
-      for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
-      grad[j] = C0 * g / q->metric.scale;
-    }
+    
+#line 542 "paper/opt.nw"
+for (unsigned j = 0; j < n; j++) {
+  double g = 0;
+  for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
+  grad[j] = C0 * g / q->metric.scale;
+}
+#line 534 "paper/opt.nw"
   if (ev->E < q->best) slsqp_accept(q);
   else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
   return ev->E / q->metric.scale;
 }
-#line 462 "paper/opt.nw"
+#line 551 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -264,7 +277,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 486 "paper/opt.nw"
+#line 575 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -279,7 +292,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 506 "paper/opt.nw"
+#line 595 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -301,11 +314,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 500 "paper/opt.nw"
+#line 589 "paper/opt.nw"
   ev->rep->metric_seconds = model_clock() - start;
   return rc;
 }
-#line 536 "paper/opt.nw"
+#line 625 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -320,7 +333,7 @@ static int slsqp(Evaluator *ev, double *X)
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
     else {
       
-#line 558 "paper/opt.nw"
+#line 647 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -329,7 +342,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 574 "paper/opt.nw"
+#line 663 "paper/opt.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -337,13 +350,13 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 550 "paper/opt.nw"
+#line 639 "paper/opt.nw"
     }
   }
   free(work);
   return rc;
 }
-#line 590 "paper/opt.nw"
+#line 679 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -355,9 +368,12 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   if (!ev.X) return status_set(st, STATUS_SYSTEM, "optimiser: out of memory");
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
-    double Gmax = 0;
-    for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
-    ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
+    
+#line 702 "paper/opt.nw"
+double Gmax = 0;
+for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
+ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
+#line 691 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X) : projgrad(&ev, X);
   }
   if (!rc) rep->energy = md->energy;

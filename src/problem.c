@@ -1,7 +1,8 @@
-#line 167 "paper/problem.nw"
+#line 174 "paper/problem.nw"
 #include <stddef.h>
 #include "problem.h"
 
+#line 180 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
@@ -16,7 +17,7 @@ const char *problem_bc_name(Bc_kind k)
 {
   return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
 }
-#line 189 "paper/problem.nw"
+#line 199 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;
