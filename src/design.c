@@ -1,17 +1,17 @@
-#line 167 "paper/design.nw"
+#line 169 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design.h"
 
-#line 464 "paper/design.nw"
+#line 499 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
   int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
   double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Group;
-#line 472 "paper/design.nw"
+#line 507 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
@@ -28,7 +28,7 @@ typedef struct {
   double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
 } Work;
-#line 187 "paper/design.nw"
+#line 222 "paper/design.nw"
 Design_set design_set(const Problem *p)
 {
   Design_set B;
@@ -43,7 +43,7 @@ Design_set design_set(const Problem *p)
     B.area = B.C0 * (B.N * B.h);
   return B;
 }
-#line 204 "paper/design.nw"
+#line 239 "paper/design.nw"
 static double weight(const Design_set *B, int i)
 {
   return i == 0 || i == B->N ? 0.5 * B->h : B->h;
@@ -55,7 +55,7 @@ double design_area(const Design_set *B, const double *X)
   for (int i = 1; i < B->N; i++) sum += X[i];
   return B->h * sum;
 }
-#line 219 "paper/design.nw"
+#line 254 "paper/design.nw"
 double design_violation(const Design_set *B, const double *X)
 {
   double v = 0;
@@ -67,7 +67,7 @@ double design_violation(const Design_set *B, const double *X)
     v = fmax(v, (fabs(X[i + 1] - X[i]) - B->delta) / B->C0);
   return fmax(v, fabs(design_area(B, X) - B->area) / (B->C0 * B->N * B->h));
 }
-#line 274 "paper/design.nw"
+#line 309 "paper/design.nw"
 static void evaluate_g(Work *w, double mu);
 
 static double area_rounding(const Work *w)
@@ -90,7 +90,7 @@ static int find_multiplier(Work *w, Status *st)
   if (B->area <= area_rounding(w)) { evaluate_g(w, hi); return STATUS_OK; }
   return newton_on_pieces(w, lo, hi, st);
 }
-#line 300 "paper/design.nw"
+#line 335 "paper/design.nw"
 static void chain_project(Work *w);
 static double piece_slope(const Work *w);
 
@@ -102,7 +102,7 @@ static void evaluate_g(Work *w, double mu)
   w->g = design_area(w->B, w->X) - w->B->area;
   w->slope = piece_slope(w);
 }
-#line 316 "paper/design.nw"
+#line 351 "paper/design.nw"
 static double piece_slope(const Work *w)
 {
   double slope = 0;
@@ -118,7 +118,7 @@ static double piece_slope(const Work *w)
   }
   return slope;
 }
-#line 354 "paper/design.nw"
+#line 389 "paper/design.nw"
 static int same_piece(const Work *w);
 static void keep_piece(Work *w);
 
@@ -131,31 +131,31 @@ static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
   for (int it = 0; it < limit; it++) {
     evaluate_g(w, mu);
     
-#line 375 "paper/design.nw"
+#line 410 "paper/design.nw"
 if (fabs(w->g) <= area_rounding(w) || (newton && same_piece(w)))
   return STATUS_OK;
-#line 366 "paper/design.nw"
+#line 401 "paper/design.nw"
     
-#line 380 "paper/design.nw"
+#line 415 "paper/design.nw"
 if (w->g > 0) lo = mu; else hi = mu;
 int stalled = fabs(w->g) > 0.5 * g2;
 g2 = g1;
 g1 = fabs(w->g);
 keep_piece(w);
-#line 367 "paper/design.nw"
+#line 402 "paper/design.nw"
     
-#line 389 "paper/design.nw"
+#line 424 "paper/design.nw"
 double mid = lo + 0.5 * (hi - lo);
 if (!(lo < mid && mid < hi)) return STATUS_OK;
 double step = w->slope < 0 ? mu - w->g / w->slope : mid;
 newton = w->slope < 0 && !stalled && lo < step && step < hi;
 mu = newton ? step : mid;
-#line 368 "paper/design.nw"
+#line 403 "paper/design.nw"
   }
   return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
                     "was not found in %d evaluations", limit);
 }
-#line 398 "paper/design.nw"
+#line 433 "paper/design.nw"
 static int same_piece(const Work *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
@@ -166,7 +166,7 @@ static void keep_piece(Work *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 491 "paper/design.nw"
+#line 526 "paper/design.nw"
 static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Group *G, int k)
 {
@@ -178,7 +178,7 @@ static void point_set(Group *G, int k, double x, double d)
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
-#line 506 "paper/design.nw"
+#line 541 "paper/design.nw"
 static void push(Group *G, double x, double d)
 {
   if (G->top == G->cap) {
@@ -196,7 +196,7 @@ static void move_top(Group *from, Group *to)
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
-#line 529 "paper/design.nw"
+#line 562 "paper/design.nw"
 static void rebase(Group *G);
 
 static void add_linear(Group *G, double z, double C0)
@@ -205,7 +205,7 @@ static void add_linear(Group *G, double z, double C0)
   G->e += G->s - z;
   if (G->c > G->top - G->bot + 16 || fabs(G->s) > C0) rebase(G);
 }
-
+#line 576 "paper/design.nw"
 static double argmin_V(Work *w);
 static void step_V(Work *w, double xstar, double z);
 static void backtrack(Work *w);
@@ -231,7 +231,7 @@ static void chain_project(Work *w)
   identify(w);
   polish(w);
 }
-#line 572 "paper/design.nw"
+#line 610 "paper/design.nw"
 static void rebase(Group *G)
 {
   for (int k = G->bot; k < G->top; k++) {
@@ -241,7 +241,7 @@ static void rebase(Group *G)
   }
   G->s = G->c = G->e = 0;
 }
-#line 586 "paper/design.nw"
+#line 624 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side);
 
 static void step_V(Work *w, double xstar, double z)
@@ -256,7 +256,7 @@ static void step_V(Work *w, double xstar, double z)
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 609 "paper/design.nw"
+#line 647 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -271,7 +271,7 @@ static void cut(Group *G, const Group *other, double bound, double side)
     return;
   }
 }
-#line 634 "paper/design.nw"
+#line 672 "paper/design.nw"
 static double terms(const Group *G, int k)
 {
   return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
@@ -292,7 +292,7 @@ static double argmin_V(Work *w)
   w->M = fmax(w->M, terms(L, L->top - 1) + terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 658 "paper/design.nw"
+#line 696 "paper/design.nw"
 static void backtrack(Work *w)
 {
   double *X = w->X, delta = w->delta;
@@ -300,7 +300,7 @@ static void backtrack(Work *w)
   for (int i = w->n - 1; i > 0; i--)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-#line 692 "paper/design.nw"
+#line 730 "paper/design.nw"
 static void identify(Work *w)
 {
   double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
@@ -314,7 +314,7 @@ static void identify(Work *w)
   for (int i = 0; i < w->n; i++)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 716 "paper/design.nw"
+#line 754 "paper/design.nw"
 static void polish_block(Work *w, int first, int last);
 
 static void polish(Work *w)
@@ -324,7 +324,7 @@ static void polish(Work *w)
     polish_block(w, first, last);
   }
 }
-#line 733 "paper/design.nw"
+#line 771 "paper/design.nw"
 static double block_mean(const Work *w, int first, int last);
 
 static void polish_block(Work *w, int first, int last)
@@ -353,7 +353,7 @@ static double block_mean(const Work *w, int first, int last)
   for (int j = first; j <= last; j++) r += w->Z[j] - w->X[j] - t;
   return t + r / m;
 }
-#line 791 "paper/design.nw"
+#line 829 "paper/design.nw"
 static void range_of_beta(const Work *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -366,7 +366,7 @@ static void range_of_nu(const Work *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 807 "paper/design.nw"
+#line 845 "paper/design.nw"
 static void sweep_forward(Work *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -381,7 +381,7 @@ static void sweep_forward(Work *w)
     w->hi[j] = hi;
   }
 }
-#line 826 "paper/design.nw"
+#line 864 "paper/design.nw"
 static void sweep_backward(const Work *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -400,7 +400,7 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
   }
   m->mu = w->mu;
 }
-#line 853 "paper/design.nw"
+#line 891 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st);
 static int check_point(const Design_set *B, const double *Y,
                        const char *what, Status *st);
@@ -426,7 +426,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   work_free(w);
   return rc;
 }
-#line 884 "paper/design.nw"
+#line 922 "paper/design.nw"
 static int check_set(const Design_set *B, Status *st)
 {
   if (!B || B->N < 1)
@@ -456,7 +456,7 @@ static int check_point(const Design_set *B, const double *Y,
                         "is %g", i, what, Y[i]);
   return STATUS_OK;
 }
-#line 917 "paper/design.nw"
+#line 955 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
@@ -476,7 +476,7 @@ static Work *work_new(const Design_set *B, Status *st)
     return NULL;
   }
   
-#line 949 "paper/design.nw"
+#line 987 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -489,7 +489,7 @@ w->R.d = w->R.x + w->R.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 936 "paper/design.nw"
+#line 974 "paper/design.nw"
   return w;
 }
 
@@ -500,7 +500,7 @@ static void work_free(Work *w)
   free(w->edge);
   free(w);
 }
-#line 964 "paper/design.nw"
+#line 1002 "paper/design.nw"
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
 {
   if (check_set(B, st)) return NULL;
@@ -526,14 +526,14 @@ void design_multipliers_free(Design_multipliers *m)
   free(m->lower);
   free(m);
 }
-#line 1018 "paper/design.nw"
+#line 1056 "paper/design.nw"
 static double default_step(const Design_set *B, const double *G)
 {
   double Gmax = 0;
   for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
   return Gmax > 0 ? B->C0 / Gmax : 1;
 }
-#line 1028 "paper/design.nw"
+#line 1066 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f);
 
 int design_kkt(const Design_set *B, const double *X, const double *G,
@@ -556,14 +556,14 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
   free(Y);
   return rc;
 }
-#line 1053 "paper/design.nw"
+#line 1092 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f)
 {
   for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }
   for (int i = 0; i < m->N; i++) { m->up[i] *= f; m->down[i] *= f; }
   m->mu *= f;
 }
-#line 1071 "paper/design.nw"
+#line 1110 "paper/design.nw"
 /* alpha0 at x1 by the formula of sh; 0 if the arc does not reach x1 */
 static int shape_at(const Shape *sh, double x1, double t, double *alpha)
 {
@@ -577,7 +577,7 @@ static int shape_at(const Shape *sh, double x1, double t, double *alpha)
   default: *alpha = sh->value; return 1;
   }
 }
-
+#line 1127 "paper/design.nw"
 int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
 {
   for (int i = 0; i <= p->N; i++)
@@ -588,7 +588,7 @@ int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
                         problem_node_x(p, i));
   return STATUS_OK;
 }
-#line 1108 "paper/design.nw"
+#line 1150 "paper/design.nw"
 int design_feasible_start(const Design_set *B, const double *alpha0,
                           double tol, double *X, double *violation,
                           double *moved, Status *st)
@@ -605,11 +605,11 @@ int design_feasible_start(const Design_set *B, const double *alpha0,
   if (v <= tol) memcpy(X, alpha0, (B->N + 1) * sizeof *X);
   else if ((rc = design_project(B, alpha0, X, NULL, st))) return rc;
   
-#line 1130 "paper/design.nw"
+#line 1172 "paper/design.nw"
 double d2 = 0;
 for (int i = 0; i <= B->N; i++) d2 += (X[i] - alpha0[i]) * (X[i] - alpha0[i]);
 if (moved) *moved = sqrt(d2);
-#line 1124 "paper/design.nw"
+#line 1166 "paper/design.nw"
   if (violation) *violation = v;
   return STATUS_OK;
 }

@@ -1,10 +1,10 @@
-#line 123 "paper/grad.nw"
+#line 86 "paper/grad.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grad.h"
 
-#line 137 "paper/grad.nw"
+#line 147 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G);
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
@@ -23,7 +23,7 @@ int grad_energy(const Model *md, double *G, Status *st)
   for (int t = 0; t < moving; t++) grad_element(md, t, G);
   return STATUS_OK;
 }
-#line 172 "paper/grad.nw"
+#line 182 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
@@ -48,7 +48,7 @@ static void grad_element(const Model *md, int t, double *G)
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 201 "paper/grad.nw"
+#line 211 "paper/grad.nw"
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
                                   double d, int m)
@@ -59,7 +59,7 @@ static double grad_element_height(const double gy[3], const double q[6],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 215 "paper/grad.nw"
+#line 225 "paper/grad.nw"
 static double grad_body_force(const double F[2], const double q[6],
                               double gy_m)
 {
@@ -67,7 +67,7 @@ static double grad_body_force(const double F[2], const double q[6],
   for (int v = 0; v < 3; v++) work += F[0] * q[2 * v] + F[1] * q[2 * v + 1];
   return work * gy_m / 6;
 }
-#line 245 "paper/grad.nw"
+#line 255 "paper/grad.nw"
 Grad_check *grad_check_new(int N, Status *st)
 {
   if (N < 1) {
@@ -97,7 +97,7 @@ void grad_check_free(Grad_check *gc)
   free(gc->G);
   free(gc);
 }
-#line 280 "paper/grad.nw"
+#line 290 "paper/grad.nw"
 /* E at the design X with X_i = x */
 static int energy_with(Model *md, double *X, int i, double x, double *E,
                        Status *st)
@@ -116,26 +116,26 @@ static int grad_difference(Model *md, double *X, int i, double s,
   int rc;
   if (x0 - s >= 0) {
     
-#line 307 "paper/grad.nw"
+#line 317 "paper/grad.nw"
 double Em, Ep;
 if (!(rc = energy_with(md, X, i, x0 - s, &Em, st))
     && !(rc = energy_with(md, X, i, x0 + s, &Ep, st)))
   *fd = (Ep - Em) / (2 * s);
-#line 298 "paper/grad.nw"
+#line 308 "paper/grad.nw"
   } else {
     
-#line 314 "paper/grad.nw"
+#line 324 "paper/grad.nw"
 double E0, E1, E2;
 if (!(rc = energy_with(md, X, i, x0, &E0, st))
     && !(rc = energy_with(md, X, i, x0 + s, &E1, st))
     && !(rc = energy_with(md, X, i, x0 + 2 * s, &E2, st)))
   *fd = (-3 * E0 + 4 * E1 - E2) / (2 * s);
-#line 300 "paper/grad.nw"
+#line 310 "paper/grad.nw"
   }
   X[i] = x0;
   return rc;
 }
-#line 322 "paper/grad.nw"
+#line 332 "paper/grad.nw"
 static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
                            Status *st)
 {
@@ -150,7 +150,7 @@ static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
   }
   return STATUS_OK;
 }
-#line 340 "paper/grad.nw"
+#line 350 "paper/grad.nw"
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st)
 {

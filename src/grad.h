@@ -1,4 +1,4 @@
-#line 71 "paper/grad.nw"
+#line 34 "paper/grad.nw"
 #ifndef CONTACTOPT_GRAD_H
 #define CONTACTOPT_GRAD_H
 #include "status.h"
@@ -7,7 +7,7 @@
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
    model solved last.  It is a checked error to call it before a solve. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 99 "paper/grad.nw"
+#line 62 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   double *G;      /* N+1: dE/dX_i by (4.8) at X */
@@ -27,5 +27,5 @@ void grad_check_free(Grad_check *gc);
    NULL. */
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
-#line 80 "paper/grad.nw"
+#line 43 "paper/grad.nw"
 #endif

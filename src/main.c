@@ -7,7 +7,7 @@
 #include "status.h"
 #include "scene.h"
 #include "output.h"
-#line 34 "paper/main.nw"
+#line 36 "paper/main.nw"
 static const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
@@ -62,7 +62,7 @@ static const char usage_optimize[] =
   "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
   "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
   "multipliers.dat, and initial/ and final/ with the files of solve.\n";
-#line 91 "paper/main.nw"
+#line 93 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -92,7 +92,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 132 "paper/main.nw"
+#line 134 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -119,7 +119,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 166 "paper/main.nw"
+#line 168 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -136,7 +136,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 192 "paper/main.nw"
+#line 194 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -149,8 +149,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 221 "paper/main.nw"
-#define START_TOL 1e-12     /* the violation of B that moves the start */
+#line 217 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -159,7 +158,8 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-
+#line 232 "paper/main.nw"
+#define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
 {
@@ -171,7 +171,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 249 "paper/main.nw"
+#line 251 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -206,7 +206,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 291 "paper/main.nw"
+#line 293 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

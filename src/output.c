@@ -1,4 +1,4 @@
-#line 145 "paper/output.nw"
+#line 165 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 172 "paper/output.nw"
+#line 204 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -31,7 +31,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 199 "paper/output.nw"
+#line 231 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -41,7 +41,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 212 "paper/output.nw"
+#line 244 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -70,7 +70,7 @@ int output_close(Output *o, FILE *f, Status *st)
                       o->file[o->nfiles - 1]);
   return STATUS_OK;
 }
-#line 245 "paper/output.nw"
+#line 277 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
@@ -106,19 +106,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 284 "paper/output.nw"
+#line 316 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 297 "paper/output.nw"
+#line 329 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-
+#line 338 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -126,7 +126,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 313 "paper/output.nw"
+#line 348 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -137,7 +137,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 326 "paper/output.nw"
+#line 361 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -153,7 +153,7 @@ static int output_contact(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 344 "paper/output.nw"
+#line 379 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -167,7 +167,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-
+#line 395 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -185,7 +185,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 379 "paper/output.nw"
+#line 416 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
 {
   const Mesh *m = md->mesh;
@@ -203,7 +203,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
   for (int t = 0; t < m->ntri; t++)
     fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
   
-#line 401 "paper/output.nw"
+#line 438 "paper/output.nw"
 fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
 for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
 fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
@@ -214,10 +214,10 @@ fprintf(f, "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
 for (int k = 0; k < m->nnodes; k++)
   fprintf(f, "%.15g %.15g 0\n", output_u(md, k, 0), output_u(md, k, 1));
 fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 396 "paper/output.nw"
+#line 433 "paper/output.nw"
   return output_close(o, f, st);
 }
-#line 414 "paper/output.nw"
+#line 451 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -230,7 +230,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 434 "paper/output.nw"
+#line 471 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -249,7 +249,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
           md->seconds);
   return output_close(o, f, st);
 }
-#line 456 "paper/output.nw"
+#line 493 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -264,7 +264,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 479 "paper/output.nw"
+#line 516 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -290,7 +290,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 604 "paper/output.nw"
+#line 641 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -301,7 +301,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 512 "paper/output.nw"
+#line 549 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -337,7 +337,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 551 "paper/output.nw"
+#line 588 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -358,7 +358,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 582 "paper/output.nw"
+#line 619 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -377,7 +377,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 620 "paper/output.nw"
+#line 657 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
