@@ -22,7 +22,7 @@ typedef struct { double D[3][3]; } Hooke;
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 261 "paper/fem.nw"
+#line 259 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -44,6 +44,5 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
-void fem_multiply(const cholmod_sparse *A, const double *x, double *y);
 #line 70 "paper/fem.nw"
 #endif

@@ -1,11 +1,11 @@
-#line 357 "paper/qp.nw"
+#line 359 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 423 "paper/qp.nw"
+#line 425 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -20,35 +20,35 @@ double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 446 "paper/qp.nw"
+#line 448 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 437 "paper/qp.nw"
+#line 439 "paper/qp.nw"
       c++;
     } else
       rf += r * r;
   }
   
-#line 457 "paper/qp.nw"
+#line 459 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
                 fmax(qp_ratio(sqrt(inf), su),
                      qp_ratio(qp_ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 442 "paper/qp.nw"
+#line 444 "paper/qp.nw"
 }
 
-#line 465 "paper/qp.nw"
+#line 467 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, x, NULL, T);
 }
 
-#line 494 "paper/qp.nw"
+#line 496 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -63,13 +63,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
 }
 
-#line 559 "paper/qp.nw"
+#line 561 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 568 "paper/qp.nw"
+#line 570 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -85,7 +85,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 533 "paper/qp.nw"
+#line 535 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -110,7 +110,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
   return check_options(opt, st);
 }
 
-#line 587 "paper/qp.nw"
+#line 589 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
@@ -126,7 +126,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 609 "paper/qp.nw"
+#line 611 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -146,7 +146,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 514 "paper/qp.nw"
+#line 516 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -163,7 +163,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 631 "paper/qp.nw"
+#line 633 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -174,7 +174,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 651 "paper/qp.nw"
+#line 653 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -199,7 +199,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 677 "paper/qp.nw"
+#line 679 "paper/qp.nw"
 /* b and lo finite; lo expanded to all unknowns */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -215,7 +215,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 695 "paper/qp.nw"
+#line 697 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -224,7 +224,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 707 "paper/qp.nw"
+#line 709 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -239,14 +239,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 746 "paper/qp.nw"
+#line 748 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 728 "paper/qp.nw"
+#line 730 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -263,7 +263,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 793 "paper/qp.nw"
+#line 795 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -279,7 +279,7 @@ const char *qp_hint(const Qp_workspace *w)
     "if only the contact holds the body, the load lifts it off";
 }
 
-#line 812 "paper/qp.nw"
+#line 814 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -290,7 +290,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 784 "paper/qp.nw"
+#line 786 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -298,7 +298,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
 }
 
-#line 762 "paper/qp.nw"
+#line 764 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -316,7 +316,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 832 "paper/qp.nw"
+#line 834 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;

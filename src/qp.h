@@ -64,5 +64,9 @@ double qp_kkt(const Qp *qp, const double *x, double *T);
    own S when it has one.  Needs GSL's error handler off
    (gsl_set_error_handler_off), as the Newton method does. */
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
+
+/* y = A x, A stored with both triangles (as a Qp's); the package's one
+   sparse product, which the tests use too */
+void qp_matvec(const cholmod_sparse *A, const double *x, double *y);
 #line 68 "paper/qp.nw"
 #endif

@@ -1,11 +1,11 @@
-#line 164 "paper/qp.nw"
+#line 168 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
    it, no other module does. */
 #include "qp.h"
 
-#line 219 "paper/qp.nw"
+#line 223 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -32,7 +32,7 @@ typedef struct {
   int warm;              /* the first active set is to be guessed from x0 */
 } Pdas_workspace;
 
-#line 248 "paper/qp.nw"
+#line 252 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -41,7 +41,7 @@ typedef struct {
   int restart;           /* 1: p must restart from z (the face changed) */
 } Mprgp_workspace;
 
-#line 194 "paper/qp.nw"
+#line 198 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -61,7 +61,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 400 "paper/qp.nw"
+#line 402 "paper/qp.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static inline double qp_ratio(double num, double den)
 {
@@ -79,7 +79,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 479 "paper/qp.nw"
+#line 481 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -92,9 +92,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 261 "paper/qp.nw"
-/* y = A x */
-void qp_matvec(const cholmod_sparse *A, const double *x, double *y);
+#line 265 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -111,7 +109,7 @@ const char *qp_hint(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 285 "paper/qp.nw"
+#line 287 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -127,5 +125,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 183 "paper/qp.nw"
+#line 187 "paper/qp.nw"
 #endif
