@@ -6,19 +6,20 @@
 #include "design.h"
 
 #line 78 "paper/opt.nw"
-typedef enum { OPT_SLSQP, OPT_PROJGRAD } Opt_method;
+typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
-extern const char *const opt_method_names[]; /* slsqp, projgrad, NULL */
+extern const char *const opt_method_names[]; /* slsqp, projgrad, newton */
 extern const char *const opt_metric_names[]; /* schur, euclidean, NULL */
 
 typedef struct {
-  Opt_method method;      /* slsqp (NLopt) or projgrad (Algorithm 4.1) */
+  Opt_method method;      /* slsqp (NLopt), projgrad (Algorithm 4.1) or
+                             newton (Section sec:newton) */
   Opt_metric metric;      /* the metric of the design space SLSQP starts in */
   double tol;             /* projected-gradient norm pi at which it stops */
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 92 "paper/opt.nw"
+#line 93 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -31,7 +32,7 @@ typedef struct {
 
 typedef void (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 106 "paper/opt.nw"
+#line 107 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -40,10 +41,11 @@ typedef struct {
   char stop_reason[32];   /* "converged", "max_iter", "no_progress" */
   double seconds;         /* wall time of the whole optimisation */
   double metric_seconds;  /* of it, setting up SLSQP's metric */
+  double model_seconds;   /* of it, building and solving Newton's models */
   double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
-#line 119 "paper/opt.nw"
+#line 121 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);

@@ -768,10 +768,11 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1365 "paper/scene.nw"
+#line 1366 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
+  static const char *const metric_key[] = {"metric", NULL};
   Opt_options *o = &s->optimizer, d;
   char tol[32], max_iter[32];
   int rc, k;
@@ -781,6 +782,9 @@ static int read_optimizer(Loader *L, Scene *s)
   snprintf(tol, sizeof tol, "%.17g", d.tol);
   snprintf(max_iter, sizeof max_iter, "%d", d.max_iter);
   o->method = (Opt_method)k;
+  if (o->method == OPT_NEWTON && refuse_keys(L, "optimizer", metric_key,
+                                             "method", "newton"))
+    return L->failed;
   if ((rc = word(L, "optimizer", "metric", opt_metric_names[d.metric],
                  opt_metric_names, &k)))
     return rc;
@@ -796,7 +800,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1402 "paper/scene.nw"
+#line 1407 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -809,7 +813,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1419 "paper/scene.nw"
+#line 1424 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -829,7 +833,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1442 "paper/scene.nw"
+#line 1447 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

@@ -55,6 +55,8 @@ bad "a malformed number" mesh.M -- $scene -s mesh.M=4x
 bad "the schur metric with Algorithm 4.1" optimizer.metric schur slsqp -- $scene \
   -s optimizer.method=projgrad -s optimizer.metric=schur
 bad "an unknown metric" optimizer.metric sobolev -- $scene -s optimizer.metric=sobolev
+bad "a metric with the Newton method" optimizer.metric "no effect" newton -- $scene \
+  -s optimizer.method=newton -s optimizer.metric=schur
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 printf '[geometry\na = 0\n' > $TMP/broken.scene

@@ -1,10 +1,11 @@
 # optimize.sh: the shape optimisation (Section 4.4, Algorithm 4.1) from the
-# starts of Examples 5.1, 5.2 and the flat variant, with both optimisers.
+# starts of Examples 5.1, 5.2 and the flat variant, with the three
+# optimisers (SLSQP, Algorithm 4.1, the Newton method).
 . tests/lib.sh
 for model in plane_stress plane_strain; do
 for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene; do
   name=$(basename $scene .scene)-$model
-  for method in slsqp projgrad; do
+  for method in slsqp projgrad newton; do
     out=$TMP/$name-$method
     if ! $BIN optimize $scene -o $out -s optimizer.method=$method -s material.model=$model \
          >$TMP/log 2>$TMP/err; then
@@ -35,6 +36,16 @@ for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat
   check "$name: both optimisers reach the same shape to 1e-4 C0" \
     numdiff -q -a 5e-6 -r 0 $a/final/shape.dat $b/final/shape.dat
   echo "# $name: E0 $(value initial_energy $a) -> slsqp $(value energy $a) ($(value iterations $a) it, $(value evaluations $a) solves), projgrad $(value energy $b) ($(value iterations $b) it, $(value evaluations $b) solves)"
+  # the Newton method against SLSQP, the reference: both stop at
+  # pi <= 1e-6, so their shapes may differ by about pi C0 = 5e-8 m and
+  # their energies by far less (E is stationary there)
+  c=$TMP/$name-newton
+  [ -f $c/summary.dat ] || continue
+  check "$name: Newton and SLSQP reach the same E* to 1e-9 ($(value energy $a), $(value energy $c))" \
+    near_ref "$(value energy $a)" "$(value energy $c)" 1e-9
+  check "$name: Newton and SLSQP reach the same shape to 1e-6 C0" \
+    numdiff -q -a 5e-8 -r 0 $a/final/shape.dat $c/final/shape.dat
+  echo "# $name: newton $(value energy $c) ($(value iterations $c) it, $(value evaluations $c) solves)"
 done
 done
 # SLSQP in the metric of the contact stiffness (optimizer.metric = schur,
@@ -62,6 +73,21 @@ check "schur iterations grow by at most half from N = 16 to 64 ($(value iteratio
   holds '2 * n64 <= 3 * n16' n16="$(value iterations $TMP/m16-schur)" n64="$(value iterations $TMP/m64-schur)"
 check "at N = 64 the euclidean metric needs more than twice the schur iterations ($(value iterations $TMP/m64-euclidean) vs $(value iterations $TMP/m64-schur))" \
   holds 'euclidean > 2 * schur' euclidean="$(value iterations $TMP/m64-euclidean)" schur="$(value iterations $TMP/m64-schur)"
+# The Newton method on the same meshes: it converges, reaches SLSQP's E*
+# to 1e-9, and its iterations grow by at most half from N = 16 to 64 (the
+# issue's target is 1.5 from N = 64 to 1024, measured by make bench).
+for N in 16 32 64; do
+  c=$TMP/m$N-newton
+  $BIN optimize data/example-5.1.scene -o $c -s mesh.refine=$((N / 16)) \
+    -s optimizer.method=newton >/dev/null 2>$TMP/err || fail "N = $N, newton: $(cat $TMP/err)"
+  check "N = $N: the Newton method converges ($(value stop_reason $c), pi $(value projected_gradient $c))" \
+    [ "$(value stop_reason $c)" = converged ]
+  check "N = $N: the Newton method reaches SLSQP's E* to 1e-9 ($(value energy $c))" \
+    near_ref "$(value energy $TMP/m$N-schur)" "$(value energy $c)" 1e-9
+  echo "# N = $N: newton $(value iterations $c) it / $(value evaluations $c) solves"
+done
+check "Newton iterations grow by at most half from N = 16 to 64 ($(value iterations $TMP/m16-newton) -> $(value iterations $TMP/m64-newton))" \
+  holds '2 * n64 <= 3 * n16' n16="$(value iterations $TMP/m16-newton)" n64="$(value iterations $TMP/m64-newton)"
 # a state solve that fails inside the optimisation stops it: exit 3, a
 # message naming the solver, nothing written
 rm -rf $TMP/fail

@@ -1,0 +1,46 @@
+# suite.sh: the robustness suite of the optimiser (tests/scenes/suite/,
+# the section "The Newton method" of the paper): scenes unlike the
+# article's (both ends clamped, plane strain with nu = 0.45, a body force
+# only, free sides, a thin body, a tangential traction, a start at a
+# vertex of B, a load that lifts) and Example 5.1 at N = 512.  The Newton
+# method must converge within 100 iterations, keep every iterate in B to
+# 1e-12, and end at a KKT point of the programme; SLSQP, the reference,
+# runs too: where it converges, the two energies agree to 1e-9, and where
+# it does not, the Newton method's energy is not above its own.
+. tests/lib.sh
+# the value of KEY in a scene file (every suite scene gives its constants)
+key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
+for sc in tests/scenes/suite/*.scene; do
+  n=$(basename $sc .scene); c=$TMP/$n-newton; r=$TMP/$n-slsqp
+  if ! $BIN optimize $sc -o $c -s optimizer.method=newton >/dev/null 2>$TMP/err; then
+    fail "$n: newton: $(cat $TMP/err)"; continue
+  fi
+  check "$n: the Newton method converges within 100 iterations ($(value stop_reason $c), $(value iterations $c) it, pi $(value projected_gradient $c))" \
+    holds 'ok && it <= 100' ok=$([ "$(value stop_reason $c)" = converged ] && echo 1 || echo 0) it="$(value iterations $c)"
+  L=$(calc 'b - a' a="$(key a $sc)" b="$(key b $sc)"); N=$(key N $sc); C0=$(key C0 $sc)
+  h=$(calc 'L / N' L="$L" N="$N"); d=$(calc 'C1 * h' C1="$(key C1 $sc)" h="$h")
+  S=$(calc 'g * L - C2' g="$(key gamma $sc)" L="$L" C2="$(key C2 $sc)")
+  in_B "$n newton" $c 1e-12 $C0 $d $S $L $h
+  kkt_point "$n newton" $c $C0 $d $h
+  $BIN optimize $sc -o $r >/dev/null 2>$TMP/err || { fail "$n: slsqp: $(cat $TMP/err)"; continue; }
+  if [ "$(value stop_reason $r)" = converged ]; then
+    check "$n: Newton and SLSQP reach the same E* to 1e-9 ($(value energy $c), $(value energy $r))" \
+      near_ref "$(value energy $r)" "$(value energy $c)" 1e-9
+  else
+    check "$n: SLSQP stops unconverged ($(value stop_reason $r), pi $(value projected_gradient $r)); the Newton method's E* $(value energy $c) is not above its $(value energy $r)" \
+      holds 'e <= f + 1e-12 * (f < 0 ? -f : f)' e="$(value energy $c)" f="$(value energy $r)"
+  fi
+  echo "# $n: newton $(value iterations $c) it / $(value evaluations $c) solves, slsqp $(value iterations $r) it / $(value evaluations $r) solves ($(value stop_reason $r))"
+done
+# one scene at N = 512: Example 5.1 refined 32 times
+c=$TMP/N512-newton
+if $BIN optimize data/example-5.1.scene -o $c -s mesh.refine=32 -s optimizer.method=newton \
+     >/dev/null 2>$TMP/err; then
+  check "N = 512: the Newton method converges within 100 iterations ($(value stop_reason $c), $(value iterations $c) it)" \
+    holds 'ok && it <= 100' ok=$([ "$(value stop_reason $c)" = converged ] && echo 1 || echo 0) it="$(value iterations $c)"
+  in_B "N = 512 newton" $c 1e-12 0.05 0.0001953125 0.09 4 0.0078125
+  kkt_point "N = 512 newton" $c 0.05 0.0001953125 0.0078125
+else
+  fail "N = 512: newton: $(cat $TMP/err)"
+fi
+finish
