@@ -133,17 +133,18 @@ $(if $(filter $(ACCURACY_NMAX),$(wordlist 3,99,$(ACC_N))),,\
 # $(call acc_points,Ns,state,solver.tols,method,optimizer.tols): all combinations
 acc_points = $(foreach n,$(filter $(1),$(ACC_N)),$(foreach t,$(3),$(foreach o,$(5),N$(n)_$(2)_$(t)_$(4)_$(o))))
 ACC_TOL := 1e-4 1e-6 1e-8 1e-10 1e-12
-ACC.mesh            := $(call acc_points,$(ACC_N),pdas,1e-10,slsqp,1e-6)
-ACC.pdas-64         := $(call acc_points,64,pdas,$(ACC_TOL),slsqp,1e-6)
-ACC.cgssor-64       := $(call acc_points,64,cgssor,$(ACC_TOL),slsqp,1e-6)
-ACC.pdas-128        := $(call acc_points,128,pdas,$(ACC_TOL),slsqp,1e-6)
-ACC.cgssor-128      := $(call acc_points,128,cgssor,$(ACC_TOL),slsqp,1e-6)
+ACC.mesh            := $(call acc_points,$(ACC_N),pdas,1e-10,newton,1e-6)
+ACC.pdas-64         := $(call acc_points,64,pdas,$(ACC_TOL),newton,1e-6)
+ACC.cgssor-64       := $(call acc_points,64,cgssor,$(ACC_TOL),newton,1e-6)
+ACC.pdas-128        := $(call acc_points,128,pdas,$(ACC_TOL),newton,1e-6)
+ACC.cgssor-128      := $(call acc_points,128,cgssor,$(ACC_TOL),newton,1e-6)
 ACC.projgrad        := $(call acc_points,16 32 64 128,pdas,1e-10,projgrad,1e-6)
+ACC.slsqp-schur     := $(call acc_points,16 32 64 128,pdas,1e-10,slsqp-schur,1e-6)
 ACC.slsqp-euclidean := $(call acc_points,16 32 64 128,pdas,1e-10,slsqp-euclidean,1e-6)
-ACC.opttol-64       := $(call acc_points,64,pdas,1e-10,slsqp,1e-3 1e-4 1e-5 1e-6)
-ACC.opttol-128      := $(call acc_points,128,pdas,1e-10,slsqp,1e-3 1e-4 1e-5 1e-6)
+ACC.opttol-64       := $(call acc_points,64,pdas,1e-10,newton,1e-3 1e-4 1e-5 1e-6)
+ACC.opttol-128      := $(call acc_points,128,pdas,1e-10,newton,1e-3 1e-4 1e-5 1e-6)
 ACC_FAMILIES := $(foreach f,mesh pdas-64 cgssor-64 pdas-128 cgssor-128 projgrad \
-                  slsqp-euclidean opttol-64 opttol-128,$(if $(ACC.$(f)),$(f)))
+                  slsqp-schur slsqp-euclidean opttol-64 opttol-128,$(if $(ACC.$(f)),$(f)))
 ACC_RUNS := $(patsubst %,out/accuracy/%/summary.dat,$(sort $(foreach f,$(ACC_FAMILIES),$(ACC.$(f)))))
 ACCURACY_FIGS := figures/accuracy-time.pdf figures/accuracy-time.png figures/accuracy.tex
 

@@ -51,9 +51,10 @@ static const char usage_optimize[] =
   "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
   "Minimise the total potential energy E over the design set B (4.4) from\n"
   "the scene's initial design (moved to the nearest point of B first if it\n"
-  "is not in B), by optimizer.method = slsqp (NLopt's SQP, default) or\n"
-  "projgrad (Algorithm 4.1).  Prints one line per iteration: iteration, E,\n"
-  "projected-gradient norm, active contact nodes, state iterations, seconds.\n\n"
+  "is not in B), by optimizer.method = newton (steps from a model that keeps\n"
+  "the contact exact, default), slsqp (NLopt's SQP) or projgrad (Algorithm\n"
+  "4.1).  Prints one line per iteration: iteration, E, projected-gradient\n"
+  "norm, active contact nodes, state iterations, seconds.\n\n"
   "  -o DIR                output folder (default: out/NAME-optimize)\n"
   "  -s section.key=value  override a key of the scene (repeatable),\n"
   "                        e.g. -s optimizer.method=projgrad\n"
@@ -61,8 +62,11 @@ static const char usage_optimize[] =
   "DIR receives history.dat, iterates.dat (every iterate), summary.dat\n"
   "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
   "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
-  "multipliers.dat, and initial/ and final/ with the files of solve.\n";
-#line 93 "paper/main.nw"
+  "multipliers.dat, and initial/ and final/ with the files of solve.\n"
+  "Exit status: 0 converged, 2 bad input, 3 a solver or the optimiser did\n"
+  "not converge (the files of the last design accepted are written), 4\n"
+  "cannot write.\n";
+#line 97 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -92,7 +96,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 134 "paper/main.nw"
+#line 138 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -119,7 +123,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 168 "paper/main.nw"
+#line 172 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -136,7 +140,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 194 "paper/main.nw"
+#line 198 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -149,7 +153,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 217 "paper/main.nw"
+#line 221 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -158,7 +162,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 232 "paper/main.nw"
+#line 236 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -171,7 +175,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 251 "paper/main.nw"
+#line 255 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -201,12 +205,18 @@ static int command_optimize(Run *r, Status *st)
            "projected gradient %.2e (%s) -> %s/\n", r->s.path, start.energy,
            rep.energy, rep.iterations, rep.evaluations, rep.pgnorm,
            rep.stop_reason, r->dir);
+  if (!rc && strcmp(rep.stop_reason, "converged"))
+    rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected "
+                    "gradient %.2e > optimizer.tol = %.0e after %d iterations; "
+                    "the files of the last design accepted are in %s/",
+                    r->s.path, rep.stop_reason, rep.pgnorm, r->s.optimizer.tol,
+                    rep.iterations, r->dir);
   free(X);
   output_history_free(h);
   design_multipliers_free(m);
   return rc;
 }
-#line 293 "paper/main.nw"
+#line 303 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

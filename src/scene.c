@@ -776,7 +776,7 @@ static int read_optimizer(Loader *L, Scene *s)
   Opt_options *o = &s->optimizer, d;
   char tol[32], max_iter[32];
   int rc, k;
-  if ((rc = word(L, "optimizer", "method", "slsqp", opt_method_names, &k)))
+  if ((rc = word(L, "optimizer", "method", "newton", opt_method_names, &k)))
     return rc;
   d = opt_options_default((Opt_method)k);
   snprintf(tol, sizeof tol, "%.17g", d.tol);

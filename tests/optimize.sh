@@ -56,7 +56,7 @@ done
 # 46, 75), so that at N = 64 it needs more than twice the schur iterations.
 for N in 16 32 64; do
   for metric in schur euclidean; do
-    $BIN optimize data/example-5.1.scene -o $TMP/m$N-$metric -s mesh.refine=$((N / 16)) \
+    $BIN optimize data/example-5.1.scene -o $TMP/m$N-$metric -s mesh.refine=$((N / 16)) -s optimizer.method=slsqp \
       -s optimizer.metric=$metric >/dev/null 2>$TMP/err \
       || fail "N = $N, metric $metric: $(cat $TMP/err)"
   done
@@ -88,6 +88,28 @@ for N in 16 32 64; do
 done
 check "Newton iterations grow by at most half from N = 16 to 64 ($(value iterations $TMP/m16-newton) -> $(value iterations $TMP/m64-newton))" \
   holds '2 * n64 <= 3 * n16' n16="$(value iterations $TMP/m16-newton)" n64="$(value iterations $TMP/m64-newton)"
+# An optimisation that ends unconverged says so in one line, exits 3, and
+# writes every file for the last design it accepted: at its iteration
+# limit (each method), and without progress (SLSQP on states solved only to
+# 1e-4, whose energies are too rough for its line search: N = 64).
+unconverged() { # label stop-reason arguments...
+  label=$1 want=$2; shift 2; rm -rf $TMP/uc
+  $BIN optimize data/example-5.1.scene -o $TMP/uc "$@" >/dev/null 2>$TMP/err; rc=$?
+  check "$label: exit $rc, one line ($(cat $TMP/err)), stop_reason $(value stop_reason $TMP/uc)" \
+    holds 'rc == 3 && lines == 1 && ok' rc=$rc lines=$(wc -l < $TMP/err) \
+      ok=$(grep -q "not converged ($want)" $TMP/err && [ "$(value stop_reason $TMP/uc)" = $want ] && echo 1 || echo 0)
+  check "$label: every file written (summary, history, iterates, multipliers, initial/, final/)" \
+    sh -c "cd $TMP/uc && test -s summary.dat -a -s history.dat -a -s iterates.dat -a -s multipliers.dat -a -s initial/shape.dat -a -s final/shape.dat"
+  awk '!/^#/ && NF { if ($1 != k) { n = 0; k = $1 } a[n++] = $4 } END { for (i = 0; i < n; i++) print a[i] }' \
+    $TMP/uc/iterates.dat > $TMP/uc-last; awk '!/^#/ && NF { print $2 }' $TMP/uc/final/shape.dat > $TMP/uc-final
+  check "$label: the final design is the last accepted iterate" \
+    sh -c "test -s $TMP/uc-last && numdiff -q -a 1e-16 -r 1e-14 $TMP/uc-last $TMP/uc-final"
+}
+for method in newton slsqp projgrad; do
+  unconverged "$method at max_iter = 2" max_iter -s optimizer.method=$method -s optimizer.max_iter=2
+done
+unconverged "slsqp without progress" no_progress -s optimizer.method=slsqp -s solver.state=cgssor \
+  -s solver.tol=1e-4 -s mesh.refine=4
 # a state solve that fails inside the optimisation stops it: exit 3, a
 # message naming the solver, nothing written
 rm -rf $TMP/fail

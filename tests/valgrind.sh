@@ -1,8 +1,8 @@
 # valgrind.sh: Memcheck on the program, as the figures run it: solve and
 # optimize of the three shipped scenes (the article's mesh), gradcheck of
 # one, and three failure paths (a malformed scene: exit 2; a state solver
-# stopped by its iteration limit: exit 3; an optimiser stopped by its own,
-# which is still a result: exit 0).  Each must end with its usual status,
+# stopped by its iteration limit: exit 3; an optimiser stopped by its own:
+# exit 3 too, its files written).  Each must end with its usual status,
 # no memory error and no definite or indirect leak (a leak of either kind
 # is an error: --errors-for-leak-kinds).  Valgrind cannot run the
 # sanitizer build, so this runs bin/contactopt, the ordinary build, under
@@ -35,7 +35,7 @@ for e in 5.1 5.2 5.2-flat; do
   vg "optimize example-$e" 0 optimize data/example-$e.scene
 done
 vg "gradcheck example-5.1" 0 gradcheck data/example-5.1.scene
-vg "projgrad (Algorithm 4.1) on example-5.2, 20 iterations" 0 optimize \
+vg "projgrad (Algorithm 4.1) on example-5.2, 20 iterations" 3 optimize \
   data/example-5.2.scene -s optimizer.method=projgrad -s optimizer.max_iter=20
 vg "cgssor state solver" 0 solve data/example-5.1.scene \
   -s solver.state=cgssor
@@ -44,6 +44,8 @@ printf '[geometry]\na = 0\nb = 4\n[design]\nN = 0x\n' > $TMP/bad.scene
 vg "a malformed scene" 2 solve $TMP/bad.scene
 vg "a state solver at its iteration limit" 3 solve data/example-5.1.scene \
   -s solver.max_iter=1
-vg "an optimiser at its iteration limit" 0 optimize data/example-5.1.scene \
+vg "an optimiser at its iteration limit" 3 optimize data/example-5.1.scene \
   -s optimizer.max_iter=2
+vg "SLSQP at its iteration limit" 3 optimize data/example-5.1.scene \
+  -s optimizer.method=slsqp -s optimizer.max_iter=2
 finish
