@@ -10,7 +10,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h), and the program.
 MODULES := status problem scene mesh fem qp pdas mprgp psor model grad design newton opt output
-SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh \
+SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(filter-out src/pdas.h src/mprgp.h src/psor.h,$(MODULES:%=src/%.h)) \
            src/qp_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
@@ -27,7 +27,11 @@ RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
         $(EXAMPLES:%=out/example-%-strain-optimize/summary.dat) \
         out/example-5.1-C2arc-optimize/summary.dat
 FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
-           figures/reproduction.tex
+           figures/reproduction.tex figures/suite.tex
+# The robustness suite of the optimiser (paper/opt.nw): each scene by the
+# Newton method and by SLSQP, whose failures to converge are its result.
+SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
+SUITE_RUNS := $(foreach s,$(SUITE),out/suite/$(s)-newton/summary.dat out/suite/$(s)-slsqp/summary.dat)
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
@@ -116,6 +120,7 @@ build/bench/walltime: tests/bench/walltime.c
 bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/state.sh
 	@sh tests/bench/performance.sh
+	@sh tests/bench/optimize.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of
@@ -188,7 +193,7 @@ build/paper/contactopt.tex: paper/contactopt.nw | deps
 build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex \
-                      paper/performance.tex paper/bench-performance.tex | deps
+                      paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \
@@ -237,6 +242,16 @@ figures/fig-5.4.pdf figures/fig-5.4.png &: src/fig-results.gp out/example-5.2/su
                                            out/example-5.2-optimize/summary.dat
 	@mkdir -p figures
 	gnuplot -e "solve='out/example-5.2'; opt='out/example-5.2-optimize'; out='figures/fig-5.4'; example='5.2'" $<
+out/suite/%-newton/summary.dat: data/suite/%.scene bin/contactopt
+	@mkdir -p out/suite
+	bin/contactopt optimize $< -o $(@D) -s optimizer.method=newton > $(@D).log
+out/suite/%-slsqp/summary.dat: data/suite/%.scene bin/contactopt
+	@mkdir -p out/suite
+	bin/contactopt optimize $< -o $(@D) -s optimizer.method=slsqp > $(@D).log 2>&1 \
+	  || [ $$? -eq 3 ]
+figures/suite.tex: src/suite-table.sh $(SUITE_RUNS)
+	@mkdir -p figures
+	sh $< out/suite > $@.partial && mv $@.partial $@
 figures/reproduction.tex: src/reproduction.sh $(RUNS)
 	@mkdir -p figures
 	sh $< out > $@.partial && mv $@.partial $@

@@ -1,4 +1,4 @@
-# suite.sh: the robustness suite of the optimiser (tests/scenes/suite/,
+# suite.sh: the robustness suite of the optimiser (data/suite/,
 # the section "The Newton method" of the paper): scenes unlike the
 # article's (both ends clamped, plane strain with nu = 0.45, a body force
 # only, free sides, a thin body, a tangential traction, a start at a
@@ -10,7 +10,7 @@
 . tests/lib.sh
 # the value of KEY in a scene file (every suite scene gives its constants)
 key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
-for sc in tests/scenes/suite/*.scene; do
+for sc in data/suite/*.scene; do
   n=$(basename $sc .scene); c=$TMP/$n-newton; r=$TMP/$n-slsqp
   if ! $BIN optimize $sc -o $c -s optimizer.method=newton >/dev/null 2>$TMP/err; then
     fail "$n: newton: $(cat $TMP/err)"; continue
