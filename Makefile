@@ -207,7 +207,7 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex
 # depends on it, and make -j2 runs them side by side.
 
 figures: $(FIGURES) $(ACCURACY_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction table, the accuracy figure and table)"
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction and suite tables, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) > /dev/null

@@ -12,10 +12,10 @@ function sci(x, d) { return "$" num(x, d) "$" }
 function tol(x) { return sprintf("$10^{%d}$", log(x) / log(10) - 0.5) }
 function heading(f,   n) { n = f; sub(/^[a-z]*-/, "", n)
   if (f == "mesh")
-    return "(a) the mesh, $N = 16 \\ldots " nmax "$: SLSQP, \\texttt{pdas} to $10^{-10}$"
+    return "(a) the mesh, $N = 16 \\ldots " nmax "$: the Newton method, \\texttt{pdas} to $10^{-10}$"
   if (f ~ /^(pdas|cgssor)-/) return "(b) \\texttt{" substr(f, 1, index(f, "-") - 1) \
     "}, \\texttt{solver.tol} varied, $N = " n "$"
-  if (f ~ /^opttol-/) return "(d) SLSQP, \\texttt{optimizer.tol} varied, $N = " n "$"
+  if (f ~ /^opttol-/) return "(d) the Newton method, \\texttt{optimizer.tol} varied, $N = " n "$"
   if (f == "projgrad") return "(c) Algorithm 4.1 (\\texttt{projgrad})"
   return "(c) SLSQP, \\texttt{" n "} metric" }
 function setting(f) { if (f ~ /^(pdas|cgssor)-/) return tol($5)

@@ -355,19 +355,17 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     gap = residuals(w, mdl->col, &re, scale);
     
 #line 585 "paper/newton.nw"
-double rdd = 0, rdv = 0, rpmax = 0;
-for (int i = 0; i < n; i++) rdd = fmax(rdd, fabs(w->rd[i]));
-for (int c = 0; c < m; c++) rdv = fmax(rdv, fabs(w->rd[n + c]));
-for (int j = 0; j < p; j++) rpmax = fmax(rpmax, fabs(w->rp[j]));
+double rdd = 0, rdv = 0, rpmax = 0, all = re + gap;   /* all: NaN if any is */
+for (int i = 0; i < n; i++) rdd = fmax(rdd, fabs(w->rd[i])), all += w->rd[i];
+for (int c = 0; c < m; c++) rdv = fmax(rdv, fabs(w->rd[n + c])), all += w->rd[n + c];
+for (int j = 0; j < p; j++) rpmax = fmax(rpmax, fabs(w->rp[j])), all += w->rp[j];
 res = fmax(fmax(rdd / fmax(scale[0], DBL_MIN), rdv / fmax(scale[1], DBL_MIN)),
            fmax(rpmax / bmax, fabs(re)));
 res = fmax(res, gap / (fmax(scale[0], DBL_MIN) * NEWTON_GAP) * NEWTON_TOL);
-if (!isfinite(res))
-  return status_set(st, STATUS_NUMERIC, "newton: NaN in the interior point at "
-                    "iteration %d", k);
+if (!isfinite(all)) break;                    /* rounding has broken it: the best */
 #line 568 "paper/newton.nw"
     
-#line 602 "paper/newton.nw"
+#line 605 "paper/newton.nw"
 if (res < best) {
   best = res, worse = 0;
   memcpy(w->zbest, w->z, (size_t) (n + m) * sizeof *w->z);

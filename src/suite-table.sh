@@ -4,8 +4,8 @@
 # Tangled from paper/opt.nw; do not edit.
 out=$1
 v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
-echo '\begin{tabular}{@{}lrrrrlr@{}}\toprule'
-echo 'scene & $N$ & $E^*$ [J/m] & Newton & SLSQP & SLSQP stops & $\Delta E^*$\\\midrule'
+printf '%s\n' '\begin{tabular}{@{}lrrrrlr@{}}\toprule' \
+  'scene & $N$ & $E^*$ [J/m] & Newton & SLSQP & SLSQP stops & $\Delta E^*$\\\midrule'
 for d in "$out"/*-newton; do
   n=$(basename "$d" -newton); s=$out/$n-slsqp
   [ -f "$d/summary.dat" ] && [ -f "$s/summary.dat" ] || { echo "suite-table.sh: $n: no runs" >&2; exit 1; }
@@ -16,4 +16,4 @@ for d in "$out"/*-newton; do
     d = (f - e) / (e < 0 ? -e : e)
     printf "%s & %d & $%.9g$ & %s & %s & %s & $%.1e$\\\\\n", n, N, e, a, b, stop, d }'
 done
-echo '\bottomrule\end{tabular}'
+printf '%s\n' '\bottomrule\end{tabular}'

@@ -23,7 +23,10 @@ solve() { _n=$1 _sc=$2; shift 2
   $BIN solve $_sc -o $TMP/$_n "$@" >/dev/null 2>$TMP/err && return 0
   fail "$_n: solve failed: $(cat $TMP/err)"; return 1; }
 optimize() { _n=$1 _sc=$2; shift 2
-  $BIN optimize $_sc -o $TMP/$_n "$@" >$TMP/$_n.log 2>$TMP/err && return 0
+  $BIN optimize $_sc -o $TMP/$_n "$@" >$TMP/$_n.log 2>$TMP/err; _rc=$?
+  # exit 3 with a summary: an optimisation that ended unconverged, whose
+  # stop reason the checks that follow judge
+  [ $_rc -eq 0 ] || { [ $_rc -eq 3 ] && [ -s $TMP/$_n/summary.dat ]; } && return 0
   fail "$_n: optimize failed: $(cat $TMP/err)"; return 1; }
 # state_ok NAME TOL: the solve converged to TOL, and wrote no NaN or Inf
 state_ok() {
@@ -163,7 +166,7 @@ for f in 1 1e-9 1e9 9.31322574615478515625e-10 1073741824; do
   for solver in pdas cgssor psor; do
     solve units$f-$solver $ex $(units $f) -s solver.state=$solver
   done
-  for method in slsqp projgrad; do
+  for method in slsqp projgrad newton; do
     optimize units$f-$method $ex $(units $f) -s optimizer.method=$method
   done
 done
@@ -234,7 +237,7 @@ if [ -f $TMP/lift-pdas/summary.dat ]; then
       near_ref "$e" "$(value energy $TMP/lift2)" 1e-12
   fi
 fi
-for method in slsqp projgrad; do
+for method in slsqp projgrad newton; do
   optimize lift-$method $ex -s top.P2=5.75e8 -s optimizer.method=$method && opt_ok lift-$method $B_article
 done
 # On rollers alone nothing holds the lifted body: (4.3) has no solution.
@@ -284,7 +287,7 @@ done
 for point in "design.C2=4 0 0.00625 0" "design.C2=3.8 0.05 0.00625 0" "design.C1=0 0.0225 0 0" \
              "design.C1=1e-12 0.0225 2.5e-13 8e-11"; do
   set -- $point; key=$1 X=$2 d=$3 reach=$4
-  for method in slsqp projgrad; do
+  for method in slsqp projgrad newton; do
     n=point-${key#design.}-$method
     optimize $n $ex -s $key -s optimizer.method=$method || continue
     o=$TMP/$n
@@ -312,7 +315,7 @@ for solver in pdas cgssor psor; do
   check "$n: u = 0 and E = 0 exactly (max |u| $(umax $TMP/$n), E $(value energy $TMP/$n))" \
     holds 'u == 0 && e == 0' u="$(umax $TMP/$n)" e="$(value energy $TMP/$n)"
 done
-for method in slsqp projgrad; do
+for method in slsqp projgrad newton; do
   n=noload-$method
   optimize $n $ex $noload -s optimizer.method=$method || continue
   check "$n: converged at once ($(value stop_reason $TMP/$n), $(value iterations $TMP/$n) iterations)" \
@@ -339,7 +342,8 @@ for thin in thin thinner; do
     state_ok $n-pdas 1e-10
     energy_is_work $n-pdas $g 2 4 0 -5.75e8
     for solver in cgssor psor; do solver_or_refused $n-$solver $n-pdas $solver $sc -s material.model=$model; done
-    optimize $n-slsqp $sc -s material.model=$model && opt_ok $n-slsqp $B
+    optimize $n-slsqp $sc -s material.model=$model -s optimizer.method=slsqp && opt_ok $n-slsqp $B
+    optimize $n-newton $sc -s material.model=$model && opt_ok $n-newton $B
     optimize $n-projgrad $sc -s material.model=$model -s optimizer.method=projgrad || continue
     opt_ok $n-projgrad $B
     [ -f $TMP/$n-slsqp/summary.dat ] || continue
@@ -369,7 +373,7 @@ awk 'BEGIN { C0 = 0.05; C1 = 0.025; w = 2 - sqrt(3.6); p = sqrt(0.09 * C1)
 ref=$(value energy_final data/reference/example-5.1.dat)
 for model in plane_stress plane_strain; do
   for start in rise fall V Lambda; do
-    for method in slsqp projgrad; do
+    for method in slsqp projgrad newton; do
       n=vertex-$start-$model-$method
       optimize $n $ex $noarc -s design.initial=file -s design.file=$TMP/$start.dat \
         -s material.model=$model -s optimizer.method=$method || continue
