@@ -168,7 +168,7 @@ out/accuracy/plan.dat: accuracy-plan
 	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
 out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS)
 	sh $< out/accuracy > $@.partial && mv $@.partial $@
-figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat
+figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat > $@.partial && mv $@.partial $@
 figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/accuracy/sweep.dat

@@ -2,7 +2,7 @@
 # accuracy-table.sh SWEEP: the table of the section "What accuracy costs"
 # from SWEEP (written by accuracy.sh); LaTeX on standard output.
 # Tangled from paper/accuracy.nw; do not edit.
-awk '
+awk -v once=data/accuracy-once.dat '
 function num(x, d,   e, s) { if (x == 0) return "0"
   s = x < 0 ? "-" : ""; if (x < 0) x = -x
   e = int(log(x) / log(10)); if (x < 1 && 10^e != x) e--
@@ -39,4 +39,12 @@ END { print "\\bottomrule\\end{tabular}"
       printf " from $N = %s$, observed rate $p = %.2f$. Errors relative to $|E_\\infty|$;", lv, p
       print " \\emph{same mesh}: against the run of (a) on the same mesh; \\emph{shape}:"
       print "largest difference from the final $\\alpha$ of (a) on $N = " nmax "$;"
-      print "\\emph{s}: seconds of the optimisation; \\emph{stop} blank: converged." }' "$1"
+      print "\\emph{s}: seconds of the optimisation; \\emph{stop} blank: converged."
+      while ((getline line < once) > 0) {
+        if (line ~ /^#/) continue
+        split(line, f, " ")
+        if (f[1] + 0 <= nmax + 0) continue
+        printf " Measured once, beyond the sweep (\\texttt{make accuracy ACCURACY\\_NMAX=%d} on %s):", f[1], f[6]
+        printf " $N = %d$, $E^* = %s$\\,J/m, $%s$ from $E_\\infty$, %d solves, %.0f\\,s.\n", f[1], num(f[2], 8),
+          num((f[2] - Einf) / (Einf < 0 ? -Einf : Einf) < 0 ? (Einf - f[2]) / (Einf < 0 ? -Einf : Einf) : (f[2] - Einf) / (Einf < 0 ? -Einf : Einf), 1), f[4], f[5]
+      } }' "$1"

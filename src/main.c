@@ -23,10 +23,8 @@ static const char usage_solve[] =
   "                  [--matrix-market FILE]\n"
   "Solve the contact state problem (4.3) at the scene's initial design and\n"
   "write the results into DIR.\n\n"
-  "  -o DIR                output folder (default: out/NAME for SCENE\n"
-  "                        NAME.scene); other files in it are left alone\n"
-  "  -s section.key=value  override a key of the scene, e.g. -s mesh.M=4;\n"
-  "                        repeat for several keys\n"
+  "  -o DIR                output folder (default: out/NAME for NAME.scene)\n"
+  "  -s section.key=value  override a key of the scene (repeatable)\n"
   "  --matrix-market FILE  also write the stiffness matrix A(X), Dirichlet\n"
   "                        DOFs removed, in Matrix Market format\n"
   "  -h, --help            this text\n\n"
@@ -37,10 +35,9 @@ static const char usage_solve[] =
 
 static const char usage_gradcheck[] =
   "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
-  "Compare the gradient of E by formula (4.8) at the scene's initial design\n"
-  "with finite differences of E at the steps C0 * 1e-2 .. 1e-6: central\n"
-  "differences, or second-order one-sided ones at a node on the foundation\n"
-  "(alpha_i = 0).  Prints the largest relative error |G - G_fd| / max|G|.\n\n"
+  "Compare the gradient (4.8) at the scene's initial design with finite\n"
+  "differences of E (steps C0 * 1e-2 .. 1e-6; one-sided where alpha_i = 0)\n"
+  "and print the largest relative error |G - G_fd| / max|G|.\n\n"
   "  -o DIR                output folder (default: out/NAME-gradcheck)\n"
   "  -s section.key=value  override a key of the scene (repeatable)\n"
   "  -h, --help            this text\n\n"
@@ -50,23 +47,18 @@ static const char usage_gradcheck[] =
 static const char usage_optimize[] =
   "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
   "Minimise the total potential energy E over the design set B (4.4) from\n"
-  "the scene's initial design (moved to the nearest point of B first if it\n"
-  "is not in B), by optimizer.method = newton (steps from a model that keeps\n"
-  "the contact exact, default), slsqp (NLopt's SQP) or projgrad (Algorithm\n"
-  "4.1).  Prints one line per iteration: iteration, E, projected-gradient\n"
-  "norm, active contact nodes, state iterations, seconds.\n\n"
+  "the scene's initial design (projected onto B if outside), by\n"
+  "optimizer.method = newton (default), slsqp or projgrad (Algorithm 4.1).\n"
+  "Prints a line per iteration: E, projected gradient, contact, seconds.\n\n"
   "  -o DIR                output folder (default: out/NAME-optimize)\n"
-  "  -s section.key=value  override a key of the scene (repeatable),\n"
-  "                        e.g. -s optimizer.method=projgrad\n"
+  "  -s section.key=value  override a key of the scene (repeatable)\n"
   "  -h, --help            this text\n\n"
-  "DIR receives history.dat, iterates.dat (every iterate), summary.dat\n"
-  "(initial_energy, energy, iterations, evaluations, projected_gradient,\n"
-  "stop_reason, contact_pressure_cv_initial, contact_pressure_cv_final, ...),\n"
-  "multipliers.dat, and initial/ and final/ with the files of solve.\n"
-  "Exit status: 0 converged, 2 bad input, 3 a solver or the optimiser did\n"
-  "not converge (the files of the last design accepted are written), 4\n"
-  "cannot write.\n";
-#line 97 "paper/main.nw"
+  "DIR receives history.dat, iterates.dat, summary.dat (energy, iterations,\n"
+  "evaluations, projected_gradient, stop_reason, ...), multipliers.dat, and\n"
+  "initial/ and final/ with the files of solve.\n"
+  "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
+  "last design accepted are written), 4 cannot write.\n";
+#line 89 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -96,7 +88,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 138 "paper/main.nw"
+#line 130 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -123,7 +115,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 172 "paper/main.nw"
+#line 164 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -140,7 +132,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 198 "paper/main.nw"
+#line 190 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -153,7 +145,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 221 "paper/main.nw"
+#line 213 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -162,7 +154,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 236 "paper/main.nw"
+#line 228 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -175,7 +167,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 255 "paper/main.nw"
+#line 247 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -206,17 +198,16 @@ static int command_optimize(Run *r, Status *st)
            rep.energy, rep.iterations, rep.evaluations, rep.pgnorm,
            rep.stop_reason, r->dir);
   if (!rc && strcmp(rep.stop_reason, "converged"))
-    rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected "
-                    "gradient %.2e > optimizer.tol = %.0e after %d iterations; "
-                    "the files of the last design accepted are in %s/",
-                    r->s.path, rep.stop_reason, rep.pgnorm, r->s.optimizer.tol,
-                    rep.iterations, r->dir);
+    rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected gradient "
+                    "%.2e > optimizer.tol = %.0e after %d iterations; the files of the last "
+                    "design accepted are in %s/", r->s.path, rep.stop_reason, rep.pgnorm,
+                    r->s.optimizer.tol, rep.iterations, r->dir);
   free(X);
   output_history_free(h);
   design_multipliers_free(m);
   return rc;
 }
-#line 303 "paper/main.nw"
+#line 294 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
