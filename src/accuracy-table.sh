@@ -12,7 +12,8 @@ function sci(x, d) { return "$" num(x, d) "$" }
 function tol(x) { return sprintf("$10^{%d}$", log(x) / log(10) - 0.5) }
 function heading(f,   n) { n = f; sub(/^[a-z]*-/, "", n)
   if (f == "mesh")
-    return "(a) the mesh, $N = 16 \\ldots " nmax "$: the Newton method, \\texttt{pdas} to $10^{-10}$"
+    return "(a) the mesh, $N = 16 \\ldots " nmax \
+      "$: the Newton method, \\texttt{pdas} to $10^{-10}$"
   if (f ~ /^(pdas|cgssor)-/) return "(b) \\texttt{" substr(f, 1, index(f, "-") - 1) \
     "}, \\texttt{solver.tol} varied, $N = " n "$"
   if (f ~ /^opttol-/) return "(d) the Newton method, \\texttt{optimizer.tol} varied, $N = " n "$"
@@ -44,7 +45,9 @@ END { print "\\bottomrule\\end{tabular}"
         if (line ~ /^#/) continue
         split(line, f, " ")
         if (f[1] + 0 <= nmax + 0) continue
-        printf " Measured once, beyond the sweep (\\texttt{make accuracy ACCURACY\\_NMAX=%d} on %s):", f[1], f[6]
-        printf " $N = %d$, $E^* = %s$\\,J/m, $%s$ from $E_\\infty$, %d solves, %.0f\\,s.\n", f[1], num(f[2], 8),
-          num((f[2] - Einf) / (Einf < 0 ? -Einf : Einf) < 0 ? (Einf - f[2]) / (Einf < 0 ? -Einf : Einf) : (f[2] - Einf) / (Einf < 0 ? -Einf : Einf), 1), f[4], f[5]
+        err = (f[2] - Einf) / Einf
+        printf " Measured once, beyond the sweep (\\texttt{make accuracy"
+        printf " ACCURACY\\_NMAX=%d} on %s): $N = %d$,", f[1], f[6], f[1]
+        printf " $E^* = %s$\\,J/m, $%s$ from $E_\\infty$,", num(f[2], 8), num(err < 0 ? -err : err, 1)
+        printf " %d solves, %.0f\\,s.\n", f[4], f[5]
       } }' "$1"

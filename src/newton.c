@@ -45,8 +45,10 @@ Newton_workspace *newton_alloc(int n, int m, Status *st)
   double **c[] = { &w->s, &w->lam, &w->b, &w->W, &w->rp, &w->ds, &w->dl,
                    &w->as, &w->al, &w->rc };
   int ok = 1;
-  for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) ok &= !!(*a[k] = malloc(nm * sizeof(double)));
-  for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) ok &= !!(*c[k] = malloc(p * sizeof(double)));
+  for (size_t k = 0; k < sizeof a / sizeof a[0]; k++)
+    ok &= !!(*a[k] = malloc(nm * sizeof(double)));
+  for (size_t k = 0; k < sizeof c / sizeof c[0]; k++)
+    ok &= !!(*c[k] = malloc(p * sizeof(double)));
   ok &= !!(w->Hd = malloc(n * sizeof(double))) && !!(w->w = malloc(n * sizeof(double)))
      && !!(w->Td = malloc(n * sizeof(double))) && !!(w->Te = malloc(n * sizeof(double)))
      && !!(w->T0 = malloc(n * sizeof(double)))
@@ -71,7 +73,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 234 "paper/newton.nw"
+#line 236 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double model_scale(const Newton_model *mdl)
 {
@@ -106,7 +108,7 @@ static void scale_model(Newton_workspace *w, const Newton_model *mdl, double phi
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 272 "paper/newton.nw"
+#line 274 "paper/newton.nw"
 /* out = A z (p values) */
 static void constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out)
@@ -136,7 +138,7 @@ static void constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 323 "paper/newton.nw"
+#line 325 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -189,7 +191,7 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 383 "paper/newton.nw"
+#line 385 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -218,7 +220,7 @@ static void bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 427 "paper/newton.nw"
+#line 429 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {
@@ -302,7 +304,7 @@ static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
   w->mu += a * dmu;
   return 0;
 }
-#line 517 "paper/newton.nw"
+#line 519 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_GAP = 1e-18, NEWTON_ACCEPT = 1e-9;
 
@@ -354,7 +356,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
     gap = residuals(w, mdl->col, &re, scale);
     
-#line 585 "paper/newton.nw"
+#line 587 "paper/newton.nw"
 double rdd = 0, rdv = 0, rpmax = 0, all = re + gap;   /* all: NaN if any is */
 for (int i = 0; i < n; i++) rdd = fmax(rdd, fabs(w->rd[i])), all += w->rd[i];
 for (int c = 0; c < m; c++) rdv = fmax(rdv, fabs(w->rd[n + c])), all += w->rd[n + c];
@@ -363,15 +365,15 @@ res = fmax(fmax(rdd / fmax(scale[0], DBL_MIN), rdv / fmax(scale[1], DBL_MIN)),
            fmax(rpmax / bmax, fabs(re)));
 res = fmax(res, gap / (fmax(scale[0], DBL_MIN) * NEWTON_GAP) * NEWTON_TOL);
 if (!isfinite(all)) break;                    /* rounding has broken it: the best */
-#line 568 "paper/newton.nw"
+#line 570 "paper/newton.nw"
     
-#line 605 "paper/newton.nw"
+#line 607 "paper/newton.nw"
 if (res < best) {
   best = res, worse = 0;
   memcpy(w->zbest, w->z, (size_t) (n + m) * sizeof *w->z);
 } else worse++;
 if (best <= NEWTON_TOL || (worse >= 3 && best <= NEWTON_ACCEPT)) break;
-#line 569 "paper/newton.nw"
+#line 571 "paper/newton.nw"
     if ((singular = predictor_corrector(w, mdl->col, gap, re))) break;
   }
   if (rep) rep->iterations = k, rep->residual = best;

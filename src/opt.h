@@ -1,11 +1,11 @@
-#line 126 "paper/opt.nw"
+#line 128 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_H
 #define CONTACTOPT_OPT_H
 #include "status.h"
 #include "model.h"
 #include "design.h"
 
-#line 144 "paper/opt.nw"
+#line 146 "paper/opt.nw"
 typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
 extern const char *const opt_method_names[]; /* slsqp, projgrad, newton */
@@ -19,7 +19,7 @@ typedef struct {
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 159 "paper/opt.nw"
+#line 161 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -32,7 +32,7 @@ typedef struct {
 
 typedef void (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 173 "paper/opt.nw"
+#line 175 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -45,7 +45,7 @@ typedef struct {
   double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
-#line 187 "paper/opt.nw"
+#line 189 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -57,5 +57,5 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);
-#line 139 "paper/opt.nw"
+#line 141 "paper/opt.nw"
 #endif

@@ -8,7 +8,9 @@ printf '%s\n' '\begin{tabular}{@{}lrrrrlr@{}}\toprule' \
   'scene & $N$ & $E^*$ [J/m] & Newton & SLSQP & SLSQP stops & $\Delta E^*$\\\midrule'
 for d in "$out"/*-newton; do
   n=$(basename "$d" -newton); s=$out/$n-slsqp
-  [ -f "$d/summary.dat" ] && [ -f "$s/summary.dat" ] || { echo "suite-table.sh: $n: no runs" >&2; exit 1; }
+  if [ ! -f "$d/summary.dat" ] || [ ! -f "$s/summary.dat" ]; then
+    echo "suite-table.sh: $n: no runs" >&2; exit 1
+  fi
   awk -v n="$n" -v N="$(v N $d)" -v e="$(v energy $d)" -v f="$(v energy $s)" \
       -v a="$(v iterations $d)/$(v evaluations $d)" -v b="$(v iterations $s)/$(v evaluations $s)" \
       -v stop="$(v stop_reason $s)" 'BEGIN {
