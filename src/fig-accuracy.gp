@@ -19,7 +19,7 @@ do for [f in families] {
   else { oneN = oneN." ".f }
 }
 left = 2.8; panelw = 9.6; gap = 3.0; top = 1.9; panelh = 7.4   # cm
-keytop = top + panelh + 2.0; keyh = 2.4
+keytop = top + panelh + 2.0; keyh = 3.2
 Wcm = left + 2*panelw + gap + 0.6
 Hcm = keytop + keyh
 dpcm = 1600.0 / Wcm; fontpt = 12
@@ -34,8 +34,9 @@ fam_title(f) = f eq "mesh" ? sprintf("mesh, {/:Italic N} = 16...%d", nmax) : \
   sprintf("%s solver.tol, {/:Italic N} = %s", fam_first(f), fam_rest(f))
 fam_color(f) = f eq "mesh" ? "black" : f[1:5] eq "pdas-" ? "#1f4e99" : \
   f[1:7] eq "cgssor-" ? "#d95f02" : f eq "projgrad" ? "#1b9e77" : \
-  f[1:6] eq "slsqp-" ? "#7570b3" : "#b00000"
-fam_pt(f) = fam_rest(f) eq "128" ? 6 : f eq "projgrad" ? 5 : f[1:6] eq "slsqp-" ? 9 : 7
+  f eq "slsqp-schur" ? "#e7298a" : f[1:6] eq "slsqp-" ? "#7570b3" : "#b00000"
+fam_pt(f) = fam_rest(f) eq "128" ? 6 : f eq "projgrad" ? 5 : f eq "slsqp-schur" ? 11 : \
+  f[1:6] eq "slsqp-" ? 9 : 7
 do for [fmt in "pdf png"] {
   set encoding utf8; set minussign
   dpi = dpcm * 2.54
@@ -63,7 +64,7 @@ do for [fmt in "pdf png"] {
   set ylabel sprintf("|{/:Italic E}^* − {/:Italic E}_%s| / |{/:Italic E}_%s|", inf, inf)
   set title "(a) error against the limit"
   keyfont = sprintf(",%g", 0.9*fsz)
-  set key at screen sx(0.6), sy(keytop) left top vertical maxrows 3 \
+  set key at screen sx(0.6), sy(keytop) left top vertical maxrows 4 \
       width -4 spacing 1.2 samplen 2 Left reverse font keyfont
   plot for [f in varN] sweep using (strcol(1) eq f ? $13 : NaN):9 \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
