@@ -368,7 +368,7 @@ typedef struct {
   double *d, *v, *trial;  /* n, m, n: its solution and the trial design */
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
-enum { NEWTON_RHO_MAX_EXP = 12 };
+static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
 #line 791 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
@@ -430,8 +430,8 @@ static int newton(Evaluator *ev, double *X)
                     NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL };
   if (!nr.qp || !nr.S) {
     newton_free(nr.qp), free(nr.S);
-    return nr.qp ? status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory")
-                 : STATUS_SYSTEM;
+    if (!nr.qp) return (int) ev->st->code;      /* newton_alloc said why */
+    return status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
   nr.g = nr.v + mm, nr.r = nr.g + n, nr.d = nr.r + n, nr.trial = nr.d + n, nr.Xk = nr.trial + n;
@@ -455,7 +455,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
     if (accepted) report_iterate(ev, k, pg), ev->rep->pgnorm = pg, ev->rep->iterations = k;
     const char *why = pg <= ev->o->tol ? "converged"
                     : k >= ev->o->max_iter ? "max_iter"
-                    : nr.rho > pow(10, NEWTON_RHO_MAX_EXP) ? "no_progress" : NULL;
+                    : nr.rho > NEWTON_RHO_MAX ? "no_progress" : NULL;
     if (why) { snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why); break; }
     if ((rc = newton_try(&nr, &accepted))) break;
     if (accepted) k++;

@@ -90,8 +90,8 @@ check "Newton iterations grow by at most half from N = 16 to 64 ($(value iterati
   holds '2 * n64 <= 3 * n16' n16="$(value iterations $TMP/m16-newton)" n64="$(value iterations $TMP/m64-newton)"
 # An optimisation that ends unconverged says so in one line, exits 3, and
 # writes every file for the last design it accepted: at its iteration
-# limit (each method), and without progress (SLSQP on states solved only to
-# 1e-4, whose energies are too rough for its line search: N = 64).
+# limit (each method), and without progress (SLSQP and the Newton method on
+# states solved only to 1e-4, too rough for a line search or a model: N = 64).
 unconverged() { # label stop-reason arguments...
   label=$1 want=$2; shift 2; rm -rf $TMP/uc
   $BIN optimize data/example-5.1.scene -o $TMP/uc "$@" >/dev/null 2>$TMP/err; rc=$?
@@ -110,6 +110,8 @@ for method in newton slsqp projgrad; do
 done
 unconverged "slsqp without progress" no_progress -s optimizer.method=slsqp -s solver.state=cgssor \
   -s solver.tol=1e-4 -s mesh.refine=4
+unconverged "newton without progress" no_progress -s solver.state=cgssor -s solver.tol=1e-4 \
+  -s mesh.refine=4
 # a state solve that fails inside the optimisation stops it: exit 3, a
 # message naming the solver, nothing written
 rm -rf $TMP/fail

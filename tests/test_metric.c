@@ -6,15 +6,24 @@
    of 1e-6 of themselves in both.  Also: S is positive definite,
    and for a body that only the foundation holds (the flat punch) S without
    the shift annihilates the vertical rigid motion, which the shift makes
-   invertible. */
+   invertible.  Last, the measurement behind the Newton method's model
+   (paper/newton.nw, "Where E is curved"): at the optimum of Example 5.1 the
+   Hessian of E, by central differences of the gradient (4.8), against S:
+   their generalised eigenvalues lie near 1 on the nodes in contact and
+   near 0 (|lambda| < 1e-3) on the others. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "check.h"
 #include "setup.h"
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_sort_vector.h>
 #include "scene.h"
 #include "model.h"
+#include "grad.h"
+#include "design.h"
+#include "opt.h"
 
 /* the dense Schur complement of A onto the contact unknowns, ordered by
    contact number c, the contact diagonals multiplied by 1 + shift */
@@ -119,6 +128,70 @@ static void floating(void)
   cholmod_finish(&cm);
 }
 
+/* the Hessian of E at X by differences of the gradient (4.8), step
+   eps C0: central, or forward where X_j - eps C0 < 0; symmetrised */
+static int fd_hessian(Model *md, double *X, int n, double step, double *H)
+{
+  double *Gp = malloc(2 * n * sizeof *Gp), *Gm = Gp + n;
+  Status st;
+  int rc = 0;
+  for (int j = 0; !rc && j < n; j++) {
+    double x0 = X[j], lo = x0 - step >= 0 ? x0 - step : x0;
+    X[j] = x0 + step;
+    rc = model_solve(md, X, &st) || grad_energy(md, Gp, &st);
+    X[j] = lo;
+    rc = rc || model_solve(md, X, &st) || grad_energy(md, Gm, &st);
+    X[j] = x0;
+    for (int i = 0; i < n; i++) H[(size_t) i * n + j] = (Gp[i] - Gm[i]) / (x0 + step - lo);
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < i; j++)
+      H[(size_t) i * n + j] = H[(size_t) j * n + i] =
+        0.5 * (H[(size_t) i * n + j] + H[(size_t) j * n + i]);
+  free(Gp);
+  return rc;
+}
+
+static void curvature(void)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  Opt_report r;
+  test_start(&cm);
+  if (!check(scene_load(&s, "data/example-5.1.scene", 0, NULL, &st) == 0, "load 5.1")) return;
+  int n = s.problem.N + 1, active = 0, near1 = 0, near0 = 0;
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
+  Design_set B = design_set(&s.problem);
+  double *X = malloc(n * sizeof *X), *H = malloc((size_t) n * n * sizeof *H),
+         *S = malloc((size_t) n * n * sizeof *S), lo1 = HUGE_VAL, hi1 = 0, hi0 = 0;
+  int ok = !design_project(&B, s.alpha0, X, NULL, &st)
+           && !opt_minimize(md, &B, &s.optimizer, X, NULL, NULL, &r, &st)
+           && !model_solve(md, X, &st) && !model_contact_stiffness(md, S, &st);
+  for (int c = 0; ok && c < md->dofs->nc; c++)
+    active += md->Q[md->dofs->contact[c]] <= md->lo[c] && md->T[c] > 0;
+  ok = ok && !fd_hessian(md, X, n, 1e-7 * s.problem.C0, H);
+  if (check(ok, "5.1: optimum, S and the difference Hessian (%d nodes in contact)", active)) {
+    gsl_matrix_view Hv = gsl_matrix_view_array(H, n, n), Sv = gsl_matrix_view_array(S, n, n);
+    gsl_vector *ev = gsl_vector_alloc(n);
+    gsl_eigen_gensymm_workspace *w = gsl_eigen_gensymm_alloc(n);
+    gsl_eigen_gensymm(&Hv.matrix, &Sv.matrix, ev, w);
+    for (int i = 0; i < n; i++) {
+      double l = gsl_vector_get(ev, i);
+      if (fabs(l) < 1e-3) near0++, hi0 = fmax(hi0, fabs(l));
+      else if (l > 0.8 && l < 1.1) near1++, lo1 = fmin(lo1, l), hi1 = fmax(hi1, l);
+    }
+    check(near1 == active && near0 == n - active, "5.1: %d generalised eigenvalues of "
+          "(Hessian, S) in [%.2f, %.2f] (as many as nodes in contact), %d below %.1e",
+          near1, lo1, hi1, near0, hi0);
+    gsl_eigen_gensymm_free(w), gsl_vector_free(ev);
+  }
+  free(X), free(H), free(S);
+  model_free(md);
+  scene_free(&s);
+  cholmod_finish(&cm);
+}
+
 int main(void)
 {
   compare("data/example-5.1.scene", 16, QP_PDAS);
@@ -128,5 +201,6 @@ int main(void)
   compare("tests/scenes/flat-punch.scene", 16, QP_PDAS);
   compare("tests/scenes/flat-punch.scene", 16, QP_PSOR);
   floating();
+  curvature();
   return check_done();
 }
