@@ -1,10 +1,10 @@
-#line 129 "paper/fem.nw"
+#line 138 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
 
-#line 141 "paper/fem.nw"
+#line 150 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
@@ -15,7 +15,10 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   d->unknown = calloc(d->ndof, sizeof *d->unknown);
   d->contact = malloc(m->ncol * sizeof *d->contact);
   d->contact_col = malloc(m->ncol * sizeof *d->contact_col);
-  if (!d->unknown || !d->contact || !d->contact_col) {
+  d->tangent = malloc(m->ncol * sizeof *d->tangent);
+  d->tangent_col = malloc(m->ncol * sizeof *d->tangent_col);
+  if (!d->unknown || !d->contact || !d->contact_col || !d->tangent
+      || !d->tangent_col) {
     fem_dofs_free(d);
     status_set(st, STATUS_SYSTEM, "dofs: out of memory");
     return NULL;
@@ -23,7 +26,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 165 "paper/fem.nw"
+#line 177 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -31,10 +34,15 @@ for (int i = 0; i < m->ncol; i++)
     d->contact[d->nc] = d->unknown[2 * i + 1];
     d->contact_col[d->nc++] = i;
   }
-#line 159 "paper/fem.nw"
+for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
+  if (d->unknown[2 * i] >= 0) {          /* u1 of A_i: it may slip */
+    d->tangent[d->nt] = d->unknown[2 * i];
+    d->tangent_col[d->nt++] = i;
+  }
+#line 171 "paper/fem.nw"
   return d;
 }
-#line 176 "paper/fem.nw"
+#line 193 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -48,16 +56,18 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
   }
 }
 
-#line 192 "paper/fem.nw"
+#line 209 "paper/fem.nw"
 void fem_dofs_free(Dofs *d)
 {
   if (!d) return;
   free(d->unknown);
   free(d->contact);
   free(d->contact_col);
+  free(d->tangent);
+  free(d->tangent_col);
   free(d);
 }
-#line 218 "paper/fem.nw"
+#line 237 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -72,7 +82,7 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 273 "paper/fem.nw"
+#line 292 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -91,7 +101,7 @@ void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
 
-#line 294 "paper/fem.nw"
+#line 313 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -102,7 +112,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
 
-#line 307 "paper/fem.nw"
+#line 326 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -114,7 +124,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 327 "paper/fem.nw"
+#line 346 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -127,13 +137,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   return area2;
 }
 
-#line 341 "paper/fem.nw"
+#line 360 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 350 "paper/fem.nw"
+#line 369 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -143,9 +153,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 346 "paper/fem.nw"
+#line 365 "paper/fem.nw"
 }
-#line 369 "paper/fem.nw"
+#line 388 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -156,7 +166,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
     int g[6];
     fem_element_dofs(m, d, t, g);
     
-#line 388 "paper/fem.nw"
+#line 407 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -164,14 +174,14 @@ for (int r = 0; r < 6; r++)
       ((int *) T->j)[T->nnz] = g[c];
       ((double *) T->x)[T->nnz++] = 0;
     }
-#line 379 "paper/fem.nw"
+#line 398 "paper/fem.nw"
   }
   cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
   cholmod_free_triplet(&T, cm);
   if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
   return A;
 }
-#line 399 "paper/fem.nw"
+#line 418 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -180,7 +190,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 412 "paper/fem.nw"
+#line 431 "paper/fem.nw"
 static double *fem_entry(cholmod_sparse *A, int r, int c)
 {
   int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
@@ -191,7 +201,7 @@ static double *fem_entry(cholmod_sparse *A, int r, int c)
   return lo <= hi && Ai[lo] == r ? (double *) A->x + lo : NULL;
 }
 
-#line 426 "paper/fem.nw"
+#line 445 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -203,7 +213,7 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 443 "paper/fem.nw"
+#line 462 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -213,11 +223,11 @@ for (int r = 0; r < 6; r++)
                           "stiffness: pattern does not match the mesh");
       *a += K[r][c];
     }
-#line 437 "paper/fem.nw"
+#line 456 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 463 "paper/fem.nw"
+#line 482 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -231,7 +241,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 480 "paper/fem.nw"
+#line 499 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -239,7 +249,7 @@ static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
 
-#line 489 "paper/fem.nw"
+#line 508 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -247,7 +257,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 503 "paper/fem.nw"
+#line 522 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -266,14 +276,14 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 
-#line 552 "paper/fem.nw"
+#line 571 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 567 "paper/fem.nw"
+#line 586 "paper/fem.nw"
 double xy[6], q[6], gx[3], gy[3];
 long double e[3], De;
 fem_element_xy(m, t, xy);
@@ -287,7 +297,7 @@ for (int r = 0; r < 3; r++) {
   for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
   U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
 }
-#line 558 "paper/fem.nw"
+#line 577 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -1,4 +1,4 @@
-#line 50 "paper/fem.nw"
+#line 55 "paper/fem.nw"
 #ifndef CONTACTOPT_FEM_H
 #define CONTACTOPT_FEM_H
 #include <cholmod.h>
@@ -13,16 +13,20 @@ typedef struct {
   int nc;            /* |I|: contact nodes whose u2 is an unknown */
   int *contact;      /* nc: the unknown of u2 at each of them */
   int *contact_col;  /* nc: its column i, the node A_i */
+  int nt;            /* with friction: contact nodes whose u1 is an
+                        unknown; 0 on a frictionless foundation */
+  int *tangent;      /* nt: the unknown of u1 at each of them */
+  int *tangent_col;  /* nt: its column i */
 } Dofs;
 
 /* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
 typedef struct { double D[3][3]; } Hooke;
 
-#line 74 "paper/fem.nw"
+#line 83 "paper/fem.nw"
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 259 "paper/fem.nw"
+#line 278 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -33,7 +37,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3]);
 /* e = the unnormalised strain 2|T| (e11, e22, 2 e12) of q */
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3]);
-#line 78 "paper/fem.nw"
+#line 87 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
@@ -44,5 +48,5 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
-#line 70 "paper/fem.nw"
+#line 79 "paper/fem.nw"
 #endif

@@ -5,9 +5,10 @@
 #include "model.h"
 
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
-   model solved last.  It is a checked error to call it before a solve. */
+   model solved last.  It is a checked error to call it before a solve,
+   or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 62 "paper/grad.nw"
+#line 63 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   double *G;      /* N+1: dE/dX_i by (4.8) at X */
@@ -27,5 +28,5 @@ void grad_check_free(Grad_check *gc);
    NULL. */
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
-#line 43 "paper/grad.nw"
+#line 44 "paper/grad.nw"
 #endif

@@ -7,58 +7,8 @@
 #include "status.h"
 #include "scene.h"
 #include "output.h"
-#line 36 "paper/main.nw"
-static const char usage_main[] =
-  "usage: contactopt COMMAND SCENE [options]\n"
-  "Shape optimisation of an elastic body on a rigid frictionless foundation\n"
-  "(Haslinger & Neittaanmaki, M2AN 21, 1987).\n\n"
-  "commands:\n"
-  "  solve     solve the contact state at the scene's initial shape\n"
-  "  gradcheck compare the gradient (4.8) with finite differences of E\n"
-  "  optimize  find the contact shape of least energy (Section 4.4)\n\n"
-  "'contactopt COMMAND --help' explains the options of a command.\n";
-
-static const char usage_solve[] =
-  "usage: contactopt solve SCENE [-o DIR] [-s section.key=value ...]\n"
-  "                  [--matrix-market FILE]\n"
-  "Solve the contact state problem (4.3) at the scene's initial design and\n"
-  "write the results into DIR.\n\n"
-  "  -o DIR                output folder (default: out/NAME for NAME.scene)\n"
-  "  -s section.key=value  override a key of the scene (repeatable)\n"
-  "  --matrix-market FILE  also write the stiffness matrix A(X), Dirichlet\n"
-  "                        DOFs removed, in Matrix Market format\n"
-  "  -h, --help            this text\n\n"
-  "DIR receives summary.dat (energy, kkt_residual, iterations,\n"
-  "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat,\n"
-  "nodes.dat, triangles.dat and solution.vtu (ParaView).\n"
-  "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write.\n";
-
-static const char usage_gradcheck[] =
-  "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
-  "Compare the gradient (4.8) at the scene's initial design with finite\n"
-  "differences of E (steps C0 * 1e-2 .. 1e-6; one-sided where alpha_i = 0)\n"
-  "and print the largest relative error |G - G_fd| / max|G|.\n\n"
-  "  -o DIR                output folder (default: out/NAME-gradcheck)\n"
-  "  -s section.key=value  override a key of the scene (repeatable)\n"
-  "  -h, --help            this text\n\n"
-  "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
-  "difference, relative error) and summary.dat (max_relative_error, ...).\n";
-
-static const char usage_optimize[] =
-  "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
-  "Minimise the total potential energy E over the design set B (4.4) from\n"
-  "the scene's initial design (projected onto B if outside), by\n"
-  "optimizer.method = newton (default), slsqp or projgrad (Algorithm 4.1).\n"
-  "Prints a line per iteration: E, projected gradient, contact, seconds.\n\n"
-  "  -o DIR                output folder (default: out/NAME-optimize)\n"
-  "  -s section.key=value  override a key of the scene (repeatable)\n"
-  "  -h, --help            this text\n\n"
-  "DIR receives history.dat, iterates.dat, summary.dat (energy, iterations,\n"
-  "evaluations, projected_gradient, stop_reason, ...), multipliers.dat, and\n"
-  "initial/ and final/ with the files of solve.\n"
-  "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
-  "last design accepted are written), 4 cannot write.\n";
-#line 89 "paper/main.nw"
+#include "usage.h"
+#line 108 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -88,7 +38,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 130 "paper/main.nw"
+#line 149 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -115,7 +65,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 164 "paper/main.nw"
+#line 183 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -132,10 +82,19 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 190 "paper/main.nw"
+#line 204 "paper/main.nw"
+static int refuse_coulomb(const Run *r, const char *command, Status *st)
+{
+  if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
+  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: %s needs "
+                    "the gradient of an energy, and a Coulomb state minimises "
+                    "none (contact.model = tresca has one)", r->s.path, command);
+}
+#line 221 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
+  if (refuse_coulomb(r, "gradcheck", st)) return st->code;
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
   int rc = gc ? grad_check(r->md, r->s.alpha0, gc, NULL, NULL, st) : (int) st->code;
   if (!rc && !(rc = output_begin(&o, r->dir, st))
@@ -145,7 +104,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 213 "paper/main.nw"
+#line 245 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -154,7 +113,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 228 "paper/main.nw"
+#line 260 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -167,7 +126,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 247 "paper/main.nw"
+#line 279 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -178,7 +137,8 @@ static int command_optimize(Run *r, Status *st)
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
-  if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  if (refuse_coulomb(r, "optimize", st)) rc = st->code;
+  else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
     if (!(rc = optimize_start(r, &B, X, &moved, st))
@@ -207,7 +167,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 294 "paper/main.nw"
+#line 327 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

@@ -20,6 +20,9 @@ Mesh *mesh_new(const Problem *p, Status *st);     /* topology, fixed nodes */
 int mesh_move(Mesh *m, const double *X, Status *st); /* place nodes for X */
 double mesh_motion(const Mesh *m, int k); /* d x2(node k) / d alpha_i, (4.2) */
 double mesh_area(const Mesh *m, int t);   /* signed area of triangle t */
+/* the tributary length of contact node A_i: half of each contact edge
+   that meets it, the trapezoid weight along Gamma_C */
+double mesh_tributary(const Mesh *m, int i);
 void mesh_free(Mesh *m);
 #line 57 "paper/mesh.nw"
 #endif

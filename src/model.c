@@ -1,11 +1,11 @@
-#line 127 "paper/model.nw"
+#line 137 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "model.h"
 
-#line 137 "paper/model.nw"
+#line 147 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -20,29 +20,32 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 157 "paper/model.nw"
-int n = md->dofs->n, nc = md->dofs->nc;
+#line 167 "paper/model.nw"
+int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
 md->lo = malloc((nc ? nc : 1) * sizeof *md->lo);
-md->T = calloc(nc ? nc : 1, sizeof *md->T);
-if (!md->b || !md->Q || !md->lo || !md->T) {
+md->T = calloc(nc + nt + 1, sizeof *md->T);
+md->slip = calloc(nt + 1, sizeof *md->slip);
+md->fixed_point_tol = solver->tol, md->fixed_point_max = solver->max_iter;
+if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   model_free(md);
   status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 151 "paper/model.nw"
+#line 161 "paper/model.nw"
   
-#line 170 "paper/model.nw"
-md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo };
+#line 182 "paper/model.nw"
+md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
+                nt, md->dofs->tangent, md->slip };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 152 "paper/model.nw"
+#line 162 "paper/model.nw"
   return md;
 }
-#line 183 "paper/model.nw"
+#line 196 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -50,7 +53,52 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-#line 193 "paper/model.nw"
+#line 233 "paper/model.nw"
+static int model_state(Model *md, Status *st)
+{
+  int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
+                    &md->report, st);
+  md->solved = rc == STATUS_OK;
+  return rc;
+}
+#line 280 "paper/model.nw"
+static double model_change(const double *old, const double *T, int nc)
+{
+  double diff = 0, size = 0;
+  for (int c = 0; c < nc; c++)
+    diff = fmax(diff, fabs(T[c] - old[c])),
+    size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
+  return diff == 0 ? 0 : diff / size;
+}
+#line 249 "paper/model.nw"
+static int model_coulomb(Model *md, Status *st)
+{
+  int nc = md->dofs->nc, rc, steps = 0;
+  double *Tn = malloc((nc + 1) * sizeof *Tn);
+  if (!Tn) return status_set(st, STATUS_SYSTEM, "coulomb: out of memory");
+  memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
+  rc = model_state(md, st);
+  md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
+  while (!rc && md->fixed_point_residual > md->fixed_point_tol
+         && md->fixed_point_iterations < md->fixed_point_max) {
+    memcpy(Tn, md->T, nc * sizeof *Tn);
+    friction_coulomb_bounds(md->problem, md->dofs, Tn, md->slip);
+    steps += md->report.iterations;
+    rc = model_state(md, st);
+    md->fixed_point_iterations++;
+    md->fixed_point_residual = model_change(Tn, md->T, nc);
+  }
+  free(Tn);
+  md->report.iterations += steps;
+  if (!rc && md->fixed_point_residual > md->fixed_point_tol)
+    rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
+      "converge in %d iterations: the normal forces still change by %.3g "
+      "relative > solver.tol = %.3g (friction = %g too large?)",
+      md->fixed_point_iterations, md->fixed_point_residual,
+      md->fixed_point_tol, md->problem->friction);
+  return rc;
+}
+#line 209 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -60,32 +108,26 @@ int model_solve(Model *md, const double *X, Status *st)
     return rc;
   fem_load(md->mesh, md->dofs, md->problem, md->b);
   for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
-  rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
-                &md->report, st);
-  md->solved = rc == STATUS_OK;
+  if (md->problem->contact == CONTACT_TRESCA)
+    friction_tresca_bounds(md->problem, md->mesh, md->dofs, md->slip);
+  rc = md->problem->contact == CONTACT_COULOMB ? model_coulomb(md, st)
+                                               : model_state(md, st);
   md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
+  if (md->dofs->nt) {
+    md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
+    md->energy += md->friction_energy;
+  }
   md->seconds = model_clock() - start;
   return rc;
 }
 
-#line 222 "paper/model.nw"
-static double model_tributary(const Mesh *m, int i)
-{
-  double len = 0;
-  for (int k = i - 1; k <= i; k++)
-    if (k >= 0 && k < m->N)
-      len += 0.5 * hypot(m->xy[2 * (k + 1)] - m->xy[2 * k],
-                         m->xy[2 * (k + 1) + 1] - m->xy[2 * k + 1]);
-  return len;
-}
-
-#line 234 "paper/model.nw"
+#line 302 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
-  return md->T[c] / model_tributary(md->mesh, md->dofs->contact_col[c]);
+  return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 242 "paper/model.nw"
+#line 310 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -100,7 +142,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 258 "paper/model.nw"
+#line 326 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -108,10 +150,10 @@ void model_free(Model *md)
   cholmod_free_sparse(&md->A, md->cm);
   mesh_free(md->mesh);
   fem_dofs_free(md->dofs);
-  free(md->b); free(md->Q); free(md->lo); free(md->T);
+  free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 295 "paper/model.nw"
+#line 363 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -124,13 +166,13 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 314 "paper/model.nw"
+#line 382 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 307 "paper/model.nw"
+#line 375 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

@@ -7,8 +7,9 @@
 #include "mesh.h"
 #include "fem.h"
 #include "qp.h"
+#include "friction.h"
 
-#line 56 "paper/model.nw"
+#line 57 "paper/model.nw"
 typedef struct {
   const Problem *problem; /* the problem (not owned) */
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
@@ -21,14 +22,22 @@ typedef struct {
   Qp qp;                /* the state problem (4.3) over A, b, lo */
   Qp_workspace *solver; /* its solver, reused from design to design */
   double *Q;            /* n: the state Q(X) */
-  double *T;            /* nc: the contact forces T_i >= 0 */
-  double energy;        /* E(X) = 1/2 Q'AQ - (F+P)'Q */
-  Qp_report report;     /* of the last state solve */
+  double *T;            /* nc + nt: the contact forces T_i >= 0, then
+                           (friction) the tangential ones */
+  double *slip;         /* nt: the slip bounds of friction (N/m) */
+  double energy;        /* E(X) = 1/2 Q'AQ - (F+P)'Q + friction_energy */
+  double friction_energy; /* sum slip_k |u1_k|; 0 without friction */
+  int fixed_point_iterations; /* Coulomb: Tresca solves after the first */
+  double fixed_point_residual; /* Coulomb: the last relative change of T */
+  Qp_report report;     /* of the last state solve (Coulomb: iterations
+                           summed over the fixed point) */
   double seconds;       /* wall time of the last model_solve */
   int solved;           /* Q holds a state: warm start the next solve */
+  double fixed_point_tol; /* Coulomb: the solver's tol, relative */
+  int fixed_point_max;  /* Coulomb: the solver's max_iter */
 } Model;
 
-#line 77 "paper/model.nw"
+#line 86 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -44,5 +53,5 @@ int model_solve(Model *md, const double *X, Status *st);
    contact nodes at the last design solved (see below) */
 int model_contact_stiffness(Model *md, double *S, Status *st);
 void model_free(Model *md);
-#line 51 "paper/model.nw"
+#line 52 "paper/model.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 165 "paper/output.nw"
+#line 173 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 204 "paper/output.nw"
+#line 214 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -31,7 +31,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 231 "paper/output.nw"
+#line 241 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -41,7 +41,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 244 "paper/output.nw"
+#line 254 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -70,7 +70,7 @@ int output_close(Output *o, FILE *f, Status *st)
                       o->file[o->nfiles - 1]);
   return STATUS_OK;
 }
-#line 277 "paper/output.nw"
+#line 287 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
@@ -106,19 +106,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 316 "paper/output.nw"
+#line 326 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 329 "paper/output.nw"
+#line 339 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 338 "paper/output.nw"
+#line 348 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -126,7 +126,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 348 "paper/output.nw"
+#line 358 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -137,23 +137,35 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 361 "paper/output.nw"
+#line 371 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
+  const Dofs *d = md->dofs;
   FILE *f = output_open_in(o, sub, "contact.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]\n");
-  for (int c = 0; c < md->dofs->nc; c++) {
-    int i = md->dofs->contact_col[c];
-    double u2 = md->Q[md->dofs->contact[c]];
-    fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g\n", md->mesh->xy[2 * i],
+  fprintf(f, "# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]%s\n",
+          d->nt ? " u1[m] Tt[N/m]" : "");
+  for (int c = 0, k = 0; c < d->nc; c++) {
+    int i = d->contact_col[c];
+    double u2 = md->Q[d->contact[c]];
+    fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g", md->mesh->xy[2 * i],
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
+    
+#line 395 "paper/output.nw"
+if (d->nt) {
+  while (k < d->nt && d->tangent_col[k] < i) k++;
+  int here = k < d->nt && d->tangent_col[k] == i;
+  fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
+          here ? md->T[d->nc + k] : 0.0);
+}
+#line 386 "paper/output.nw"
+    fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 379 "paper/output.nw"
+#line 404 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -167,7 +179,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 395 "paper/output.nw"
+#line 420 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -185,7 +197,20 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 416 "paper/output.nw"
+#line 479 "paper/output.nw"
+static void output_vtu_friction(FILE *f, const Model *md)
+{
+  const Dofs *d = md->dofs;
+  fprintf(f, "<DataArray type=\"Float64\" Name=\"tangential_force\" "
+             "format=\"ascii\">\n");
+  for (int node = 0, k = 0; node < md->mesh->nnodes; node++) {
+    int here = k < d->nt && d->tangent_col[k] == node;  /* row 0 first */
+    fprintf(f, "%.15g\n", here ? md->T[d->nc + k] : 0.0);
+    k += here;
+  }
+  fprintf(f, "</DataArray>\n");
+}
+#line 441 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
 {
   const Mesh *m = md->mesh;
@@ -203,7 +228,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
   for (int t = 0; t < m->ntri; t++)
     fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
   
-#line 438 "paper/output.nw"
+#line 463 "paper/output.nw"
 fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
 for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
 fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
@@ -213,11 +238,13 @@ fprintf(f, "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
            "NumberOfComponents=\"3\" format=\"ascii\">\n");
 for (int k = 0; k < m->nnodes; k++)
   fprintf(f, "%.15g %.15g 0\n", output_u(md, k, 0), output_u(md, k, 1));
-fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 433 "paper/output.nw"
+fprintf(f, "</DataArray>\n");
+if (md->dofs->nt) output_vtu_friction(f, md);
+fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+#line 458 "paper/output.nw"
   return output_close(o, f, st);
 }
-#line 451 "paper/output.nw"
+#line 494 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -230,7 +257,20 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 471 "paper/output.nw"
+#line 538 "paper/output.nw"
+static void output_friction(FILE *f, const Model *md)
+{
+  const Problem *p = md->problem;
+  if (p->contact == CONTACT_FRICTIONLESS) return;
+  fprintf(f, "contact %s\n", problem_contact_name(p->contact));
+  if (p->contact == CONTACT_TRESCA) fprintf(f, "slip_bound %.17g\n", p->slip_bound);
+  else fprintf(f, "friction %.17g\n", p->friction);
+  fprintf(f, "friction_energy %.15g\n", md->friction_energy);
+  if (p->contact == CONTACT_COULOMB)
+    fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
+            md->fixed_point_iterations, md->fixed_point_residual);
+}
+#line 514 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -247,9 +287,10 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
           md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
+  output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 493 "paper/output.nw"
+#line 554 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -264,7 +305,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 516 "paper/output.nw"
+#line 577 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -287,10 +328,11 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
              "max_relative_error %.3e\nworst_node %d\n", run->scene,
           problem_model_name(p->model), p->N, md->energy,
           gc->err[gc->worst], gc->worst);
+  output_friction(f, md);
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 641 "paper/output.nw"
+#line 703 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -301,7 +343,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 549 "paper/output.nw"
+#line 611 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -337,7 +379,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 588 "paper/output.nw"
+#line 650 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -358,7 +400,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 619 "paper/output.nw"
+#line 681 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -377,7 +419,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 657 "paper/output.nw"
+#line 719 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
@@ -400,5 +442,6 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
+  output_friction(f, md);
   return output_close(o, f, st);
 }

@@ -1,4 +1,4 @@
-#line 177 "paper/pdas.nw"
+#line 178 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,12 +7,14 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 303 "paper/pdas.nw"
+#line 304 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 501 "paper/pdas.nw"
+#line 312 "paper/pdas.nw"
+enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
+#line 512 "paper/pdas.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
 
-#line 655 "paper/pdas.nw"
+#line 707 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -26,7 +28,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 246 "paper/pdas.nw"
+#line 247 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -35,7 +37,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
   int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
   int postorder = cm->postorder, ok = last && perm;
-  for (int c = 0; ok && c < w->nc; c++) last[w->qp->ic[c]] = 1;
+  for (int c = 0; ok && c < w->nk; c++) last[w->ik[c]] = 1;
   cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
   ok = ok && cholmod_camd(&pd->K, NULL, 0, last, perm, cm)
           && (pd->Ls = cholmod_analyze_p(&pd->K, perm, NULL, 0, cm));
@@ -43,27 +45,27 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   cm->postorder = postorder;
   free(last), free(perm);
   
-#line 266 "paper/pdas.nw"
+#line 267 "paper/pdas.nw"
 pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 if (!ok || !pd->rhs || !pd->Lb)
   return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
                     "analyse A (CHOLMOD status %d)", cm->status);
 const int *P = pd->Ls->Perm;
-for (int t = 0; t < w->nc; t++)
+for (int t = 0; t < w->nk; t++)
   if ((pd->tc[t] = w->bnd[P[pd->first + t]]) < 0)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 262 "paper/pdas.nw"
+#line 263 "paper/pdas.nw"
 }
 
-#line 217 "paper/pdas.nw"
+#line 218 "paper/pdas.nw"
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   const cholmod_sparse *A = w->qp->A;
-  size_t nz = (size_t) ((const int *) A->p)[w->n], nc = (size_t) w->nc + 1;
+  size_t nz = (size_t) ((const int *) A->p)[w->n], nc = (size_t) w->nk + 1;
   pd->K = *A;                /* the header: p and i are shared with A */
   pd->K.x = malloc((nz + 1) * sizeof(double));
   pd->K.nzmax = nz, pd->K.stype = -1;
@@ -76,13 +78,13 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   if (!pd->K.x || !pd->act || !pd->tc || !pd->fr || !pd->f || !pd->y || !pd->r
       || !pd->Lcc || !pd->S || !pd->M)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas, "
-                      "nc = %d)", w->nc);
+                      "nc = %d)", w->nk);
   memcpy(pd->K.x, A->x, nz * sizeof(double));
-  pd->first = w->n - w->nc;
+  pd->first = w->n - w->nk;
   return analyse_contact_last(w, st);
 }
 
-#line 280 "paper/pdas.nw"
+#line 281 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -94,49 +96,49 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 192 "paper/pdas.nw"
+#line 193 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
   Pdas_workspace *pd = &w->pdas;
-  pd->warm = warm, pd->condensed = 0;
-  for (int c = 0; c < w->nc; c++) pd->act[c] = 1;
+  pd->warm = warm, pd->condensed = 0, pd->stepped = 1;
+  for (int c = 0; c < w->nk; c++) pd->act[c] = HELD;
 }
 
 /* the size of the active set */
 static int count_act(const Qp_workspace *w)
 {
   int m = 0;
-  for (int c = 0; c < w->nc; c++) m += w->pdas.act[c];
+  for (int c = 0; c < w->nk; c++) m += w->pdas.act[c] == HELD;
   return m;
 }
 
-#line 390 "paper/pdas.nw"
+#line 401 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
   const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
   double *Kx = w->pdas.K.x;
   memcpy(Kx, w->qp->A->x, (size_t) Ap[w->n] * sizeof *Kx);
-  for (int c = 0; c < w->nc; c++) {
-    int j = w->qp->ic[c];
+  for (int c = 0; c < w->nk; c++) {
+    int j = w->ik[c];
     for (int k = Ap[j]; k < Ap[j + 1]; k++)
       if (Ai[k] == j) Kx[k] += w->d[j];
   }
 }
 
-#line 410 "paper/pdas.nw"
+#line 421 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   const cholmod_factor *L = pd->L;
   const double *Lx = L->x;
-  int nc = w->nc, first = pd->first;
+  int nc = w->nk, first = pd->first;
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 430 "paper/pdas.nw"
+#line 441 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -145,7 +147,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 420 "paper/pdas.nw"
+#line 431 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -154,11 +156,11 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 443 "paper/pdas.nw"
+#line 454 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
-  int nc = w->nc;
+  int nc = w->nk;
   if (nc == 0) return;
   gsl_matrix_view L = gsl_matrix_view_array(pd->Lcc, nc, nc),
                   LLt = gsl_matrix_view_array(pd->M, nc, nc);
@@ -166,12 +168,12 @@ static void schur_complement(Qp_workspace *w)
   for (int t = 0; t < nc; t++)
     for (int u = 0; u <= t; u++) {
       int a = pd->tc[t], b = pd->tc[u];
-      double v = pd->M[(size_t) t * nc + u] - (t == u ? w->d[w->qp->ic[a]] : 0);
+      double v = pd->M[(size_t) t * nc + u] - (t == u ? w->d[w->ik[a]] : 0);
       pd->S[(size_t) a * nc + b] = pd->S[(size_t) b * nc + a] = v;
     }
 }
 
-#line 463 "paper/pdas.nw"
+#line 474 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -184,15 +186,15 @@ static int condensed_load(Qp_workspace *w, Status *st)
   pd->bu2 = 0;
   for (int i = 0; i < w->n; i++)
     if (w->bnd[i] < 0) pd->bu2 += b[i] * b[i];
-  for (int t = 0; t < w->nc; t++) {
+  for (int t = 0; t < w->nk; t++) {
     double s = 0;
-    for (int u = 0; u <= t; u++) s += pd->Lcc[(size_t) t * w->nc + u] * z[pd->first + u];
+    for (int u = 0; u <= t; u++) s += pd->Lcc[(size_t) t * w->nk + u] * z[pd->first + u];
     pd->f[pd->tc[t]] = s;
   }
   return STATUS_OK;
 }
 
-#line 366 "paper/pdas.nw"
+#line 377 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -215,26 +217,27 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 505 "paper/pdas.nw"
+#line 516 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
-  int nc = w->nc, m = 0;
-  const double *lo = w->qp->lo;
+  int nk = w->nk, m = 0;
+  const double *lo = w->pos;
   
-#line 530 "paper/pdas.nw"
-for (int c = 0; c < nc; c++)
-  if (pd->act[c]) pd->y[c] = lo[c];
+#line 544 "paper/pdas.nw"
+for (int c = 0; c < nk; c++)
+  if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
 for (int a = 0; a < m; a++) {
-  const double *Sa = pd->S + (size_t) pd->fr[a] * nc;
-  double s = pd->f[pd->fr[a]];
-  for (int c = 0; c < nc; c++) if (pd->act[c]) s -= Sa[c] * lo[c];
+  int c0 = pd->fr[a];
+  const double *Sa = pd->S + (size_t) c0 * nk;
+  double s = pd->f[c0] + (pd->act[c0] == FORCE_HI ? w->fhi[c0] : w->flo[c0]);
+  for (int c = 0; c < nk; c++) if (pd->act[c] == HELD) s -= Sa[c] * lo[c];
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 512 "paper/pdas.nw"
+#line 523 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -250,34 +253,42 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 547 "paper/pdas.nw"
+#line 562 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
-  for (int c = 0; c < w->nc; c++) {
-    const double *Sc = pd->S + (size_t) c * w->nc;
+  for (int c = 0; c < w->nk; c++) {
+    const double *Sc = pd->S + (size_t) c * w->nk;
     double s = -pd->f[c];
-    for (int e = 0; e < w->nc; e++) s += Sc[e] * pd->y[e];
+    for (int e = 0; e < w->nk; e++) s += Sc[e] * pd->y[e];
     w->T[c] = s;
   }
 }
 
-#line 561 "paper/pdas.nw"
+#line 576 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 575 "paper/pdas.nw"
-for (int c = 0; c < w->nc; c++) {
-  double T = w->T[c], gap = pd->y[c] - w->qp->lo[c], bc = w->qp->b[w->qp->ic[c]];
-  if (T < 0) tn += T * T;
-  if (gap < 0) inf += gap * gap;
-  comp += fabs(T) * fabs(gap);
+#line 590 "paper/pdas.nw"
+for (int c = 0; c < w->nk; c++) {
+  double T = w->T[c], bc = w->qp->b[w->ik[c]];
+  if (c < w->nc) {
+    double gap = pd->y[c] - w->pos[c];
+    if (T < 0) tn += T * T;
+    if (gap < 0) inf += gap * gap;
+    comp += fabs(T) * fabs(gap);
+    ll += w->pos[c] * w->pos[c];
+  } else {                              /* as in qp_kkt_eval */
+    double excess = fabs(T) - w->fhi[c];
+    if (excess > 0) tn += excess * excess;
+    comp += fabs(w->fhi[c] * fabs(pd->y[c]) + T * pd->y[c]);
+  }
   bb += bc * bc, axax += (bc + T) * (bc + T);
-  yy += pd->y[c] * pd->y[c], ll += w->qp->lo[c] * w->qp->lo[c];
+  yy += pd->y[c] * pd->y[c];
 }
-#line 566 "paper/pdas.nw"
+#line 581 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double k = fmax(qp_ratio(sqrt(tn), sf),
                   fmax(qp_ratio(sqrt(inf), su),
@@ -285,40 +296,56 @@ for (int c = 0; c < w->nc; c++) {
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
 
-#line 592 "paper/pdas.nw"
-/* act = { c : T_c + A_ii (lo_c - y_c) > 0 }; 1 if it did not change */
+#line 615 "paper/pdas.nw"
+/* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
+   held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
+   interval of width 0 (no friction) always gives its one force; after a
+   Newton step, a slide that crossed its place sticks first */
+static char predicted_state(const Qp_workspace *w, int c)
+{
+  const Pdas_workspace *pd = &w->pdas;
+  if (pd->stepped && pd->act[c] != HELD && w->fhi[c] < INFINITY
+      && w->flo[c] != w->fhi[c])
+    return pd->act[c] == FORCE_LO ? (pd->y[c] < w->pos[c] ? HELD : FORCE_LO)
+                                  : (pd->y[c] > w->pos[c] ? HELD : FORCE_HI);
+  double z = w->T[c] + w->d[w->ik[c]] * (w->pos[c] - pd->y[c]);
+  if (z <= w->flo[c] || w->flo[c] == w->fhi[c]) return FORCE_LO;
+  return z > w->fhi[c] ? FORCE_HI : HELD;
+}
+
+/* act = the states that y and T call for; 1 if none changed */
 static int predict_active_set(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   int same = 1;
-  for (int c = 0; c < w->nc; c++) {
-    char a = w->T[c] + w->d[w->qp->ic[c]] * (w->qp->lo[c] - pd->y[c]) > 0;
+  for (int c = 0; c < w->nk; c++) {
+    char a = predicted_state(w, c);
     same &= a == pd->act[c];
     pd->act[c] = a;
   }
   return same;
 }
 
-#line 612 "paper/pdas.nw"
+#line 664 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   double *v = pd->rhs->x;
   memcpy(v, pd->Lb->x, (size_t) w->n * sizeof *v);
-  for (int t = 0; t < w->nc; t++) {
+  for (int t = 0; t < w->nk; t++) {
     double s = 0;
-    for (int u = t; u < w->nc; u++)
-      s += pd->Lcc[(size_t) u * w->nc + t] * pd->y[pd->tc[u]];
+    for (int u = t; u < w->nk; u++)
+      s += pd->Lcc[(size_t) u * w->nk + t] * pd->y[pd->tc[u]];
     v[pd->first + t] = s;
   }
   if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &pd->rhs, st)) return st->code;
   memcpy(w->x, pd->rhs->x, (size_t) w->n * sizeof *w->x);
-  for (int c = 0; c < w->nc; c++) w->x[w->qp->ic[c]] = pd->y[c];
+  for (int c = 0; c < w->nk; c++) w->x[w->ik[c]] = pd->y[c];
   qp_refresh(w);
   return STATUS_OK;
 }
 
-#line 637 "paper/pdas.nw"
+#line 689 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -326,7 +353,7 @@ static int refine(Qp_workspace *w, Status *st)
   for (int i = 0; i < w->n; i++) v[i] = w->bnd[i] < 0 ? -w->g[i] : 0;
   if (solve_pair(w, CHOLMOD_P, CHOLMOD_L, &pd->rhs, st)) return st->code;
   v = pd->rhs->x;
-  memset(v + pd->first, 0, (size_t) w->nc * sizeof *v);
+  memset(v + pd->first, 0, (size_t) w->nk * sizeof *v);
   if (solve_pair(w, CHOLMOD_Lt, CHOLMOD_Pt, &pd->rhs, st)) return st->code;
   v = pd->rhs->x;
   for (int i = 0; i < w->n; i++) if (w->bnd[i] < 0) w->x[i] += v[i];
@@ -334,23 +361,25 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 307 "paper/pdas.nw"
+#line 316 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 327 "paper/pdas.nw"
+#line 336 "paper/pdas.nw"
 if ((code = condense(w, st)) == SINGULAR)
   return qp_not_held(w, st, "A is singular even with every bound held", w->nc);
 if (code) return code;
 if (pd->warm) {
-  for (int c = 0; c < w->nc; c++) pd->y[c] = w->x[w->qp->ic[c]];
+  for (int c = 0; c < w->nk; c++) pd->y[c] = w->x[w->ik[c]];
   condensed_forces(w);
+  pd->stepped = 0;
   predict_active_set(w);
+  pd->stepped = 1;
 }
-#line 313 "paper/pdas.nw"
+#line 322 "paper/pdas.nw"
   }
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
@@ -361,7 +390,7 @@ if (pd->warm) {
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 346 "paper/pdas.nw"
+#line 357 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -370,17 +399,19 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
   "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
-#line 323 "paper/pdas.nw"
+#line 332 "paper/pdas.nw"
 }
 
-#line 676 "paper/pdas.nw"
-/* *c = a workspace of the Newton method for w's problem, condensed at
-   its current values (NULL when it cannot be allocated) */
-int pdas_condense_apart(const Qp_workspace *w, Qp_workspace **c, Status *st)
+#line 728 "paper/pdas.nw"
+/* *c = a workspace of the Newton method for qp, w's problem or a part
+   of it, condensed at its current values (NULL when it cannot be
+   allocated) */
+int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
+                        Qp_workspace **c, Status *st)
 {
   Qp_options opt = { QP_PDAS, 1, 1, 1 };
   int code;
-  if (!(*c = qp_alloc(w->qp, &opt, w->cm, st))) return st->code;
+  if (!(*c = qp_alloc(qp, &opt, w->cm, st))) return st->code;
   code = qp_read_values(*c, st);
   if (!code && (code = condense(*c, st)) == SINGULAR)
     code = status_set(st, STATUS_NUMERIC, "qp_schur: A is singular even "
@@ -388,11 +419,11 @@ int pdas_condense_apart(const Qp_workspace *w, Qp_workspace **c, Status *st)
   return code;
 }
 
-#line 693 "paper/pdas.nw"
+#line 747 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
-  int nc = w->nc;
+  int nc = w->nk;
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
-  for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->qp->ic[k]];
+  for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }

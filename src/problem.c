@@ -1,12 +1,14 @@
-#line 174 "paper/problem.nw"
+#line 191 "paper/problem.nw"
 #include <stddef.h>
 #include "problem.h"
 
-#line 180 "paper/problem.nw"
+#line 197 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
                                         "traction", NULL};
+const char *const problem_contact_names[] = {"frictionless", "tresca",
+                                             "coulomb", NULL};
 
 const char *problem_model_name(Plane_model m)
 {
@@ -17,7 +19,12 @@ const char *problem_bc_name(Bc_kind k)
 {
   return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
 }
-#line 199 "paper/problem.nw"
+
+const char *problem_contact_name(Contact_law law)
+{
+  return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
+}
+#line 223 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;

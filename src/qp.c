@@ -1,11 +1,11 @@
-#line 359 "paper/qp.nw"
+#line 373 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 425 "paper/qp.nw"
+#line 439 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -13,42 +13,51 @@ double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
 {
   const double *b = qp->b;
   double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
-  for (int j = 0, c = 0; j < (int) qp->A->ncol; j++) {
+  for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
     double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
     bb += b[j] * b[j];
     axax += axj * axj;
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 448 "paper/qp.nw"
+#line 465 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 439 "paper/qp.nw"
+#line 453 "paper/qp.nw"
       c++;
+    } else if (k < qp->nt && qp->it[k] == j) {
+      
+#line 478 "paper/qp.nw"
+double excess = fabs(r) - qp->slip[k];
+if (excess > 0) tn += excess * excess;         /* more than friction holds */
+comp += fabs(qp->slip[k] * fabs(x[j]) + r * x[j]); /* slip not against r */
+if (T) T[qp->nc + k] = r;
+#line 456 "paper/qp.nw"
+      k++;
     } else
       rf += r * r;
   }
   
-#line 459 "paper/qp.nw"
+#line 487 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
                 fmax(qp_ratio(sqrt(inf), su),
                      qp_ratio(qp_ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 444 "paper/qp.nw"
+#line 461 "paper/qp.nw"
 }
 
-#line 467 "paper/qp.nw"
+#line 495 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, x, NULL, T);
 }
 
-#line 496 "paper/qp.nw"
+#line 524 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -63,13 +72,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
 }
 
-#line 561 "paper/qp.nw"
+#line 590 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 570 "paper/qp.nw"
+#line 599 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -85,7 +94,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 535 "paper/qp.nw"
+#line 563 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -107,26 +116,49 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
       return status_set(st, STATUS_INPUT, "qp_alloc: ic[%d] = %d: the bounded "
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
+  
+#line 692 "paper/qp.nw"
+if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
+  return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
+                    "or it, slip is NULL", qp->nt, (int) A->ncol);
+for (int k = 0; k < qp->nt; k++)
+  if (qp->it[k] < (k ? qp->it[k - 1] + 1 : 0) || qp->it[k] >= (int) A->ncol)
+    return status_set(st, STATUS_INPUT, "qp_alloc: it[%d] = %d: the slipping "
+                      "unknowns must increase within [0, %d)", k, qp->it[k],
+                      (int) A->ncol);
+if (qp->nt > 0 && opt->method != QP_PDAS)
+  return status_set(st, STATUS_INPUT, "%s cannot solve contact with friction: "
+                    "use solver.state = pdas", qp_method_name(opt->method));
+#line 585 "paper/qp.nw"
   return check_options(opt, st);
 }
 
-#line 589 "paper/qp.nw"
+#line 620 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
-  size_t n = (size_t) w->n + 1, nc = (size_t) w->nc + 1;
+  size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
   w->bnd = malloc(n * sizeof *w->bnd);
   w->lo = malloc(n * sizeof *w->lo), w->d = malloc(n * sizeof *w->d);
   w->x = malloc(n * sizeof *w->x), w->g = malloc(n * sizeof *w->g);
-  w->T = malloc(nc * sizeof *w->T);
-  if (!w->bnd || !w->lo || !w->d || !w->x || !w->g || !w->T)
+  w->T = malloc(nk * sizeof *w->T), w->ik = malloc(nk * sizeof *w->ik);
+  w->pos = malloc(nk * sizeof *w->pos);
+  w->flo = malloc(nk * sizeof *w->flo), w->fhi = malloc(nk * sizeof *w->fhi);
+  if (!w->bnd || !w->lo || !w->d || !w->x || !w->g || !w->T || !w->ik
+      || !w->pos || !w->flo || !w->fhi)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (n = %d)",
                       w->n);
   for (int i = 0; i < w->n; i++) w->bnd[i] = -1;
-  for (int c = 0; c < w->nc; c++) w->bnd[w->qp->ic[c]] = c;
+  for (int k = 0; k < w->nk; k++) {
+    int i = w->ik[k] = k < w->nc ? w->qp->ic[k] : w->qp->it[k - w->nc];
+    if (w->bnd[i] >= 0)
+      return status_set(st, STATUS_INPUT, "qp_alloc: unknown %d is both "
+                        "bounded and slipping", i);
+    w->bnd[i] = k;
+  }
   return STATUS_OK;
 }
 
-#line 611 "paper/qp.nw"
+#line 651 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -146,7 +178,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 516 "paper/qp.nw"
+#line 544 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -154,7 +186,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   Qp_workspace *w = calloc(1, sizeof *w);
   if (!w) { status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory"); return NULL; }
   w->qp = qp, w->opt = *opt, w->cm = cm;
-  w->n = (int) qp->A->ncol, w->nc = qp->nc;
+  w->n = (int) qp->A->ncol, w->nc = qp->nc, w->nk = qp->nc + qp->nt;
   int code = alloc_common(w, st);
   if (!code) code = check_pattern(w, st);
   if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
@@ -163,7 +195,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 633 "paper/qp.nw"
+#line 673 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -171,10 +203,11 @@ void qp_free(Qp_workspace *w)
   mprgp_free(w);
   free(w->bnd), free(w->lo), free(w->d);
   free(w->x), free(w->g), free(w->T);
+  free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
   free(w);
 }
 
-#line 653 "paper/qp.nw"
+#line 714 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -199,23 +232,31 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 679 "paper/qp.nw"
-/* b and lo finite; lo expanded to all unknowns */
+#line 744 "paper/qp.nw"
+/* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
   for (int i = 0; i < w->n; i++)
     if (!isfinite(w->qp->b[i])) return status_set(st, STATUS_NUMERIC,
       "qp_set: b[%d] = %g is not finite", i, w->qp->b[i]);
   for (int i = 0; i < w->n; i++) {
-    int c = w->bnd[i];
+    int c = w->bnd[i] < w->nc ? w->bnd[i] : -1;
     w->lo[i] = c < 0 ? -INFINITY : w->qp->lo[c];
     if (c >= 0 && !isfinite(w->lo[i])) return status_set(st, STATUS_NUMERIC,
       "qp_set: lo[%d] = %g is not finite", c, w->lo[i]);
   }
+  for (int c = 0; c < w->nc; c++)
+    w->pos[c] = w->qp->lo[c], w->flo[c] = 0, w->fhi[c] = INFINITY;
+  for (int k = 0; k < w->qp->nt; k++) {
+    double s = w->qp->slip[k];
+    if (!(s >= 0 && isfinite(s))) return status_set(st, STATUS_NUMERIC,
+      "qp_set: slip[%d] = %g is not a finite bound >= 0", k, s);
+    w->pos[w->nc + k] = 0, w->flo[w->nc + k] = -s, w->fhi[w->nc + k] = s;
+  }
   return STATUS_OK;
 }
 
-#line 697 "paper/qp.nw"
+#line 770 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -224,7 +265,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 709 "paper/qp.nw"
+#line 782 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -239,14 +280,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 748 "paper/qp.nw"
+#line 821 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 730 "paper/qp.nw"
+#line 803 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -263,7 +304,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 795 "paper/qp.nw"
+#line 868 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -279,7 +320,7 @@ const char *qp_hint(const Qp_workspace *w)
     "if only the contact holds the body, the load lifts it off";
 }
 
-#line 814 "paper/qp.nw"
+#line 887 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -290,7 +331,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 786 "paper/qp.nw"
+#line 859 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -298,7 +339,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
 }
 
-#line 764 "paper/qp.nw"
+#line 837 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -308,7 +349,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     code = w->iter >= w->opt.max_iter ? not_converged(w, st)
                                       : qp_iterate(w, st);
   memcpy(x, w->x, (size_t) w->n * sizeof *x);
-  if (T) memcpy(T, w->T, (size_t) w->nc * sizeof *T);
+  if (T) memcpy(T, w->T, (size_t) w->nk * sizeof *T);
   if (rep) {
     rep->iterations = w->iter, rep->kkt = w->kkt;
     rep->active = qp_count_active(w), rep->converged = qp_test(w);
@@ -316,13 +357,15 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 834 "paper/qp.nw"
+#line 910 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;
+  Qp bounded = *w->qp;           /* the problem without its friction */
   int code = STATUS_OK;
-  if (w->opt.method != QP_PDAS || !w->pdas.condensed)
-    code = pdas_condense_apart(w, &c, st);
+  bounded.nt = 0, bounded.it = NULL, bounded.slip = NULL;
+  if (w->opt.method != QP_PDAS || !w->pdas.condensed || w->nk > w->nc)
+    code = pdas_condense_apart(w, &bounded, &c, st);
   if (!code) pdas_schur(c ? c : w, shift, S);
   qp_free(c);
   return code;

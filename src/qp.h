@@ -6,16 +6,20 @@
 
 #line 72 "paper/qp.nw"
 /* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
-   x[ic[c]] >= lo[c], c = 0..nc-1.  A is symmetric positive semidefinite,
-   and positive definite on the subspace x[ic] = 0. */
+   x[ic[c]] >= lo[c], c = 0..nc-1; with given friction, plus
+   sum_k s_k |x[it[k]]|.  A is symmetric positive semidefinite, and
+   positive definite on the subspace x[ic] = 0. */
 typedef struct {
   const cholmod_sparse *A; /* n x n, both triangles stored, sorted, packed */
   const double *b;         /* n: the load vector F + P */
   int nc;                  /* number of bounded unknowns, |I| */
   const int *ic;           /* nc: their indices, increasing */
   const double *lo;        /* nc: their lower bounds, -X_i */
+  int nt;                  /* number of slipping unknowns; 0: frictionless */
+  const int *it;           /* nt: their indices, increasing, none in ic */
+  const double *slip;      /* nt: their slip bounds s_k >= 0 (forces) */
 } Qp;
-#line 85 "paper/qp.nw"
+#line 89 "paper/qp.nw"
 typedef enum { QP_PDAS, QP_PSOR, QP_CGSSOR } Qp_method;
 
 typedef struct {
@@ -29,7 +33,7 @@ typedef struct {
 Qp_options qp_options_default(Qp_method method);
 /* "pdas", "psor", "cgssor", or "?" */
 const char *qp_method_name(Qp_method method);
-#line 101 "paper/qp.nw"
+#line 105 "paper/qp.nw"
 typedef struct {
   int iterations;          /* sweeps, CG steps or Newton steps used */
   double kkt;              /* qp_kkt at the returned x */
@@ -38,7 +42,7 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-#line 116 "paper/qp.nw"
+#line 120 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
@@ -47,18 +51,20 @@ int qp_iterate(Qp_workspace *w, Status *st);
 int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
 void qp_free(Qp_workspace *w);
-#line 127 "paper/qp.nw"
+#line 131 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
-   T[c] = (Ax - b)[ic[c]]; STATUS_NUMERIC when not converged. */
+   T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
+   STATUS_NUMERIC when not converged. */
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st);
 
-/* The relative KKT residual of x (scale-free); T (nc, may be NULL)
-   receives the contact forces. */
+/* The relative KKT residual of x (scale-free); T (nc + nt, may be NULL)
+   receives the contact forces, normal then tangential. */
 double qp_kkt(const Qp *qp, const double *x, double *T);
 
 /* S (nc x nc, row-major, in the order of ic): the Schur complement of A
-   onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc, with its diagonal
+   onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc (slipping unknowns
+   among the u, as if frictionless), with its diagonal
    raised by shift A_ii (the Schur complement of A with those diagonals
    raised), at the values the last qp_set read; from the Newton method's
    own S when it has one.  Needs GSL's error handler off

@@ -1,38 +1,39 @@
-#line 168 "paper/qp.nw"
+#line 176 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
    it, no other module does. */
 #include "qp.h"
 
-#line 223 "paper/qp.nw"
+#line 236 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
   cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, bounded
                             unknowns last */
   cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
-  int first;             /* n - nc: where the bounded unknowns start in L */
-  int *tc;               /* nc: the bounded unknown c at position first + t */
-  double *Lcc;           /* nc x nc, row-major: the trailing block of L */
-  double *S;             /* nc x nc, row-major: the Schur complement of A */
-  double *f;             /* nc: the condensed load */
-  double *y;             /* nc: the condensed iterate x[ic] */
-  double *M;             /* nc x nc: S on the free set, then its factor
+  int first;             /* n - nk: where the bounded unknowns start in L */
+  int *tc;               /* nk: the bounded unknown c at position first + t */
+  double *Lcc;           /* nk x nk, row-major: the trailing block of L */
+  double *S;             /* nk x nk, row-major: the Schur complement of A */
+  double *f;             /* nk: the condensed load */
+  double *y;             /* nk: the condensed iterate x[ik] */
+  double *M;             /* nk x nk: S on the free set, then its factor
                             (L_cc L_cc' while condensing) */
-  double *r;             /* nc: a right-hand side on the free set */
-  int *fr;               /* nc: the free set, listed */
+  double *r;             /* nk: a right-hand side on the free set */
+  int *fr;               /* nk: the free set, listed */
   double bu2;            /* ||b_u||^2, for the residual */
   cholmod_dense *rhs;    /* n x 1: the vector that two solves overwrite */
   cholmod_dense *sol;    /* n x 1: the vector between the two solves */
   cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
   cholmod_dense *Lb;     /* n x 1: z = L \ P b */
-  char *act;             /* nc: the active set of the next Newton step */
+  char *act;             /* nk: each one's state in the next Newton step */
   int condensed;         /* S, f belong to the current values of A and b */
   int warm;              /* the first active set is to be guessed from x0 */
+  int stepped;           /* y, T come from a Newton step (not a guess) */
 } Pdas_workspace;
 
-#line 252 "paper/qp.nw"
+#line 266 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -41,27 +42,32 @@ typedef struct {
   int restart;           /* 1: p must restart from z (the face changed) */
 } Mprgp_workspace;
 
-#line 198 "paper/qp.nw"
+#line 206 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
   cholmod_common *cm;    /* the caller's CHOLMOD environment */
   int n;                 /* the number of unknowns: A is n x n */
   int nc;                /* the number of bounded unknowns, |I| */
-  int *bnd;              /* n: c when unknown i = ic[c], -1 when unbounded */
+  int nk;                /* nc + nt: the unknowns the Newton method condenses */
+  int *ik;               /* nk: ic, then it */
+  double *pos;           /* nk: where each sits when held: lo, or 0 (stick) */
+  double *flo, *fhi;     /* nk: the interval of its force: [0, inf) on a
+                            bound, [-s, s] with friction */
+  int *bnd;              /* n: k when unknown i = ik[k], -1 otherwise */
   double *lo;            /* n: the lower bound of each unknown, -INFINITY if none */
   double *d;             /* n: the diagonal A_ii > 0 */
   double normA;          /* max row sum of |A|: an upper bound of ||A||_2 */
   double *x;             /* n: the iterate */
   double *g;             /* n: the gradient A x - b at x */
-  double *T;             /* nc: the contact forces g[ic[c]] (4.6) */
+  double *T;             /* nk: the contact forces g[ik[k]] (4.6) */
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   Pdas_workspace pdas;   /* method pdas only (pdas.c), zero otherwise */
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 402 "paper/qp.nw"
+#line 416 "paper/qp.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static inline double qp_ratio(double num, double den)
 {
@@ -79,7 +85,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 481 "paper/qp.nw"
+#line 509 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -92,7 +98,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 265 "paper/qp.nw"
+#line 279 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -109,14 +115,14 @@ const char *qp_hint(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 287 "paper/qp.nw"
+#line 301 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
 int pdas_iterate(Qp_workspace *w, Status *st);
 void pdas_free(Qp_workspace *w);
-int pdas_condense_apart(const Qp_workspace *w, Qp_workspace **c,
-                        Status *st);
+int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
+                        Qp_workspace **c, Status *st);
 void pdas_schur(const Qp_workspace *w, double shift, double *S);
 /* mprgp.c: MPRGP, CG-SSOR with projection */
 int mprgp_alloc(Qp_workspace *w, Status *st);
@@ -125,5 +131,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 187 "paper/qp.nw"
+#line 195 "paper/qp.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 250 "paper/scene.nw"
+#line 253 "paper/scene.nw"
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -9,7 +9,7 @@
 #include <ini.h>
 #include "design.h"
 #include "scene.h"
-#line 271 "paper/scene.nw"
+#line 274 "paper/scene.nw"
 static const char *const geometry_keys[] = {"a", "b", "gamma", NULL};
 static const char *const design_keys[] = {"N", "C0", "C1", "C2", "initial",
   "arc_x1", "arc_x2", "arc_radius", "line_start", "line_end", "constant",
@@ -18,7 +18,7 @@ static const char *const mesh_keys[] = {"M", "R", "C0prime", "refine", NULL};
 static const char *const material_keys[] = {"E", "nu", "model", NULL};
 static const char *const side_keys[] = {"bc", "from", "to", "P1", "P2", NULL};
 static const char *const body_force_keys[] = {"F1", "F2", NULL};
-static const char *const contact_keys[] = {"model", NULL};
+static const char *const contact_keys[] = {"model", "g", "friction", NULL};
 static const char *const solver_keys[] = {"state", "tol", "max_iter",
   "omega", NULL};
 static const char *const optimizer_keys[] = {"method", "metric", "tol",
@@ -29,7 +29,7 @@ static const char *const section_names[] = {"geometry", "design", "mesh",
 static const char *const *const section_keys[] = {geometry_keys,
   design_keys, mesh_keys, material_keys, side_keys, side_keys, side_keys,
   body_force_keys, contact_keys, solver_keys, optimizer_keys};
-#line 297 "paper/scene.nw"
+#line 300 "paper/scene.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
 static const char *const initial_names[] = {"arc", "line", "constant",
@@ -42,7 +42,7 @@ static const char *const file_keys[] = {"file", NULL};
 static const char *const *const initial_keys[] = {arc_keys, line_keys,
   constant_keys, file_keys};
 static const char *const traction_keys[] = {"from", "to", "P1", "P2", NULL};
-#line 312 "paper/scene.nw"
+#line 315 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -51,7 +51,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 324 "paper/scene.nw"
+#line 327 "paper/scene.nw"
 /* buf = the names, comma-separated (truncated to size) */
 static const char *name_list(const char *const *names, char *buf,
                              size_t size)
@@ -64,7 +64,7 @@ static const char *name_list(const char *const *names, char *buf,
                              i ? ", " : "", names[i]);
   return buf;
 }
-#line 347 "paper/scene.nw"
+#line 350 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 
 typedef struct {
@@ -73,7 +73,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 361 "paper/scene.nw"
+#line 364 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -87,13 +87,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 392 "paper/scene.nw"
+#line 395 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 402 "paper/scene.nw"
+#line 405 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -112,7 +112,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 424 "paper/scene.nw"
+#line 427 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -120,7 +120,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 435 "paper/scene.nw"
+#line 438 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -130,7 +130,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 448 "paper/scene.nw"
+#line 451 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -150,7 +150,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 477 "paper/scene.nw"
+#line 480 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the schema has the names */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -159,7 +159,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   int s = name_index(section_names, sec);
   origin(L, L->override, where, sizeof where);
   
-#line 499 "paper/scene.nw"
+#line 502 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -169,7 +169,7 @@ if (s < 0)
 if (name_index(section_keys[s], key) < 0)
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, name_list(section_keys[s], list, sizeof list));
-#line 485 "paper/scene.nw"
+#line 488 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -180,7 +180,7 @@ if (name_index(section_keys[s], key) < 0)
   e->override = L->override;
   return 0;
 }
-#line 512 "paper/scene.nw"
+#line 515 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -190,7 +190,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 526 "paper/scene.nw"
+#line 529 "paper/scene.nw"
 /* append e; the schema and the refusal of duplicates bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -201,7 +201,7 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 556 "paper/scene.nw"
+#line 559 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -215,7 +215,7 @@ static char *read_line(char *buf, int size, void *user)
   L->line++;
   L->indented = buf[0] == ' ' || buf[0] == '\t';
   
-#line 576 "paper/scene.nw"
+#line 579 "paper/scene.nw"
 if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)) {
   fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
        size - 2);
@@ -226,10 +226,10 @@ if (strlen(buf) < (size_t)n) {
        "not UTF-16)", L->path, L->line);
   return NULL;
 }
-#line 569 "paper/scene.nw"
+#line 572 "paper/scene.nw"
   return buf;
 }
-#line 593 "paper/scene.nw"
+#line 596 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -240,7 +240,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 610 "paper/scene.nw"
+#line 613 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -248,18 +248,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 603 "paper/scene.nw"
+#line 606 "paper/scene.nw"
   
-#line 621 "paper/scene.nw"
+#line 624 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 604 "paper/scene.nw"
+#line 607 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 633 "paper/scene.nw"
+#line 636 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -274,18 +274,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 654 "paper/scene.nw"
+#line 657 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 647 "paper/scene.nw"
+#line 650 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 674 "paper/scene.nw"
+#line 677 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -296,7 +296,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 690 "paper/scene.nw"
+#line 693 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -309,7 +309,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 714 "paper/scene.nw"
+#line 717 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -321,7 +321,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 702 "paper/scene.nw"
+#line 705 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   if ((old = find(L, e.sec, e.key))) {
@@ -330,7 +330,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 735 "paper/scene.nw"
+#line 738 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -342,7 +342,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 750 "paper/scene.nw"
+#line 753 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -356,7 +356,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 767 "paper/scene.nw"
+#line 770 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -367,7 +367,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 783 "paper/scene.nw"
+#line 786 "paper/scene.nw"
 #define REQUIRED NULL   /* no default: the key must be given */
 
 /* L->last = the entry of sec.key, or its default dflt; NULL if missing */
@@ -387,7 +387,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key,
   }
   return &L->last;
 }
-#line 806 "paper/scene.nw"
+#line 809 "paper/scene.nw"
 /* x = the number sec.key (default dflt) */
 static int real(Loader *L, const char *sec, const char *key,
                 const char *dflt, double *x)
@@ -398,7 +398,7 @@ static int real(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 819 "paper/scene.nw"
+#line 822 "paper/scene.nw"
 /* k = the integer sec.key (default dflt) */
 static int integer(Loader *L, const char *sec, const char *key,
                    const char *dflt, int *k)
@@ -409,7 +409,7 @@ static int integer(Loader *L, const char *sec, const char *key,
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 832 "paper/scene.nw"
+#line 835 "paper/scene.nw"
 /* k = the index of the word sec.key (default dflt) in names */
 static int word(Loader *L, const char *sec, const char *key,
                 const char *dflt, const char *const *names, int *k)
@@ -420,7 +420,7 @@ static int word(Loader *L, const char *sec, const char *key,
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 847 "paper/scene.nw"
+#line 850 "paper/scene.nw"
 /* refuse any of sec's keys: they mean nothing with what = value */
 static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
                        const char *what, const char *value)
@@ -431,7 +431,7 @@ static int refuse_keys(Loader *L, const char *sec, const char *const *keys,
       return bad(L, e, "has no effect with %s = %s", what, value);
   return 0;
 }
-#line 866 "paper/scene.nw"
+#line 869 "paper/scene.nw"
 /* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -447,7 +447,7 @@ static int read_geometry(Loader *L, Scene *s)
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 891 "paper/scene.nw"
+#line 894 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -462,7 +462,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 917 "paper/scene.nw"
+#line 920 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -475,7 +475,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", "1", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 951 "paper/scene.nw"
+#line 954 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -483,7 +483,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 929 "paper/scene.nw"
+#line 932 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", REQUIRED, &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -494,7 +494,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 982 "paper/scene.nw"
+#line 985 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -505,7 +505,7 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1002 "paper/scene.nw"
+#line 1005 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -518,7 +518,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1018 "paper/scene.nw"
+#line 1021 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -528,14 +528,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", REQUIRED, &sh->end);
 }
-#line 1030 "paper/scene.nw"
+#line 1033 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", REQUIRED, &sh->value);
 }
-#line 1042 "paper/scene.nw"
+#line 1045 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -547,7 +547,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1058 "paper/scene.nw"
+#line 1061 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -558,7 +558,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1074 "paper/scene.nw"
+#line 1077 "paper/scene.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -574,7 +574,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1096 "paper/scene.nw"
+#line 1099 "paper/scene.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -599,7 +599,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->problem.N + 1);
   return rc;
 }
-#line 1124 "paper/scene.nw"
+#line 1127 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -609,7 +609,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "path longer than %d characters", (int)sizeof path - 1);
   return read_shape(L, s, path);
 }
-#line 1137 "paper/scene.nw"
+#line 1140 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -622,7 +622,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->problem.C0prime);
   return 0;
 }
-#line 1155 "paper/scene.nw"
+#line 1158 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -633,19 +633,19 @@ static int read_initial(Loader *L, Scene *s)
     return rc;
   snprintf(s->initial, sizeof s->initial, "%s", initial_names[k]);
   
-#line 1175 "paper/scene.nw"
+#line 1178 "paper/scene.nw"
 for (j = 0; j < 4; j++)
   if (j != k && refuse_keys(L, "design", initial_keys[j], "initial",
                             initial_names[k]))
     return L->failed;
-#line 1165 "paper/scene.nw"
+#line 1168 "paper/scene.nw"
   if (!(s->alpha0 = malloc(((size_t)s->problem.N + 1) * sizeof *s->alpha0)))
     return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
                                   "for %d nodes", L->path, s->problem.N + 1);
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1190 "paper/scene.nw"
+#line 1193 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -662,7 +662,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1216 "paper/scene.nw"
+#line 1219 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -670,7 +670,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->problem.side[id];
   int rc;
   
-#line 1235 "paper/scene.nw"
+#line 1238 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -685,7 +685,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1223 "paper/scene.nw"
+#line 1226 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", "0", &d->P[0]))
       || (rc = real(L, sec, "P2", "0", &d->P[1])))
     return rc;
@@ -694,7 +694,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1253 "paper/scene.nw"
+#line 1256 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -706,7 +706,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return refuse_keys(L, sec, traction_keys, "bc", problem_bc_names[k]);
   return read_traction(L, s, id);
 }
-#line 1274 "paper/scene.nw"
+#line 1277 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -720,7 +720,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1290 "paper/scene.nw"
+#line 1293 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -729,7 +729,30 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1309 "paper/scene.nw"
+#line 1329 "paper/scene.nw"
+/* [contact] model, and g or friction as the law needs */
+static int read_contact(Loader *L, Scene *s)
+{
+  static const char *const g_key[] = {"g", NULL}, *const F_key[] = {"friction", NULL};
+  static const char *const *const law_keys[] = {NULL, g_key, F_key};
+  Problem *p = &s->problem;
+  double *value[] = {NULL, &p->slip_bound, &p->friction};
+  int k, rc;
+  if ((rc = word(L, "contact", "model", "frictionless", problem_contact_names, &k)))
+    return rc;
+  p->contact = (Contact_law)k;
+  for (int j = 1; j < 3; j++)
+    if (j != k && refuse_keys(L, "contact", law_keys[j], "model",
+                              problem_contact_names[k]))
+      return L->failed;
+  if (k == CONTACT_FRICTIONLESS) return 0;
+  if ((rc = real(L, "contact", law_keys[k][0], REQUIRED, value[k]))) return rc;
+  if (!(*value[k] >= 0))
+    return blame(L, "must be >= 0 (%s)", k == CONTACT_TRESCA ? "a slip bound "
+                 "in Pa" : "a friction coefficient");
+  return 0;
+}
+#line 1315 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -738,13 +761,9 @@ static int read_loads(Loader *L, Scene *s)
       || (rc = real(L, "body_force", "F2", "0", &s->problem.F[1])))
     return rc;
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
-  if (!entry(L, "contact", "model", "frictionless")) return L->failed;
-  if (strcmp(L->last.val, "frictionless") != 0)
-    return blame(L, "only frictionless contact is implemented (accepted: "
-                 "frictionless)");
-  return 0;
+  return read_contact(L, s);
 }
-#line 1333 "paper/scene.nw"
+#line 1361 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -757,6 +776,10 @@ static int read_solver(Loader *L, Scene *s)
   snprintf(max_iter, sizeof max_iter, "%d", d.max_iter);
   snprintf(omega, sizeof omega, "%.17g", d.omega);
   o->method = (Qp_method)k;
+  if (k != QP_PDAS && s->problem.contact != CONTACT_FRICTIONLESS)
+    return blame(L, "cannot take friction (contact.model = %s): a slip bound "
+                 "bounds a force, and %s bounds unknowns; use pdas",
+                 problem_contact_name(s->problem.contact), state_names[k]);
   if ((rc = real(L, "solver", "tol", tol, &o->tol))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative residual");
@@ -768,7 +791,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1366 "paper/scene.nw"
+#line 1398 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -800,7 +823,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1407 "paper/scene.nw"
+#line 1439 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -813,7 +836,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1424 "paper/scene.nw"
+#line 1456 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -833,7 +856,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1447 "paper/scene.nw"
+#line 1479 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

@@ -1,4 +1,4 @@
-#line 133 "paper/scene.nw"
+#line 135 "paper/scene.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include "status.h"

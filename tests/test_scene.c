@@ -398,9 +398,36 @@ static void test_condition_errors(void)
   expect_edit("unknown solver state", "\nP2 = -5.75e8\n",
               "\nP2 = -5.75e8\n[solver]\nstate = gauss\n", "solver.state",
               "accepted: pdas, psor, cgssor");
-  expect_edit("contact with friction", "\nP2 = -5.75e8\n",
-              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\n", "contact.model",
-              "only frictionless contact is implemented");
+  expect_edit("unknown contact law", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = sticky\n", "contact.model",
+              "accepted: frictionless, tresca, coulomb");
+  expect_edit("tresca without g", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\n", "contact.g",
+              "missing required key");
+  expect_edit("coulomb without friction", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\n", "contact.friction",
+              "missing required key");
+  expect_edit("g with coulomb", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 0.2\ng = 1e6\n",
+              "contact.g", "no effect with model = coulomb");
+  expect_edit("friction with tresca", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e6\nfriction = 0.2\n",
+              "contact.friction", "no effect with model = tresca");
+  expect_edit("g without friction", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\ng = 1e6\n", "contact.g",
+              "no effect with model = frictionless");
+  expect_edit("negative g", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = -1\n", "contact.g",
+              "must be >= 0");
+  expect_edit("negative friction coefficient", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = -0.1\n",
+              "contact.friction", "must be >= 0");
+  expect_edit("friction with cgssor", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e6\n"
+              "[solver]\nstate = cgssor\n", "solver.state", "cannot take friction");
+  expect_edit("friction with psor", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 0.3\n"
+              "[solver]\nstate = psor\n", "solver.state", "cannot take friction");
 }
 
 /* a scene path longer than Scene.path: the message names its start */

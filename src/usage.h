@@ -1,0 +1,7 @@
+#line 41 "paper/main.nw"
+#ifndef CONTACTOPT_USAGE_H
+#define CONTACTOPT_USAGE_H
+/* the help of the program and of each command, as printed */
+extern const char usage_main[], usage_solve[], usage_gradcheck[],
+  usage_optimize[];
+#endif
