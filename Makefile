@@ -11,6 +11,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # the state solver, which share src/qp_private.h), and the program.
 MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
+           src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(filter-out src/pdas.h src/mprgp.h src/psor.h,$(MODULES:%=src/%.h)) \
            src/qp_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
@@ -27,7 +28,8 @@ RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
         $(EXAMPLES:%=out/example-%-strain-optimize/summary.dat) \
         out/example-5.1-C2arc-optimize/summary.dat
 FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
-           figures/reproduction.tex figures/suite.tex
+           figures/reproduction.tex figures/suite.tex \
+           figures/fig-friction.pdf figures/fig-friction.png figures/friction.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -207,7 +209,7 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex
 # depends on it, and make -j2 runs them side by side.
 
 figures: $(FIGURES) $(ACCURACY_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 as PDF and PNG, the reproduction and suite tables, the accuracy figure and table)"
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction figure as PDF and PNG, the reproduction, suite and friction tables, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) > /dev/null
@@ -252,6 +254,13 @@ out/suite/%-slsqp/summary.dat: data/suite/%.scene bin/contactopt
 figures/suite.tex: src/suite-table.sh $(SUITE_RUNS)
 	@mkdir -p figures
 	sh $< out/suite > $@.partial && mv $@.partial $@
+# Given friction (paper/friction.nw): the friction scene for twelve slip
+# bounds and three Coulomb coefficients, their table and their figure.
+figures/friction.tex: src/friction.sh data/example-5.1-tresca.scene bin/contactopt
+	@mkdir -p figures
+	sh $< data/example-5.1-tresca.scene out/friction > $@.partial && mv $@.partial $@
+figures/fig-friction.pdf figures/fig-friction.png &: src/fig-friction.gp figures/friction.tex
+	gnuplot -e "runs='out/friction'; out='figures/fig-friction'" $<
 figures/reproduction.tex: src/reproduction.sh $(RUNS)
 	@mkdir -p figures
 	sh $< out > $@.partial && mv $@.partial $@

@@ -61,7 +61,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 280 "paper/model.nw"
+#line 281 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -92,8 +92,9 @@ static int model_coulomb(Model *md, Status *st)
   md->report.iterations += steps;
   if (!rc && md->fixed_point_residual > md->fixed_point_tol)
     rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
-      "converge in %d iterations: the normal forces still change by %.3g "
-      "relative > solver.tol = %.3g (friction = %g too large?)",
+      "converge in %d iterations (solver.max_iter): the normal forces still "
+      "change by %.3g relative > solver.tol = %.3g; successive approximations "
+      "converge only for a small enough friction (here %g)",
       md->fixed_point_iterations, md->fixed_point_residual,
       md->fixed_point_tol, md->problem->friction);
   return rc;
@@ -121,13 +122,13 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 302 "paper/model.nw"
+#line 303 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 310 "paper/model.nw"
+#line 311 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -142,7 +143,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 326 "paper/model.nw"
+#line 327 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -153,7 +154,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 363 "paper/model.nw"
+#line 364 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -166,13 +167,13 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 382 "paper/model.nw"
+#line 383 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 375 "paper/model.nw"
+#line 376 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

@@ -154,6 +154,31 @@ if solve $n-tol9 $ex -s material.model=plane_strain -s material.nu=0.4999 $refin
   WTOL=1e-8; energy_is_work $n-tol9 1 2 4 0 -5.75e8; WTOL=
 fi
 
+# ---- nu -> 1/2 with given friction (the section "Given friction") ----------
+# g = 2.5e8 Pa, where nodes stick and slip: pdas converges below 1e-10 on
+# the article's mesh and four times finer, friction raises the energy
+# (E >= E at g = 0), and the Newton method optimises in plane strain.
+tr=data/example-5.1-tresca.scene
+for model in plane_strain plane_stress; do
+  for r in 1 4; do
+    n=nu0.4999-$model-tresca-N$((16 * r)); nu="-s material.model=$model -s material.nu=0.4999 -s mesh.refine=$r"
+    solve $n $tr $nu -s contact.g=2.5e8 && solve $n-g0 $tr $nu -s contact.g=0 || continue
+    state_ok $n 1e-10
+    check "$n: friction raises the energy: E $(value energy $TMP/$n) >= $(value energy $TMP/$n-g0) at g = 0" \
+      holds 'e >= f - 1e-12 * abs(f)' e="$(value energy $TMP/$n)" f="$(value energy $TMP/$n-g0)"
+    check "$n: nodes stick and nodes slip" holds 'stick > 0 && slip > 0' \
+      stick=$(awk 'NR > 1 && $7 == 0 && $8 != 0' $TMP/$n/contact.dat | wc -l) \
+      slip=$(awk 'NR > 1 && $7 != 0' $TMP/$n/contact.dat | wc -l)
+  done
+done
+n=nu0.4999-plane_strain-tresca-optimize
+if optimize $n $tr -s material.model=plane_strain -s material.nu=0.4999 -s contact.g=2.5e8; then
+  check "$n: the Newton method converges ($(value iterations $TMP/$n) iterations)" \
+    test "$(value stop_reason $TMP/$n)" = converged
+  kkt_point $n $TMP/$n 0.05 0.00625 0.25
+  check "$n: no NaN or Inf in any output file" finite $TMP/$n
+fi
+
 # ---- units: E and the loads times 1e-9, 1e9, 2^-30, 2^30 ---------------------
 # The state is invariant, the energy and the contact forces scale with the
 # factor, and every solver takes the same steps (its stopping test is

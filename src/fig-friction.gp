@@ -1,0 +1,59 @@
+# fig-friction.gp: the figure of the section "Given friction".
+# Tangled from paper/friction.nw; do not edit.
+# usage: gnuplot -e "runs='out/friction'; out='figures/fig-friction'" src/fig-friction.gp
+# reads  runs/energy.dat, runs/g<g>/final/{shape,contact}.dat (src/friction.sh)
+# writes out.pdf and out.png
+if (!exists("runs") || !exists("out")) {
+  exit error "the variables runs and out are required"
+}
+left = 2.6; panelw = 7.2; gap = 2.9; top = 1.9; panelh = 6.6   # cm
+Wcm = left + 3*panelw + 2*gap + 2.6
+Hcm = top + panelh + 3.6
+dpcm = 1600.0 / Wcm; fontpt = 12
+sx(cm) = cm / Wcm
+sy(cm) = 1.0 - cm / Hcm
+place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set tmargin at screen %g; set bmargin at screen %g", \
+                   sx(left + c*(panelw + gap)), sx(left + c*(panelw + gap) + panelw), sy(top), sy(top + panelh))
+do for [fmt in "pdf png"] {
+  set encoding utf8; set minussign
+  dpi = dpcm * 2.54
+  kfont = fmt eq "pdf" ? 1.5 : dpi/96.0     # nominal font size per point
+  klw = fmt eq "pdf" ? 1.0 : 0.5*dpi/72.0   # nominal line width per half point
+  fsz = kfont * fontpt
+  if (fmt eq "pdf") {
+    set terminal pdfcairo enhanced color size Wcm/2.54, Hcm/2.54 \
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw
+  } else {
+    set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
+        font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw background "white"
+  }
+  set output out.".".fmt
+  unset xlabel; unset ylabel; unset title   # left over from the other format
+  set multiplot title "Example 5.1 with given friction (Tresca)"
+  eval place(0)
+  unset y2tics; unset y2label; set ytics mirror   # left over from panel (c)
+  set xlabel "{/:Italic x}_1 [m]"; set ylabel "α* [mm]"
+  set title "(a) optimal contact surface"
+  keyfont = sprintf(",%g", 0.85*fsz)
+  set key inside bottom right Left reverse samplen 2 font keyfont
+  plot for [g in "0 1e8 5e8 1e9"] runs."/g".g."/final/shape.dat" \
+         using 1:($2*1000) with linespoints pt 7 ps 0.5 lw 1.5 title "g = ".g." Pa"
+  eval place(1)
+  set key inside top left
+  set xlabel "g [10^8 Pa]"; set ylabel "E* [10^7 J/m]"
+  set title "(b) optimal energy"
+  plot runs."/energy.dat" using ($1/1e8):($2/1e7) with linespoints pt 7 ps 0.7 lw 1.5 notitle
+  eval place(2)
+  set xlabel "{/:Italic x}_1 [m]"; set ylabel "force [10^7 N/m]"
+  set y2label "slip {/:Italic u}_1 [mm]"; set y2tics; set ytics nomirror
+  set title "(c) g = 5·10^8 Pa at the optimum"
+  set key at screen sx(left + 2*(panelw + gap)), sy(top + panelh + 1.6) left top \
+      horizontal maxcols 2 Left reverse samplen 2 font keyfont
+  c = runs."/g5e8/final/contact.dat"
+  plot c using 1:($5/1e7) with linespoints pt 7 ps 0.5 lw 1.5 title "normal {/:Italic T}", \
+       c using 1:($8/1e7) with linespoints pt 5 ps 0.5 lw 1.5 title "tangential {/:Italic T}_t", \
+       c using 1:($7 == 0 && $8 != 0 ? $8/1e7 : NaN) with points pt 6 ps 1.6 lc "gray30" title "sticking", \
+       c using 1:($7*1000) axes x1y2 with linespoints pt 9 ps 0.5 lw 1.5 dt 2 title "slip {/:Italic u}_1"
+  unset multiplot
+  set output
+}
