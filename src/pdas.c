@@ -1,4 +1,4 @@
-#line 178 "paper/pdas.nw"
+#line 179 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,14 +7,14 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 304 "paper/pdas.nw"
+#line 305 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 312 "paper/pdas.nw"
+#line 313 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
-#line 512 "paper/pdas.nw"
+#line 513 "paper/pdas.nw"
 #define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
 
-#line 707 "paper/pdas.nw"
+#line 708 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -28,7 +28,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 247 "paper/pdas.nw"
+#line 248 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -45,7 +45,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   cm->postorder = postorder;
   free(last), free(perm);
   
-#line 267 "paper/pdas.nw"
+#line 268 "paper/pdas.nw"
 pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 if (!ok || !pd->rhs || !pd->Lb)
@@ -57,10 +57,10 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 263 "paper/pdas.nw"
+#line 264 "paper/pdas.nw"
 }
 
-#line 218 "paper/pdas.nw"
+#line 219 "paper/pdas.nw"
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -84,7 +84,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 281 "paper/pdas.nw"
+#line 282 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -96,7 +96,7 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 193 "paper/pdas.nw"
+#line 194 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -113,7 +113,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 401 "paper/pdas.nw"
+#line 402 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -127,7 +127,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 421 "paper/pdas.nw"
+#line 422 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -138,7 +138,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 441 "paper/pdas.nw"
+#line 442 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -147,7 +147,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 431 "paper/pdas.nw"
+#line 432 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -156,7 +156,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 454 "paper/pdas.nw"
+#line 455 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -173,7 +173,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 474 "paper/pdas.nw"
+#line 475 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -194,7 +194,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 377 "paper/pdas.nw"
+#line 378 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -217,7 +217,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 516 "paper/pdas.nw"
+#line 517 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -225,7 +225,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 544 "paper/pdas.nw"
+#line 545 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -237,7 +237,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 523 "paper/pdas.nw"
+#line 524 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -253,7 +253,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 562 "paper/pdas.nw"
+#line 563 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -265,13 +265,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 576 "paper/pdas.nw"
+#line 577 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 590 "paper/pdas.nw"
+#line 591 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -288,7 +288,7 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 581 "paper/pdas.nw"
+#line 582 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double k = fmax(qp_ratio(sqrt(tn), sf),
                   fmax(qp_ratio(sqrt(inf), su),
@@ -296,7 +296,7 @@ for (int c = 0; c < w->nk; c++) {
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
 
-#line 615 "paper/pdas.nw"
+#line 616 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -326,7 +326,7 @@ static int predict_active_set(Qp_workspace *w)
   return same;
 }
 
-#line 664 "paper/pdas.nw"
+#line 665 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -345,7 +345,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 689 "paper/pdas.nw"
+#line 690 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -361,14 +361,14 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 316 "paper/pdas.nw"
+#line 317 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 336 "paper/pdas.nw"
+#line 337 "paper/pdas.nw"
 if ((code = condense(w, st)) == SINGULAR)
   return qp_not_held(w, st, "A is singular even with every bound held", w->nc);
 if (code) return code;
@@ -379,7 +379,7 @@ if (pd->warm) {
   predict_active_set(w);
   pd->stepped = 1;
 }
-#line 322 "paper/pdas.nw"
+#line 323 "paper/pdas.nw"
   }
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
@@ -390,7 +390,7 @@ if (pd->warm) {
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 357 "paper/pdas.nw"
+#line 358 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -399,10 +399,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
   "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
-#line 332 "paper/pdas.nw"
+#line 333 "paper/pdas.nw"
 }
 
-#line 728 "paper/pdas.nw"
+#line 729 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -419,11 +419,50 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 747 "paper/pdas.nw"
+#line 748 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
   int nc = w->nk;
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
+}
+#line 767 "paper/pdas.nw"
+int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
+                        Status *st)
+{
+  const Pdas_workspace *pd = &w->pdas;
+  int nc = w->nc, nk = w->nk, m = 0, code = STATUS_OK;
+  int *fr = malloc((size_t) (nk - nc + 1) * sizeof *fr);
+  double *SFF = malloc((size_t) (nk - nc) * (nk - nc) * sizeof *SFF + 1);
+  double *SFn = malloc((size_t) (nk - nc) * nc * sizeof *SFn + 1);
+  if (!fr || !SFF || !SFn) code = status_set(st, STATUS_SYSTEM, "qp_schur: out of memory");
+  for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
+  
+#line 785 "paper/pdas.nw"
+for (int a = 0; !code && a < m; a++) {
+  for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
+  for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
+}
+if (!code && m > 0) {
+  gsl_matrix_view F = gsl_matrix_view_array(SFF, m, m), B = gsl_matrix_view_array(SFn, m, nc);
+  if (gsl_linalg_cholesky_decomp1(&F.matrix))
+    code = status_set(st, STATUS_NUMERIC, "qp_schur: the sliding nodes' "
+                      "stiffness is singular: nothing holds them");
+  else {
+    gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, &F.matrix, &B.matrix);
+    for (int c = 0; c < nc; c++)
+      for (int e = 0; e < nc; e++) {
+        double v = pd->S[(size_t) c * nk + e];
+        for (int a = 0; a < m; a++) v -= SFn[(size_t) a * nc + c] * SFn[(size_t) a * nc + e];
+        S[(size_t) c * nc + e] = v;
+      }
+  }
+} else if (!code)
+  for (int c = 0; c < nc; c++)
+    memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
+for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
+#line 778 "paper/pdas.nw"
+  free(fr), free(SFF), free(SFn);
+  return code;
 }

@@ -67,7 +67,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 416 "paper/qp.nw"
+#line 418 "paper/qp.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static inline double qp_ratio(double num, double den)
 {
@@ -85,7 +85,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 509 "paper/qp.nw"
+#line 511 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -124,6 +124,8 @@ void pdas_free(Qp_workspace *w);
 int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
                         Qp_workspace **c, Status *st);
 void pdas_schur(const Qp_workspace *w, double shift, double *S);
+int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
+                        Status *st);
 /* mprgp.c: MPRGP, CG-SSOR with projection */
 int mprgp_alloc(Qp_workspace *w, Status *st);
 void mprgp_set(Qp_workspace *w);
