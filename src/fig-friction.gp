@@ -12,8 +12,10 @@ Hcm = top + panelh + 3.6
 dpcm = 1600.0 / Wcm; fontpt = 12
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
-place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set tmargin at screen %g; set bmargin at screen %g", \
-                   sx(left + c*(panelw + gap)), sx(left + c*(panelw + gap) + panelw), sy(top), sy(top + panelh))
+x0(c) = left + c*(panelw + gap)           # the left edge of panel c, cm
+place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; " \
+                   ."set tmargin at screen %g; set bmargin at screen %g", \
+                   sx(x0(c)), sx(x0(c) + panelw), sy(top), sy(top + panelh))
 do for [fmt in "pdf png"] {
   set encoding utf8; set minussign
   dpi = dpcm * 2.54
@@ -47,13 +49,15 @@ do for [fmt in "pdf png"] {
   set xlabel "{/:Italic x}_1 [m]"; set ylabel "force [10^7 N/m]"
   set y2label "slip {/:Italic u}_1 [mm]"; set y2tics; set ytics nomirror
   set title "(c) g = 5·10^8 Pa at the optimum"
-  set key at screen sx(left + 2*(panelw + gap)), sy(top + panelh + 1.6) left top \
+  set key at screen sx(x0(2)), sy(top + panelh + 1.6) left top \
       horizontal maxcols 2 Left reverse samplen 2 font keyfont
   c = runs."/g5e8/final/contact.dat"
   plot c using 1:($5/1e7) with linespoints pt 7 ps 0.5 lw 1.5 title "normal {/:Italic T}", \
        c using 1:($8/1e7) with linespoints pt 5 ps 0.5 lw 1.5 title "tangential {/:Italic T}_t", \
-       c using 1:($7 == 0 && $8 != 0 ? $8/1e7 : NaN) with points pt 6 ps 1.6 lc "gray30" title "sticking", \
-       c using 1:($7*1000) axes x1y2 with linespoints pt 9 ps 0.5 lw 1.5 dt 2 title "slip {/:Italic u}_1"
+       c using 1:($7 == 0 && $8 != 0 ? $8/1e7 : NaN) \
+         with points pt 6 ps 1.6 lc "gray30" title "sticking", \
+       c using 1:($7*1000) axes x1y2 \
+         with linespoints pt 9 ps 0.5 lw 1.5 dt 2 title "slip {/:Italic u}_1"
   unset multiplot
   set output
 }

@@ -18,7 +18,8 @@ for g in 0 2e7 5e7 1e8 2e8 3e8 4e8 5e8 6e8 7e8 8e8 1e9; do
   echo "$g $(v energy $d) $(v friction_energy $d) $(v iterations $d)" \
        "$(v evaluations $d) $(zones $d/final)" >> "$out/energy.dat"
 done
-echo "# F E[J/m] friction_energy[J/m] fixed_point_iterations residual stick slip" > "$out/coulomb.dat"
+echo "# F E[J/m] friction_energy[J/m] fixed_point_iterations residual" \
+     "stick slip" > "$out/coulomb.dat"
 for F in 0.1 0.2 0.3; do
   d=$out/coulomb-F$F
   "$bin" solve "$scene" -s contact.model=coulomb -s contact.g= \
@@ -28,10 +29,15 @@ for F in 0.1 0.2 0.3; do
 done
 awk 'function sci(x,  e) { if (x == 0) return "0"; e = int(log(x) / log(10) + 1e-9)
                           return sprintf("%g\\cdot10^{%d}", x / 10^e, e) }
-  BEGIN { print "\\begin{tabular}{@{}rrrrrr@{}}\\toprule" }
+  BEGIN { print "\\begin{tabular}{@{}rrrrrr@{}}\\toprule"; w = "friction work [MJ/m]"
+          nl = "\\\\"; row = "$%s$ & $%.9g$ & $%.4f$ & " }
   FNR == 1 && FILENAME ~ /energy/ {
-    print "$g$ [Pa] & $E^*$ [J/m] & friction work [MJ/m] & iterations/solves & stick & slip\\\\\\midrule"; next }
-  FNR == 1 { print "\\midrule $\\mathcal F$ & $E$ [J/m] & friction work [MJ/m] & fixed-point its & residual & stick/slip\\\\\\midrule"; next }
-  FILENAME ~ /energy/ { printf "$%s$ & $%.9g$ & $%.4f$ & %d/%d & %d & %d\\\\\n", sci($1), $2, $3 / 1e6, $4, $5, $6, $7; next }
-  { printf "$%s$ & $%.9g$ & $%.4f$ & %d & $%.1e$ & %d/%d\\\\\n", $1, $2, $3 / 1e6, $4, $5, $6, $7 }
+    print "$g$ [Pa] & $E^*$ [J/m] & " w " & iterations/solves & stick & slip" nl "\\midrule"
+    next }
+  FNR == 1 {
+    print "\\midrule $\\mathcal F$ & $E$ [J/m] & " w " & fixed-point its & residual" \
+          " & stick/slip" nl "\\midrule"; next }
+  FILENAME ~ /energy/ {
+    printf row "%d/%d & %d & %d" nl "\n", sci($1), $2, $3 / 1e6, $4, $5, $6, $7; next }
+  { printf row "%d & $%.1e$ & %d/%d" nl "\n", $1, $2, $3 / 1e6, $4, $5, $6, $7 }
   END { print "\\bottomrule\\end{tabular}" }' "$out/energy.dat" "$out/coulomb.dat"

@@ -1,4 +1,4 @@
-#line 173 "paper/output.nw"
+#line 171 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 214 "paper/output.nw"
+#line 212 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -31,7 +31,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 241 "paper/output.nw"
+#line 239 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -41,7 +41,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 254 "paper/output.nw"
+#line 252 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -70,7 +70,7 @@ int output_close(Output *o, FILE *f, Status *st)
                       o->file[o->nfiles - 1]);
   return STATUS_OK;
 }
-#line 287 "paper/output.nw"
+#line 285 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
@@ -106,19 +106,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 326 "paper/output.nw"
+#line 324 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 339 "paper/output.nw"
+#line 337 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 348 "paper/output.nw"
+#line 346 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -126,7 +126,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 358 "paper/output.nw"
+#line 356 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -137,7 +137,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 371 "paper/output.nw"
+#line 369 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -153,19 +153,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 395 "paper/output.nw"
+#line 393 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 386 "paper/output.nw"
+#line 384 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 404 "paper/output.nw"
+#line 402 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -179,7 +179,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 420 "paper/output.nw"
+#line 418 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -197,7 +197,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 479 "paper/output.nw"
+#line 477 "paper/output.nw"
 static void output_vtu_friction(FILE *f, const Model *md)
 {
   const Dofs *d = md->dofs;
@@ -210,7 +210,7 @@ static void output_vtu_friction(FILE *f, const Model *md)
   }
   fprintf(f, "</DataArray>\n");
 }
-#line 441 "paper/output.nw"
+#line 439 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
 {
   const Mesh *m = md->mesh;
@@ -228,7 +228,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
   for (int t = 0; t < m->ntri; t++)
     fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
   
-#line 463 "paper/output.nw"
+#line 461 "paper/output.nw"
 fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
 for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
 fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
@@ -241,10 +241,10 @@ for (int k = 0; k < m->nnodes; k++)
 fprintf(f, "</DataArray>\n");
 if (md->dofs->nt) output_vtu_friction(f, md);
 fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 458 "paper/output.nw"
+#line 456 "paper/output.nw"
   return output_close(o, f, st);
 }
-#line 494 "paper/output.nw"
+#line 492 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -257,7 +257,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 538 "paper/output.nw"
+#line 536 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -270,7 +270,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 514 "paper/output.nw"
+#line 512 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -290,7 +290,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 554 "paper/output.nw"
+#line 552 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -305,7 +305,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 577 "paper/output.nw"
+#line 575 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -332,7 +332,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 703 "paper/output.nw"
+#line 701 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -343,7 +343,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 611 "paper/output.nw"
+#line 609 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -379,7 +379,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 650 "paper/output.nw"
+#line 648 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -400,7 +400,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 681 "paper/output.nw"
+#line 679 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -419,7 +419,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 719 "paper/output.nw"
+#line 717 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
