@@ -1,4 +1,6 @@
 #line 16 "paper/main.nw"
+#include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,7 +10,7 @@
 #include "scene.h"
 #include "output.h"
 #include "usage.h"
-#line 108 "paper/main.nw"
+#line 112 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -38,7 +40,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 149 "paper/main.nw"
+#line 153 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -46,6 +48,7 @@ typedef struct {
   Output_run run;           /* the scene's facts for the summaries */
   char dir[1024];           /* the output folder */
 } Run;
+static int command_optimize(Run *r, Status *st);
 
 static int run_command(const Args *a, const char *suffix,
                        int (*command)(Run *r, Status *st),
@@ -59,13 +62,16 @@ static int run_command(const Args *a, const char *suffix,
                          opt_metric_name(r.s.optimizer.metric) };
   if (a->outdir) snprintf(r.dir, sizeof r.dir, "%s", a->outdir);
   else output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
-  r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
-  rc = r.md ? command(&r, st) : (int) st->code;
+  double extra = command == command_optimize ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
+  if (!(rc = model_fits(&r.s.problem, extra, r.s.path, st))) {
+    r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
+    rc = r.md ? command(&r, st) : (int) st->code;
+  }
   model_free(r.md);
   scene_free(&r.s);
   return rc;
 }
-#line 183 "paper/main.nw"
+#line 200 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -82,7 +88,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 204 "paper/main.nw"
+#line 221 "paper/main.nw"
 static int refuse_coulomb(const Run *r, const char *command, Status *st)
 {
   if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
@@ -90,30 +96,62 @@ static int refuse_coulomb(const Run *r, const char *command, Status *st)
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
-#line 221 "paper/main.nw"
+#line 233 "paper/main.nw"
+static void gradcheck_progress(int i, const Grad_check *gc, void *data)
+{
+  double *last = data, now = model_clock(), worst = 0;
+  if (now - *last < 1 && i < gc->N) return;
+  *last = now;
+  for (int k = 0; k <= i; k++) worst = fmax(worst, gc->err[k]);
+  printf("gradcheck: node %d of %d, largest relative error so far %.3e\n",
+         i + 1, gc->N + 1, worst);
+  fflush(stdout);
+}
+#line 253 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
   if (refuse_coulomb(r, "gradcheck", st)) return st->code;
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
-  int rc = gc ? grad_check(r->md, r->s.alpha0, gc, NULL, NULL, st) : (int) st->code;
-  if (!rc && !(rc = output_begin(&o, r->dir, st))
-      && !(rc = output_end(&o, output_gradcheck(&o, &r->run, r->md, gc, st), st)))
+  double last = model_clock();
+  int rc = gc ? grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &last, st)
+              : (int) st->code;
+  if (!rc && !(rc = output_begin(&o, r->dir, st))) {
+    rc = output_gradcheck(&o, &r->run, r->md, gc, st);
+    if (!rc && r->a->matrix_market)
+      rc = output_matrix_market(r->a->matrix_market, r->md, st);
+    rc = output_end(&o, rc, st);
+  }
+  if (!rc)
     printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
            r->s.path, gc->err[gc->worst], gc->worst, r->dir);
   grad_check_free(gc);
   return rc;
 }
-#line 245 "paper/main.nw"
-static void monitor(const Opt_progress *p, const double *X, void *data)
+#line 284 "paper/main.nw"
+static volatile sig_atomic_t interrupted;  /* the signal received, or 0 */
+static void note_signal(int sig) { interrupted = sig; }
+static void catch_signals(int on)
+{
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on ? note_signal : SIG_DFL;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+}
+#line 307 "paper/main.nw"
+static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
          p->iteration, p->energy, p->pgnorm, p->active, p->state_iterations,
          p->seconds);
   fflush(stdout);
   output_history_add(data, p, X);
+  return interrupted != 0;
 }
-#line 260 "paper/main.nw"
+#line 323 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -126,7 +164,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 279 "paper/main.nw"
+#line 342 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -141,6 +179,7 @@ static int command_optimize(Run *r, Status *st)
   else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
+    catch_signals(1);
     if (!(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
@@ -150,6 +189,9 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
+    if (!rc && r->a->matrix_market)
+      rc = output_matrix_market(r->a->matrix_market, r->md, st);
+    catch_signals(0);
     rc = output_end(&o, rc, st);
   }
   if (!rc)
@@ -157,7 +199,11 @@ static int command_optimize(Run *r, Status *st)
            "projected gradient %.2e (%s) -> %s/\n", r->s.path, start.energy,
            rep.energy, rep.iterations, rep.evaluations, rep.pgnorm,
            rep.stop_reason, r->dir);
-  if (!rc && strcmp(rep.stop_reason, "converged"))
+  if (!rc && !strcmp(rep.stop_reason, "interrupted"))
+    rc = status_set(st, STATUS_INTERRUPTED, "%s: interrupted by signal %d at "
+                    "iteration %d: the files of the best design so far are in %s/",
+                    r->s.path, (int) interrupted, rep.iterations, r->dir);
+  else if (!rc && strcmp(rep.stop_reason, "converged"))
     rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected gradient "
                     "%.2e > optimizer.tol = %.0e after %d iterations; the files of the last "
                     "design accepted are in %s/", r->s.path, rep.stop_reason, rep.pgnorm,
@@ -167,7 +213,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 327 "paper/main.nw"
+#line 398 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

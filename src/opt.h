@@ -19,7 +19,7 @@ typedef struct {
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 161 "paper/opt.nw"
+#line 165 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -30,22 +30,24 @@ typedef struct {
   double seconds;         /* since the start of the optimisation */
 } Opt_progress;
 
-typedef void (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
+/* called at each accepted iterate; nonzero stops the run there */
+typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 175 "paper/opt.nw"
+#line 180 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
   double energy;          /* E at the final design */
   double pgnorm;          /* pi at the final design */
-  char stop_reason[32];   /* "converged", "max_iter", "no_progress" */
+  char stop_reason[32];   /* "converged", "max_iter", "no_progress",
+                             "interrupted" */
   double seconds;         /* wall time of the whole optimisation */
   double metric_seconds;  /* of it, setting up SLSQP's metric */
   double model_seconds;   /* of it, building and solving Newton's models */
   double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
-#line 189 "paper/opt.nw"
+#line 195 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -54,6 +56,8 @@ const char *opt_metric_name(Opt_metric m);   /* or "?" */
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st);
+/* bytes the optimiser o needs beyond its model, for N + 1 design nodes */
+double opt_memory(const Opt_options *o, int N);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);

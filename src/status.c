@@ -1,4 +1,4 @@
-#line 43 "paper/status.nw"
+#line 51 "paper/status.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include "status.h"

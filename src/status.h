@@ -1,4 +1,4 @@
-#line 10 "paper/status.nw"
+#line 15 "paper/status.nw"
 #ifndef CONTACTOPT_STATUS_H
 #define CONTACTOPT_STATUS_H
 #include <stddef.h>
@@ -7,7 +7,10 @@ typedef enum {
   STATUS_OK = 0,
   STATUS_INPUT = 2,   /* bad scene, bad command line: exit status 2 */
   STATUS_NUMERIC = 3, /* a solver did not converge, a NaN appeared */
-  STATUS_SYSTEM = 4   /* out of memory, a file that cannot be written */
+  STATUS_SYSTEM = 4,  /* a file that cannot be written, a library failure */
+  STATUS_MEMORY = 5,  /* too large for this machine's memory, or out of it */
+  STATUS_INTERRUPTED = 130 /* SIGINT or SIGTERM: stopped at a safe point,
+                              the files of the best design so far written */
 } Status_code;
 
 typedef struct {
@@ -15,11 +18,11 @@ typedef struct {
   char msg[1024];     /* one line, no trailing newline */
 } Status;
 
-#line 33 "paper/status.nw"
+#line 41 "paper/status.nw"
 int status_set(Status *st, Status_code code, const char *fmt, ...)
 #if defined(__GNUC__)
   __attribute__((format(printf, 3, 4)))
 #endif
   ;
-#line 27 "paper/status.nw"
+#line 35 "paper/status.nw"
 #endif

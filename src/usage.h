@@ -1,4 +1,4 @@
-#line 41 "paper/main.nw"
+#line 45 "paper/main.nw"
 #ifndef CONTACTOPT_USAGE_H
 #define CONTACTOPT_USAGE_H
 /* the help of the program and of each command, as printed */
