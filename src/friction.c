@@ -1,15 +1,15 @@
-#line 169 "paper/friction.nw"
+#line 173 "paper/friction.nw"
 #include <math.h>
 #include "friction.h"
 
-#line 179 "paper/friction.nw"
+#line 183 "paper/friction.nw"
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
-#line 190 "paper/friction.nw"
+#line 194 "paper/friction.nw"
 void friction_coulomb_bounds(const Problem *p, const Dofs *d,
                              const double *T, double *slip)
 {
@@ -20,14 +20,14 @@ void friction_coulomb_bounds(const Problem *p, const Dofs *d,
     slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
   }
 }
-#line 203 "paper/friction.nw"
+#line 207 "paper/friction.nw"
 double friction_work(const Dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
-#line 215 "paper/friction.nw"
+#line 219 "paper/friction.nw"
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G)
 {

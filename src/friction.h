@@ -1,11 +1,11 @@
-#line 137 "paper/friction.nw"
+#line 141 "paper/friction.nw"
 #ifndef CONTACTOPT_FRICTION_H
 #define CONTACTOPT_FRICTION_H
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-#line 150 "paper/friction.nw"
+#line 154 "paper/friction.nw"
 /* given friction: slip[k] = g omega_i, omega_i the tributary length of
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
@@ -20,5 +20,5 @@ double friction_work(const Dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 144 "paper/friction.nw"
+#line 148 "paper/friction.nw"
 #endif
