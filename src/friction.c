@@ -1,15 +1,15 @@
-#line 168 "paper/friction.nw"
+#line 172 "paper/friction.nw"
 #include <math.h>
 #include "friction.h"
 
-#line 178 "paper/friction.nw"
+#line 182 "paper/friction.nw"
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
-#line 189 "paper/friction.nw"
+#line 193 "paper/friction.nw"
 void friction_coulomb_bounds(const Problem *p, const Dofs *d,
                              const double *T, double *slip)
 {
@@ -20,14 +20,14 @@ void friction_coulomb_bounds(const Problem *p, const Dofs *d,
     slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
   }
 }
-#line 202 "paper/friction.nw"
+#line 206 "paper/friction.nw"
 double friction_work(const Dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
-#line 214 "paper/friction.nw"
+#line 218 "paper/friction.nw"
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G)
 {

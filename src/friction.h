@@ -1,11 +1,11 @@
-#line 136 "paper/friction.nw"
+#line 140 "paper/friction.nw"
 #ifndef CONTACTOPT_FRICTION_H
 #define CONTACTOPT_FRICTION_H
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-#line 149 "paper/friction.nw"
+#line 153 "paper/friction.nw"
 /* given friction: slip[k] = g omega_i, omega_i the tributary length of
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
@@ -20,5 +20,5 @@ double friction_work(const Dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 143 "paper/friction.nw"
+#line 147 "paper/friction.nw"
 #endif

@@ -1,17 +1,19 @@
-#line 98 "paper/mprgp.nw"
+#line 124 "paper/mprgp.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 106 "paper/mprgp.nw"
+#line 134 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 326 "paper/mprgp.nw"
+#line 355 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
 
-#line 112 "paper/mprgp.nw"
+#line 140 "paper/mprgp.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
@@ -19,7 +21,7 @@ static double dot(int n, const double *u, const double *v)
   return s;
 }
 
-#line 123 "paper/mprgp.nw"
+#line 151 "paper/mprgp.nw"
 int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -31,11 +33,11 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 137 "paper/mprgp.nw"
+#line 165 "paper/mprgp.nw"
 void mprgp_set(Qp_workspace *w)
 {
-  w->mprgp.abar = MPRGP_ABAR / w->normA;
-  w->mprgp.restart = 1;
+  w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
+  w->mprgp.restart = 1, w->mprgp.factored = 0;
 }
 
 void mprgp_free(Qp_workspace *w)
@@ -43,7 +45,7 @@ void mprgp_free(Qp_workspace *w)
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
 
-#line 163 "paper/mprgp.nw"
+#line 191 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -63,7 +65,7 @@ static void ssor_free(Qp_workspace *w)
   }
 }
 
-#line 204 "paper/mprgp.nw"
+#line 233 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -78,7 +80,7 @@ static int proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 225 "paper/mprgp.nw"
+#line 254 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -97,7 +99,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 282 "paper/mprgp.nw"
+#line 311 "paper/mprgp.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -108,7 +110,7 @@ static double feasible_step(const Qp_workspace *w)
   return af;
 }
 
-#line 299 "paper/mprgp.nw"
+#line 328 "paper/mprgp.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -122,7 +124,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
 
-#line 330 "paper/mprgp.nw"
+#line 359 "paper/mprgp.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
@@ -138,7 +140,7 @@ static void expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 257 "paper/mprgp.nw"
+#line 286 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -162,9 +164,266 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 192 "paper/mprgp.nw"
+#line 495 "paper/mprgp.nw"
+/* T_k strictly inside its interval (a width 0 never is) */
+static int dual_free(const Qp_workspace *w, int k)
+{
+  return w->T[k] > w->flo[k] && w->T[k] < w->fhi[k];
+}
+
+/* the gradient of q at T_k: y_k - pos_k */
+static double dual_grad(const Qp_workspace *w, int k)
+{
+  return w->pdas.y[k] - w->pos[k];
+}
+
+/* the chopped gradient: what pulls T_k inward from an end; 0 inside and
+   on an interval of width 0 */
+static double dual_chopped(const Qp_workspace *w, int k)
+{
+  double g = dual_grad(w, k);
+  if (w->flo[k] == w->fhi[k] || dual_free(w, k)) return 0;
+  return w->T[k] <= w->flo[k] ? fmin(g, 0) : fmax(g, 0);
+}
+
+/* v projected onto [flo_k, fhi_k]; a NaN stays */
+static double dual_proj(const Qp_workspace *w, int k, double v)
+{
+  return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
+}
+
+#line 525 "paper/mprgp.nw"
+/* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
+static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
+{
+  gsl_matrix_const_view L = gsl_matrix_const_view_array(w->pdas.M, w->nk, w->nk);
+  gsl_vector_view x = gsl_vector_view_array(u, w->nk);
+  memcpy(u, v, (size_t) w->nk * sizeof *u);
+  gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, &L.matrix, &x.vector);
+  gsl_blas_dtrsv(CblasLower, CblasTrans, CblasNonUnit, &L.matrix, &x.vector);
+}
+
+/* y = S^-1 (f + T), from scratch */
+static void dual_state(Qp_workspace *w)
+{
+  double *r = w->mprgp.z;
+  for (int k = 0; k < w->nk; k++) r[k] = w->pdas.f[k] + w->T[k];
+  dual_hessian(w, r, w->pdas.y);
+}
+
+#line 489 "paper/mprgp.nw"
+#define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
+#define POWER_MAX 100    /* power iterations at most */
+
+#line 547 "paper/mprgp.nw"
+/* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
+static int factor_schur(Qp_workspace *w, Status *st)
+{
+  int nk = w->nk;
+  gsl_matrix_view M = gsl_matrix_view_array(w->pdas.M, nk, nk);
+  memcpy(w->pdas.M, w->pdas.S, (size_t) nk * nk * sizeof *w->pdas.M);
+  if (!gsl_linalg_cholesky_decomp1(&M.matrix) && qp_factor_regular(w->pdas.M, nk))
+    return STATUS_OK;
+  return status_set(st, STATUS_NUMERIC, "cgssor with friction needs S, the "
+    "Schur complement onto the %d contact unknowns, positive definite: it is "
+    "singular here (a body held by its contact alone?); use solver.state = pdas",
+    nk);
+}
+
+/* rho + ||r||: above the eigenvalue of S^-1 that the power iteration
+   from the ones vector reaches, ||r|| <= POWER_TOL rho */
+static double norm_inverse(Qp_workspace *w)
+{
+  double *v = w->mprgp.p, *u = w->mprgp.q, rho = 0, res = INFINITY;
+  int nk = w->nk;
+  for (int k = 0; k < nk; k++) v[k] = 1 / sqrt(nk);
+  for (int it = 0; it < POWER_MAX && !(res <= POWER_TOL * rho); it++) {
+    dual_hessian(w, v, u);
+    rho = dot(nk, v, u), res = 0;
+    for (int k = 0; k < nk; k++) res += (u[k] - rho * v[k]) * (u[k] - rho * v[k]);
+    res = sqrt(res);
+    double nu = sqrt(dot(nk, u, u));
+    for (int k = 0; k < nk; k++) v[k] = u[k] / nu;
+  }
+  return rho + res;
+}
+
+#line 582 "paper/mprgp.nw"
+static int dual_setup(Qp_workspace *w, Status *st)
+{
+  int code = pdas_condense(w, st);
+  if (!code) code = factor_schur(w, st);
+  if (code) return code;
+  w->mprgp.abar = MPRGP_ABAR / norm_inverse(w);
+  for (int k = 0; k < w->nk; k++) w->T[k] = dual_proj(w, k, w->T[k]);
+  dual_state(w);
+  w->mprgp.restart = 1, w->mprgp.factored = 1;
+  return STATUS_OK;
+}
+
+#line 597 "paper/mprgp.nw"
+/* ||beta||^2 <= Gamma^2 phi~' phi on the box */
+static int dual_proportional(const Qp_workspace *w)
+{
+  double bb = 0, fp = 0, a = w->mprgp.abar;
+  for (int k = 0; k < w->nk; k++) {
+    double g = dual_grad(w, k), b = dual_chopped(w, k);
+    if (dual_free(w, k))
+      fp += (g > 0 ? fmin((w->T[k] - w->flo[k]) / a, g)
+                   : fmax((w->T[k] - w->fhi[k]) / a, g)) * g;
+    bb += b * b;
+  }
+  return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
+}
+
+#line 613 "paper/mprgp.nw"
+/* the largest alpha with flo <= T - alpha d <= fhi */
+static double dual_feasible_step(const Qp_workspace *w, const double *d)
+{
+  double af = INFINITY;
+  for (int k = 0; k < w->nk; k++)
+    if (d[k] > 0) af = fmin(af, (w->T[k] - w->flo[k]) / d[k]);
+    else if (d[k] < 0) af = fmin(af, (w->T[k] - w->fhi[k]) / d[k]);
+  return af;
+}
+
+#line 627 "paper/mprgp.nw"
+/* T <- T - alpha beta, y <- y - alpha H beta */
+static void dual_proportioning_step(Qp_workspace *w)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  int nk = w->nk;
+  for (int k = 0; k < nk; k++) mp->z[k] = dual_chopped(w, k);
+  dual_hessian(w, mp->z, mp->q);
+  double alpha = fmin(dot(nk, mp->z, mp->z) / dot(nk, mp->z, mp->q),
+                      dual_feasible_step(w, mp->z));
+  for (int k = 0; k < nk; k++) {
+    w->T[k] = dual_proj(w, k, w->T[k] - alpha * mp->z[k]);
+    w->pdas.y[k] -= alpha * mp->q[k];
+  }
+  mp->restart = 1;
+}
+
+#line 647 "paper/mprgp.nw"
+/* p <- the free gradient, where the face changed */
+static void dual_restart(Qp_workspace *w, double *p)
+{
+  for (int k = 0; k < w->nk; k++) p[k] = dual_free(w, k) ? dual_grad(w, k) : 0;
+}
+
+/* g' p, g = y - pos */
+static double dual_slope(const Qp_workspace *w, const double *p)
+{
+  double s = 0;
+  for (int k = 0; k < w->nk; k++) s += dual_grad(w, k) * p[k];
+  return s;
+}
+
+#line 681 "paper/mprgp.nw"
+/* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
+static void dual_cg_step(Qp_workspace *w, double acg, double php)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  for (int k = 0; k < w->nk; k++) {
+    w->T[k] = dual_proj(w, k, w->T[k] - acg * mp->p[k]);
+    w->pdas.y[k] -= acg * mp->q[k];
+  }
+  dual_restart(w, mp->z);
+  double gamma = dot(w->nk, mp->z, mp->q) / php;
+  for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
+}
+
+#line 699 "paper/mprgp.nw"
+/* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
+static void dual_expansion_step(Qp_workspace *w, double af)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  for (int k = 0; k < w->nk; k++) {
+    double p = mp->p[k], end = p > 0 ? w->flo[k] : w->fhi[k];
+    int tie = p != 0 && fabs(w->T[k] - end) <= af * fabs(p) * (1 + TIE);
+    w->T[k] = tie ? end : dual_proj(w, k, w->T[k] - af * p);
+    w->pdas.y[k] -= af * mp->q[k];
+  }
+  for (int k = 0; k < w->nk; k++)
+    if (dual_free(w, k)) w->T[k] = dual_proj(w, k, w->T[k] - mp->abar * dual_grad(w, k));
+  dual_state(w);
+  mp->restart = 1;
+}
+
+#line 665 "paper/mprgp.nw"
+static void dual_cg_or_expansion_step(Qp_workspace *w)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  int nk = w->nk;
+  if (mp->restart || !(dual_slope(w, mp->p) > 0))
+    dual_restart(w, mp->p), mp->restart = 0;
+  if (dot(nk, mp->p, mp->p) == 0) { dual_state(w); return; }
+  dual_hessian(w, mp->p, mp->q);
+  double php = dot(nk, mp->p, mp->q), af = dual_feasible_step(w, mp->p);
+  double acg = dual_slope(w, mp->p) / php;
+  if (acg <= af) dual_cg_step(w, acg, php);
+  else dual_expansion_step(w, af);
+}
+
+#line 723 "paper/mprgp.nw"
+/* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
+static void dual_snap(Qp_workspace *w)
+{
+  double *y = w->pdas.y;
+  for (int k = 0; k < w->nk; k++)
+    if (w->flo[k] == w->fhi[k]) continue;
+    else if (dual_free(w, k)) y[k] = w->pos[k];
+    else if (w->T[k] <= w->flo[k]) y[k] = fmax(y[k], w->pos[k]);
+    else y[k] = fmin(y[k], w->pos[k]);
+}
+
+/* the residual of (y snapped, T = S y - f), left in place if <= tol */
+static double dual_snapped_kkt(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  size_t size = (size_t) w->nk * sizeof *pd->y;
+  gsl_matrix_const_view S = gsl_matrix_const_view_array(pd->S, w->nk, w->nk);
+  gsl_vector_view y = gsl_vector_view_array(pd->y, w->nk),
+                  T = gsl_vector_view_array(w->T, w->nk);
+  memcpy(w->mprgp.z, pd->y, size), memcpy(w->mprgp.q, w->T, size);
+  dual_snap(w);
+  memcpy(w->T, pd->f, size);
+  gsl_blas_dgemv(CblasNoTrans, 1.0, &S.matrix, &y.vector, -1.0, &T.vector);
+  double kkt = pdas_condensed_kkt(w);
+  if (!(kkt <= w->opt.tol))
+    memcpy(pd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
+  return kkt;
+}
+
+#line 756 "paper/mprgp.nw"
+static int dual_finish(Qp_workspace *w, Status *st)
+{
+  int met = w->kkt <= w->opt.tol, code;
+  if ((code = pdas_expand(w, st)) || !met || w->kkt <= w->opt.tol) return code;
+  return status_set(st, STATUS_NUMERIC, "cgssor: the dual met the tolerance "
+    "at step %d but the whole state has kkt = %.3g > tol = %.3g: S is too "
+    "ill-conditioned for this tolerance", w->iter + 1, w->kkt, w->opt.tol);
+}
+
+#line 771 "paper/mprgp.nw"
+static int dual_iterate(Qp_workspace *w, Status *st)
+{
+  int code;
+  if (!w->mprgp.factored && (code = dual_setup(w, st))) return code;
+  if (dual_proportional(w)) dual_cg_or_expansion_step(w);
+  else dual_proportioning_step(w);
+  w->kkt = pdas_condensed_kkt(w);
+  if (w->kkt <= w->opt.tol) dual_state(w), w->kkt = pdas_condensed_kkt(w);
+  if (w->kkt <= w->opt.tol) w->kkt = dual_snapped_kkt(w);
+  if (w->kkt <= w->opt.tol || w->iter + 1 >= w->opt.max_iter)
+    return dual_finish(w, st);
+  return STATUS_OK;
+}
+
+#line 220 "paper/mprgp.nw"
 int mprgp_iterate(Qp_workspace *w, Status *st)
 {
+  if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */
   int code = proportional(w) ? cg_or_expansion_step(w, st)
                              : proportioning_step(w, st);
   if (code) return code;

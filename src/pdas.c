@@ -1,4 +1,4 @@
-#line 179 "paper/pdas.nw"
+#line 184 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,14 +7,12 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 305 "paper/pdas.nw"
+#line 310 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 313 "paper/pdas.nw"
+#line 318 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
-#line 513 "paper/pdas.nw"
-#define PDAS_RCOND_MIN (100 * DBL_EPSILON) /* smaller: K taken to be singular */
 
-#line 708 "paper/pdas.nw"
+#line 703 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -28,7 +26,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 248 "paper/pdas.nw"
+#line 253 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -45,7 +43,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   cm->postorder = postorder;
   free(last), free(perm);
   
-#line 268 "paper/pdas.nw"
+#line 273 "paper/pdas.nw"
 pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 if (!ok || !pd->rhs || !pd->Lb)
@@ -57,10 +55,10 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 264 "paper/pdas.nw"
+#line 269 "paper/pdas.nw"
 }
 
-#line 219 "paper/pdas.nw"
+#line 224 "paper/pdas.nw"
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -84,7 +82,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 282 "paper/pdas.nw"
+#line 287 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -96,7 +94,7 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 194 "paper/pdas.nw"
+#line 199 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -113,7 +111,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 402 "paper/pdas.nw"
+#line 405 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -127,7 +125,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 422 "paper/pdas.nw"
+#line 425 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -138,7 +136,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 442 "paper/pdas.nw"
+#line 445 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -147,7 +145,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 432 "paper/pdas.nw"
+#line 435 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -156,7 +154,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 455 "paper/pdas.nw"
+#line 458 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -173,7 +171,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 475 "paper/pdas.nw"
+#line 478 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -194,7 +192,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 378 "paper/pdas.nw"
+#line 381 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -225,7 +223,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 545 "paper/pdas.nw"
+#line 540 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -241,19 +239,14 @@ for (int a = 0; a < m; a++) {
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
-  double dmin = INFINITY, dmax = 0;
-  if (gsl_linalg_cholesky_decomp1(&M.matrix)) return SINGULAR;
-  for (int a = 0; a < m; a++) {
-    double p = pd->M[(size_t) a * m + a] * pd->M[(size_t) a * m + a];
-    dmin = fmin(dmin, p), dmax = fmax(dmax, p);
-  }
-  if (!(dmin >= PDAS_RCOND_MIN * dmax)) return SINGULAR;
+  if (gsl_linalg_cholesky_decomp1(&M.matrix) || !qp_factor_regular(pd->M, m))
+    return SINGULAR;
   gsl_linalg_cholesky_svx(&M.matrix, &r.vector);
   for (int a = 0; a < m; a++) pd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
 
-#line 563 "paper/pdas.nw"
+#line 558 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -265,13 +258,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 577 "paper/pdas.nw"
+#line 572 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 591 "paper/pdas.nw"
+#line 586 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -288,7 +281,7 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 582 "paper/pdas.nw"
+#line 577 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double k = fmax(qp_ratio(sqrt(tn), sf),
                   fmax(qp_ratio(sqrt(inf), su),
@@ -296,7 +289,7 @@ for (int c = 0; c < w->nk; c++) {
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
 
-#line 616 "paper/pdas.nw"
+#line 611 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -326,7 +319,7 @@ static int predict_active_set(Qp_workspace *w)
   return same;
 }
 
-#line 665 "paper/pdas.nw"
+#line 660 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -345,7 +338,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 690 "paper/pdas.nw"
+#line 685 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -361,17 +354,15 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 317 "paper/pdas.nw"
+#line 322 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 337 "paper/pdas.nw"
-if ((code = condense(w, st)) == SINGULAR)
-  return qp_not_held(w, st, "A is singular even with every bound held", w->nc);
-if (code) return code;
+#line 342 "paper/pdas.nw"
+if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) {
   for (int c = 0; c < w->nk; c++) pd->y[c] = w->x[w->ik[c]];
   condensed_forces(w);
@@ -379,7 +370,7 @@ if (pd->warm) {
   predict_active_set(w);
   pd->stepped = 1;
 }
-#line 323 "paper/pdas.nw"
+#line 328 "paper/pdas.nw"
   }
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
@@ -390,7 +381,7 @@ if (pd->warm) {
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 358 "paper/pdas.nw"
+#line 361 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -399,10 +390,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
   "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
-#line 333 "paper/pdas.nw"
+#line 338 "paper/pdas.nw"
 }
 
-#line 729 "paper/pdas.nw"
+#line 724 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -419,7 +410,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 748 "paper/pdas.nw"
+#line 743 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -427,7 +418,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 767 "paper/pdas.nw"
+#line 762 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -439,7 +430,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_SYSTEM, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 785 "paper/pdas.nw"
+#line 780 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -462,7 +453,28 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 778 "paper/pdas.nw"
+#line 773 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
+  return code;
+}
+#line 813 "paper/pdas.nw"
+/* S, f and the factor of K at the current values; a singular K is a
+   body that nothing holds */
+int pdas_condense(Qp_workspace *w, Status *st)
+{
+  int code = condense(w, st);
+  return code != SINGULAR ? code : qp_not_held(w, st,
+    "A is singular even with every bound held", w->nc);
+}
+
+/* the relative KKT residual of y and T = S y - f */
+double pdas_condensed_kkt(const Qp_workspace *w) { return condensed_kkt(w); }
+
+/* x from y by back substitution, refined once if kkt > tol; kkt and T
+   recomputed at x */
+int pdas_expand(Qp_workspace *w, Status *st)
+{
+  int code = expand(w, st);
+  if (!code && w->kkt > w->opt.tol) code = refine(w, st);
   return code;
 }

@@ -1,11 +1,11 @@
-#line 375 "paper/qp.nw"
+#line 392 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 441 "paper/qp.nw"
+#line 458 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -20,44 +20,44 @@ double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 467 "paper/qp.nw"
+#line 484 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 455 "paper/qp.nw"
+#line 472 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 480 "paper/qp.nw"
+#line 497 "paper/qp.nw"
 double excess = fabs(r) - qp->slip[k];
 if (excess > 0) tn += excess * excess;         /* more than friction holds */
 comp += fabs(qp->slip[k] * fabs(x[j]) + r * x[j]); /* slip not against r */
 if (T) T[qp->nc + k] = r;
-#line 458 "paper/qp.nw"
+#line 475 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 489 "paper/qp.nw"
+#line 506 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
                 fmax(qp_ratio(sqrt(inf), su),
                      qp_ratio(qp_ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 463 "paper/qp.nw"
+#line 480 "paper/qp.nw"
 }
 
-#line 497 "paper/qp.nw"
+#line 514 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, x, NULL, T);
 }
 
-#line 526 "paper/qp.nw"
+#line 566 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -72,13 +72,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
 }
 
-#line 592 "paper/qp.nw"
+#line 633 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 601 "paper/qp.nw"
+#line 642 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -94,7 +94,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 565 "paper/qp.nw"
+#line 606 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -117,7 +117,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 694 "paper/qp.nw"
+#line 737 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -126,14 +126,14 @@ for (int k = 0; k < qp->nt; k++)
     return status_set(st, STATUS_INPUT, "qp_alloc: it[%d] = %d: the slipping "
                       "unknowns must increase within [0, %d)", k, qp->it[k],
                       (int) A->ncol);
-if (qp->nt > 0 && opt->method != QP_PDAS)
-  return status_set(st, STATUS_INPUT, "%s cannot solve contact with friction: "
-                    "use solver.state = pdas", qp_method_name(opt->method));
-#line 587 "paper/qp.nw"
+if (qp->nt > 0 && opt->method == QP_PSOR)
+  return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
+                    "friction: use solver.state = pdas or cgssor");
+#line 628 "paper/qp.nw"
   return check_options(opt, st);
 }
 
-#line 622 "paper/qp.nw"
+#line 663 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -158,7 +158,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 653 "paper/qp.nw"
+#line 694 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -178,7 +178,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 546 "paper/qp.nw"
+#line 586 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -189,13 +189,14 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   w->n = (int) qp->A->ncol, w->nc = qp->nc, w->nk = qp->nc + qp->nt;
   int code = alloc_common(w, st);
   if (!code) code = check_pattern(w, st);
-  if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
+  if (!code && (opt->method == QP_PDAS || (opt->method == QP_CGSSOR && qp->nt)))
+    code = pdas_alloc(w, st);      /* MPRGP with friction condenses too */
   if (!code && opt->method == QP_CGSSOR) code = mprgp_alloc(w, st);
   if (code) { qp_free(w); return NULL; }
   return w;
 }
 
-#line 675 "paper/qp.nw"
+#line 716 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -207,7 +208,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 716 "paper/qp.nw"
+#line 759 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -232,7 +233,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 746 "paper/qp.nw"
+#line 789 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -256,7 +257,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 772 "paper/qp.nw"
+#line 815 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -265,7 +266,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 784 "paper/qp.nw"
+#line 827 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -280,14 +281,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 823 "paper/qp.nw"
+#line 866 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 805 "paper/qp.nw"
+#line 848 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -304,7 +305,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 870 "paper/qp.nw"
+#line 913 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -320,7 +321,7 @@ const char *qp_hint(const Qp_workspace *w)
     "if only the contact holds the body, the load lifts it off";
 }
 
-#line 889 "paper/qp.nw"
+#line 932 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -331,7 +332,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 861 "paper/qp.nw"
+#line 904 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -339,7 +340,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
 }
 
-#line 839 "paper/qp.nw"
+#line 882 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -357,7 +358,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 914 "paper/qp.nw"
+#line 957 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;

@@ -3,9 +3,11 @@
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
    it, no other module does. */
+#include <float.h>
+#include <math.h>
 #include "qp.h"
 
-#line 236 "paper/qp.nw"
+#line 240 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -19,7 +21,8 @@ typedef struct {
   double *f;             /* nk: the condensed load */
   double *y;             /* nk: the condensed iterate x[ik] */
   double *M;             /* nk x nk: S on the free set, then its factor
-                            (L_cc L_cc' while condensing) */
+                            (L_cc L_cc' while condensing; for MPRGP
+                            with friction, the factor of the whole S) */
   double *r;             /* nk: a right-hand side on the free set */
   int *fr;               /* nk: the free set, listed */
   double bu2;            /* ||b_u||^2, for the residual */
@@ -33,16 +36,19 @@ typedef struct {
   int stepped;           /* y, T come from a Newton step (not a guess) */
 } Pdas_workspace;
 
-#line 266 "paper/qp.nw"
+#line 273 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
   double *z;             /* n: the preconditioned free gradient, or beta */
-  double abar;           /* the expansion step length 1.9 / normA */
+  double abar;           /* the expansion step length 1.9 / normA
+                            (friction: 1.9 / ||S^-1||) */
   int restart;           /* 1: p must restart from z (the face changed) */
+  int factored;          /* friction: S is condensed and factored for the
+                            values of the last qp_set */
 } Mprgp_workspace;
 
-#line 206 "paper/qp.nw"
+#line 210 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -67,7 +73,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 418 "paper/qp.nw"
+#line 435 "paper/qp.nw"
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static inline double qp_ratio(double num, double den)
 {
@@ -85,7 +91,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 511 "paper/qp.nw"
+#line 528 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -98,7 +104,23 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 279 "paper/qp.nw"
+#line 548 "paper/qp.nw"
+#define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
+
+/* the squared pivots of the Cholesky factor L (m x m, row-major) spread
+   by at least QP_RCOND_MIN (min/max) */
+static inline int qp_factor_regular(const double *L, int m)
+{
+  double dmin = INFINITY, dmax = 0;
+  for (int a = 0; a < m; a++) {
+    double p = L[(size_t) a * m + a] * L[(size_t) a * m + a];
+    if (p < dmin || isnan(p)) dmin = p;    /* a NaN stays */
+    if (p > dmax) dmax = p;
+  }
+  return dmin >= QP_RCOND_MIN * dmax;
+}
+
+#line 289 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -115,7 +137,7 @@ const char *qp_hint(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 301 "paper/qp.nw"
+#line 314 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -126,6 +148,10 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
 void pdas_schur(const Qp_workspace *w, double shift, double *S);
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st);
+/* pdas.c, for MPRGP with friction: S and f, the residual of (y, T), x */
+int pdas_condense(Qp_workspace *w, Status *st);
+double pdas_condensed_kkt(const Qp_workspace *w);
+int pdas_expand(Qp_workspace *w, Status *st);
 /* mprgp.c: MPRGP, CG-SSOR with projection */
 int mprgp_alloc(Qp_workspace *w, Status *st);
 void mprgp_set(Qp_workspace *w);
@@ -133,5 +159,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 195 "paper/qp.nw"
+#line 199 "paper/qp.nw"
 #endif

@@ -763,7 +763,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 1361 "paper/scene.nw"
+#line 1363 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -776,10 +776,10 @@ static int read_solver(Loader *L, Scene *s)
   snprintf(max_iter, sizeof max_iter, "%d", d.max_iter);
   snprintf(omega, sizeof omega, "%.17g", d.omega);
   o->method = (Qp_method)k;
-  if (k != QP_PDAS && s->problem.contact != CONTACT_FRICTIONLESS)
+  if (k == QP_PSOR && s->problem.contact != CONTACT_FRICTIONLESS)
     return blame(L, "cannot take friction (contact.model = %s): a slip bound "
-                 "bounds a force, and %s bounds unknowns; use pdas",
-                 problem_contact_name(s->problem.contact), state_names[k]);
+                 "bounds a force, and psor bounds unknowns; use pdas or cgssor",
+                 problem_contact_name(s->problem.contact));
   if ((rc = real(L, "solver", "tol", tol, &o->tol))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative residual");
@@ -791,7 +791,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1398 "paper/scene.nw"
+#line 1400 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -823,7 +823,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1439 "paper/scene.nw"
+#line 1441 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -836,7 +836,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1456 "paper/scene.nw"
+#line 1458 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -856,7 +856,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1479 "paper/scene.nw"
+#line 1481 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

@@ -166,6 +166,7 @@ static void test_overrides(void)
   char *m4[] = {"mesh.M=4"}, *n64[] = {"design.N=64"};
   char *refine4[] = {"mesh.refine=4"};
   char *psor[] = {" solver.state = psor ", "body_force.F2=-7.8e4"};
+  char *cgssor[] = {"contact.model=tresca", "contact.g=1e6", "solver.state=cgssor"};
   Scene s;
   Status st = {STATUS_OK, ""};
   if (check(scene_load(&s, "data/example-5.1.scene", 1, m4, &st) == 0
@@ -193,6 +194,10 @@ static void test_overrides(void)
     check(s.problem.has_body_force && s.problem.F[1] == -7.8e4, "a body force sets has_body_force");
     scene_free(&s);
   }
+  if (check(scene_load(&s, "data/example-5.1.scene", 3, cgssor, &st) == 0
+            && s.solver.method == QP_CGSSOR && s.problem.contact == CONTACT_TRESCA,
+            "friction with cgssor loads (MPRGP on the dual): %s", st.msg))
+    scene_free(&s);
 }
 
 /* initial = file: comments, blank lines, two columns, relative path */
@@ -422,12 +427,9 @@ static void test_condition_errors(void)
   expect_edit("negative friction coefficient", "\nP2 = -5.75e8\n",
               "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = -0.1\n",
               "contact.friction", "must be >= 0");
-  expect_edit("friction with cgssor", "\nP2 = -5.75e8\n",
-              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e6\n"
-              "[solver]\nstate = cgssor\n", "solver.state", "cannot take friction");
   expect_edit("friction with psor", "\nP2 = -5.75e8\n",
               "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 0.3\n"
-              "[solver]\nstate = psor\n", "solver.state", "cannot take friction");
+              "[solver]\nstate = psor\n", "solver.state", "use pdas or cgssor");
 }
 
 /* a scene path longer than Scene.path: the message names its start */

@@ -1,0 +1,298 @@
+/* test_friction_cgssor: MPRGP on the dual (solver.state = cgssor with
+   friction, paper/mprgp.nw) against the active set method on Example 5.1:
+   - given friction at g = 1e7, 2.5e8, 1e9 Pa on N = 16 and 64, and Coulomb
+     friction F = 0.2: E to 1e-10 relative, the normal and tangential
+     forces to 1e-8 of max|T|, the same nodes in contact and sticking, and
+     the KKT residual recomputed by qp_kkt <= tol;
+   - g = 0 is the frictionless state;
+   - Young's modulus, the load and g scaled by 1e7 change no step count on
+     N = 16, and by at most 2 % on N = 64 (rounding);
+   - a warm start from the solution takes no step;
+   - a body that its contact alone holds (both sides on rollers) makes S
+     singular: refused with one line naming pdas, which solves it;
+   - max_iter = 1 fails with the state it reached, and a tolerance below
+     the rounding of the whole state with a message that says so;
+   - psor, which cannot take friction, is refused by qp_alloc. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "setup.h"
+#include "scene.h"
+#include "model.h"
+
+#define EX51 "data/example-5.1.scene"
+
+typedef struct {
+  Scene s;
+  cholmod_common cm;
+  Model *md;
+  int rc;
+  Status st;
+} Case;
+
+/* load EX51 with the overrides, build its model, solve at alpha0 */
+static int open_case(Case *c, int n, char **ov)
+{
+  memset(c, 0, sizeof *c);
+  test_start(&c->cm);
+  if ((c->rc = scene_load(&c->s, EX51, n, ov, &c->st))) return c->rc;
+  if (!(c->md = model_new(&c->s.problem, &c->s.solver, &c->cm, &c->st)))
+    return c->rc = c->st.code;
+  return c->rc = model_solve(c->md, c->s.alpha0, &c->st);
+}
+
+static void close_case(Case *c)
+{
+  model_free(c->md);
+  if (c->s.alpha0) scene_free(&c->s);
+  cholmod_finish(&c->cm);
+}
+
+/* the case solved by pdas (k = 0) and by cgssor (k = 1): the overrides
+   ov and the method's */
+static void open_pair(Case c[2], int n, char **ov)
+{
+  char *all[8];
+  static char *method[] = { "solver.state=pdas", "solver.state=cgssor" };
+  memcpy(all, ov, n * sizeof *ov);
+  for (int k = 0; k < 2; k++) {
+    all[n] = method[k];
+    open_case(&c[k], n + 1, all);
+  }
+}
+
+static double max_abs(const double *v, int n)
+{
+  double m = 0;
+  for (int i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
+  return m;
+}
+
+static double max_diff(const double *u, const double *v, int n)
+{
+  double m = 0;
+  for (int i = 0; i < n; i++) m = fmax(m, fabs(u[i] - v[i]));
+  return m;
+}
+
+/* nodes in contact (Q = lo, exactly) and sticking (u1 = 0, exactly) */
+static void count_held(const Model *md, int *contact, int *stick)
+{
+  const Dofs *d = md->dofs;
+  *contact = *stick = 0;
+  for (int c = 0; c < d->nc; c++) *contact += md->Q[d->contact[c]] == md->lo[c];
+  for (int k = 0; k < d->nt; k++) *stick += md->Q[d->tangent[k]] == 0;
+}
+
+/* cgssor's state is pdas's: energy, forces, contact and stick, residual */
+static void compare(Case c[2], const char *what)
+{
+  if (!check(!c[0].rc && !c[1].rc, "%s: pdas and cgssor solve: %s%s", what,
+             c[0].st.msg, c[1].st.msg))
+    return;
+  const Model *p = c[0].md, *m = c[1].md;
+  int nk = p->dofs->nc + p->dofs->nt, cp, sp, cm, sm;
+  double E = fabs(m->energy - p->energy) / fabs(p->energy);
+  double T = max_diff(m->T, p->T, nk) / max_abs(p->T, nk);
+  check(E <= 1e-10 && T <= 1e-8, "%s: E to %.1e, the %d normal and "
+        "tangential forces to %.1e of max|T| (%d pdas, %d cgssor steps)", what,
+        E, nk, T, p->report.iterations, m->report.iterations);
+  count_held(p, &cp, &sp), count_held(m, &cm, &sm);
+  check(cp == cm && sp == sm && cp > 0, "%s: the same %d nodes in contact and "
+        "%d sticking, held exactly (cgssor: %d, %d)", what, cp, sp, cm, sm);
+  double kkt = qp_kkt(&m->qp, m->Q, NULL);
+  check(kkt <= c[1].s.solver.tol && m->report.kkt <= c[1].s.solver.tol,
+        "%s: cgssor: qp_kkt %.1e <= tol (reported %.1e)", what, kkt,
+        m->report.kkt);
+}
+
+/* given friction; *mixed += 1 if cgssor's state both sticks and slips */
+static void test_tresca(const char *g, const char *refine, int *mixed)
+{
+  char pg[32], pr[32], what[64], *ov[] = { "contact.model=tresca", pg, pr };
+  Case c[2];
+  snprintf(pg, sizeof pg, "contact.g=%s", g);
+  snprintf(pr, sizeof pr, "mesh.refine=%s", refine);
+  snprintf(what, sizeof what, "tresca g = %s, refine %s", g, refine);
+  open_pair(c, 3, ov);
+  compare(c, what);
+  if (!c[1].rc) {
+    const Dofs *d = c[1].md->dofs;
+    int slip = 0;
+    for (int k = 0; k < d->nt; k++) slip += c[1].md->Q[d->tangent[k]] != 0;
+    *mixed += slip > 0 && slip < d->nt;
+  }
+  close_case(&c[0]), close_case(&c[1]);
+}
+
+static void test_coulomb(const char *refine)
+{
+  char pr[32], what[64], *ov[] = { "contact.model=coulomb",
+                                   "contact.friction=0.2", pr };
+  Case c[2];
+  snprintf(pr, sizeof pr, "mesh.refine=%s", refine);
+  snprintf(what, sizeof what, "coulomb F = 0.2, refine %s", refine);
+  open_pair(c, 3, ov);
+  compare(c, what);
+  if (!c[0].rc && !c[1].rc)
+    check(c[1].md->fixed_point_residual <= c[1].s.solver.tol,
+          "%s: cgssor: the fixed point converged in %d iterations (pdas %d)",
+          what, c[1].md->fixed_point_iterations, c[0].md->fixed_point_iterations);
+  close_case(&c[0]), close_case(&c[1]);
+}
+
+/* g = 0: every tangential force fixed at 0, the frictionless state */
+static void test_g_zero(void)
+{
+  char *ov0[] = { "mesh.refine=4" },
+       *ov1[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=0",
+                  "solver.state=cgssor" };
+  Case f, c;
+  open_case(&f, 1, ov0), open_case(&c, 4, ov1);
+  if (check(!f.rc && !c.rc, "g = 0: solved: %s%s", f.st.msg, c.st.msg)) {
+    int nc = f.md->dofs->nc;
+    double E = fabs(c.md->energy - f.md->energy) / fabs(f.md->energy);
+    double T = max_diff(c.md->T, f.md->T, nc) / max_abs(f.md->T, nc);
+    double Tt = max_abs(c.md->T + nc, c.md->dofs->nt) / max_abs(f.md->T, nc);
+    check(E <= 1e-10 && T <= 1e-8 && Tt <= 1e-8,
+          "g = 0: cgssor gives the frictionless state: E to %.1e, T to %.1e, "
+          "tangential forces %.1e of max|T|", E, T, Tt);
+  }
+  close_case(&f), close_case(&c);
+}
+
+/* E, the load and g scaled by 1e7: the same steps on N = 16; on N = 64,
+   where the scaled matrix's rounding moves the step at which the residual
+   crosses tol, within 2 % */
+static void test_scale(const char *g, const char *refine)
+{
+  char pr[32], pg1[48], pg2[48];
+  char *ov1[] = { pr, "contact.model=tresca", pg1, "solver.state=cgssor" };
+  char *ov2[] = { pr, "contact.model=tresca", pg2, "solver.state=cgssor",
+                  "material.E=2.15e18", "top.P2=-5.75e15" };
+  int exact = !strcmp(refine, "1");
+  snprintf(pr, sizeof pr, "mesh.refine=%s", refine);
+  snprintf(pg1, sizeof pg1, "contact.g=%s", g);
+  snprintf(pg2, sizeof pg2, "contact.g=%.17g", atof(g) * 1e7);
+  Case a, b;
+  open_case(&a, 4, ov1), open_case(&b, 6, ov2);
+  if (check(!a.rc && !b.rc, "g = %s, refine %s, scaled by 1e7: both solved: "
+            "%s%s", g, refine, a.st.msg, b.st.msg)) {
+    int na = a.md->report.iterations, nb = b.md->report.iterations;
+    double dE = fabs(b.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
+    check((exact ? na == nb : abs(na - nb) <= 0.02 * na) && dE <= 1e-10,
+          "g = %s, refine %s, scaled by 1e7: %d and %d cgssor steps (%s), "
+          "E / 1e7 to %.1e", g, refine, na, nb, exact ? "the same" : "within 2 %",
+          dE);
+  }
+  close_case(&a), close_case(&b);
+}
+
+/* solved again at the same design, from its own state: no step */
+static void test_warm(void)
+{
+  char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
+                 "solver.state=cgssor" };
+  Case c;
+  if (check(open_case(&c, 4, ov) == 0, "warm: solved: %s", c.st.msg)) {
+    int cold = c.md->report.iterations;
+    int rc = model_solve(c.md, c.s.alpha0, &c.st);
+    check(rc == 0 && c.md->report.iterations == 0 && cold > 0,
+          "warm: from its solution, %d steps (cold: %d)",
+          c.md->report.iterations, cold);
+  }
+  close_case(&c);
+}
+
+/* both sides on rollers: the contact alone holds the body up, S is
+   singular (S 1 = 0 for the vertical translation): pdas solves it, cgssor
+   refuses it */
+static void test_singular(void)
+{
+  char *ov[] = { "left.bc=roller", "contact.model=tresca", "contact.g=2.5e8" };
+  Case c[2];
+  open_pair(c, 3, ov);
+  if (check(!c[0].rc, "rollers: pdas solves: %s", c[0].st.msg)) {
+    int nc = c[0].md->dofs->nc;
+    double *S = malloc((size_t) nc * nc * sizeof *S), s1 = 0, smax = 0;
+    int rc = qp_schur(c[0].md->solver, 0, S, &c[0].st);
+    for (int i = 0; i < nc; i++) {
+      double r = 0;
+      for (int j = 0; j < nc; j++) r += S[(size_t) i * nc + j], smax = fmax(smax, fabs(S[(size_t) i * nc + j]));
+      s1 = fmax(s1, fabs(r));
+    }
+    check(rc == 0 && s1 <= 1e-10 * nc * smax, "rollers: S 1 = 0 to %.1e of "
+          "max|S|: S is singular", s1 / smax);
+    free(S);
+  }
+  check(c[1].rc == STATUS_NUMERIC && c[1].st.code == STATUS_NUMERIC
+        && strstr(c[1].st.msg, "positive definite")
+        && strstr(c[1].st.msg, "solver.state = pdas") && !strchr(c[1].st.msg, '\n'),
+        "rollers: cgssor refuses: %s", c[1].st.msg);
+  close_case(&c[0]), close_case(&c[1]);
+}
+
+/* max_iter = 1: not converged, a finite state */
+static void test_max_iter(void)
+{
+  char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
+                 "solver.state=cgssor", "solver.max_iter=1" };
+  Case c;
+  open_case(&c, 5, ov);
+  int finite = c.md != NULL;
+  for (int i = 0; finite && i < c.md->dofs->n; i++) finite = isfinite(c.md->Q[i]);
+  check(c.rc == STATUS_NUMERIC && strstr(c.st.msg, "not converged") && finite,
+        "max_iter = 1: %s", c.st.msg);
+  close_case(&c);
+}
+
+/* tol = 1e-15, below the rounding of the back substitution: the dual
+   meets it, the whole state cannot, and the solve says so */
+static void test_tol_below_rounding(void)
+{
+  char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
+                 "solver.state=cgssor", "solver.tol=1e-15", "solver.max_iter=2000" };
+  Case c;
+  open_case(&c, 6, ov);
+  check(c.rc == STATUS_NUMERIC && strstr(c.st.msg, "too ill-conditioned"),
+        "tol = 1e-15: %s", c.st.msg);
+  close_case(&c);
+}
+
+/* psor with friction: qp_alloc refuses it, naming the two that take it */
+static void test_psor_refused(void)
+{
+  char *ov[] = { "contact.model=tresca", "contact.g=2.5e8", "solver.state=cgssor" };
+  Case c;
+  if (check(open_case(&c, 3, ov) == 0, "psor: the problem solved by cgssor: %s",
+            c.st.msg)) {
+    Qp_options opt = qp_options_default(QP_PSOR);
+    Status st = { STATUS_OK, "" };
+    Qp_workspace *w = qp_alloc(&c.md->qp, &opt, &c.cm, &st);
+    check(!w && st.code == STATUS_INPUT && strstr(st.msg, "psor")
+          && strstr(st.msg, "pdas or cgssor"), "psor: refused: %s", st.msg);
+    qp_free(w);
+  }
+  close_case(&c);
+}
+
+int main(void)
+{
+  static const char *g[] = { "1e7", "2.5e8", "1e9" };
+  int mixed = 0;
+  for (int r = 0; r < 2; r++)
+    for (int k = 0; k < 3; k++) test_tresca(g[k], r ? "4" : "1", &mixed);
+  check(mixed >= 2, "tresca: %d of the 6 states both stick and slip", mixed);
+  test_coulomb("1");
+  test_coulomb("4");
+  test_g_zero();
+  for (int k = 0; k < 3; k++) test_scale(g[k], "1");
+  test_scale("2.5e8", "4");
+  test_warm();
+  test_singular();
+  test_max_iter();
+  test_tol_below_rounding();
+  test_psor_refused();
+  return check_done();
+}
