@@ -461,7 +461,7 @@ static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
   if (!w) {
-    status_set(st, STATUS_SYSTEM, "design: out of memory");
+    status_set(st, STATUS_MEMORY, "design: out of memory");
     return NULL;
   }
   w->B = B;
@@ -472,7 +472,7 @@ static Work *work_new(const Design_set *B, Status *st)
   w->edge = malloc(4 * (size_t) w->n);
   if (!w->Y || !w->edge) {
     work_free(w);
-    status_set(st, STATUS_SYSTEM, "design: out of memory for N = %d", B->N);
+    status_set(st, STATUS_MEMORY, "design: out of memory for N = %d", B->N);
     return NULL;
   }
   
@@ -509,7 +509,7 @@ Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
   if (!m || !v) {
     free(m);
     free(v);
-    status_set(st, STATUS_SYSTEM, "design: out of memory for multipliers");
+    status_set(st, STATUS_MEMORY, "design: out of memory for multipliers");
     return NULL;
   }
   m->N = B->N;
@@ -545,7 +545,7 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
       || (rc = check_point(B, G, "the gradient", st))) return rc;
   if (!(t > 0) || !isfinite(t)) t = default_step(B, G);
   double *Y = malloc(2 * (size_t) n * sizeof *Y), *Q = P ? P : Y + n;
-  if (!Y) return status_set(st, STATUS_SYSTEM, "design: out of memory");
+  if (!Y) return status_set(st, STATUS_MEMORY, "design: out of memory");
   for (int i = 0; i < n; i++) Y[i] = X[i] - t * G[i];
   if (!(rc = design_project(B, Y, Q, mult, st))) {
     double r = 0;

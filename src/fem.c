@@ -10,7 +10,7 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
   Dofs *d = calloc(1, sizeof *d);
-  if (!d) { status_set(st, STATUS_SYSTEM, "dofs: out of memory"); return NULL; }
+  if (!d) { status_set(st, STATUS_MEMORY, "dofs: out of memory"); return NULL; }
   d->ndof = 2 * m->nnodes;
   d->unknown = calloc(d->ndof, sizeof *d->unknown);
   d->contact = malloc(m->ncol * sizeof *d->contact);
@@ -20,7 +20,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   if (!d->unknown || !d->contact || !d->contact_col || !d->tangent
       || !d->tangent_col) {
     fem_dofs_free(d);
-    status_set(st, STATUS_SYSTEM, "dofs: out of memory");
+    status_set(st, STATUS_MEMORY, "dofs: out of memory");
     return NULL;
   }
   for (int side = 0; side < SIDE_COUNT; side++)
@@ -161,7 +161,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
 {
   cholmod_triplet *T = cholmod_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri,
                                                 0, CHOLMOD_REAL, cm);
-  if (!T) { status_set(st, STATUS_SYSTEM, "stiffness: out of memory"); return NULL; }
+  if (!T) { status_set(st, STATUS_MEMORY, "stiffness: out of memory"); return NULL; }
   for (int t = 0; t < m->ntri; t++) {
     int g[6];
     fem_element_dofs(m, d, t, g);
@@ -178,7 +178,7 @@ for (int r = 0; r < 6; r++)
   }
   cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
   cholmod_free_triplet(&T, cm);
-  if (!A) status_set(st, STATUS_SYSTEM, "stiffness: out of memory");
+  if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
 #line 418 "paper/fem.nw"

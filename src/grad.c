@@ -84,7 +84,7 @@ Grad_check *grad_check_new(int N, Status *st)
   if (!gc || !v) {
     free(gc);
     free(v);
-    status_set(st, STATUS_SYSTEM, "gradcheck: out of memory");
+    status_set(st, STATUS_MEMORY, "gradcheck: out of memory");
     return NULL;
   }
   gc->N = N;

@@ -176,7 +176,7 @@ static int command_optimize(Run *r, Status *st)
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
   if (refuse_coulomb(r, "optimize", st)) rc = st->code;
-  else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
     catch_signals(1);

@@ -10,7 +10,7 @@ static void mesh_place_fixed(Mesh *m);
 Mesh *mesh_new(const Problem *p, Status *st)
 {
   Mesh *m = calloc(1, sizeof *m);
-  if (!m) { status_set(st, STATUS_SYSTEM, "mesh: out of memory"); return NULL; }
+  if (!m) { status_set(st, STATUS_MEMORY, "mesh: out of memory"); return NULL; }
   
 #line 125 "paper/mesh.nw"
 m->N = p->N; m->M = p->M; m->R = p->R;
@@ -24,7 +24,7 @@ m->h = (p->b - p->a) / p->N;
   m->xy = malloc(2 * (size_t) m->nnodes * sizeof *m->xy);
   m->tri = malloc(3 * (size_t) m->ntri * sizeof *m->tri);
   if (!m->xy || !m->tri) {
-    status_set(st, STATUS_SYSTEM, "mesh: out of memory for %d nodes", m->nnodes);
+    status_set(st, STATUS_MEMORY, "mesh: out of memory for %d nodes", m->nnodes);
     mesh_free(m);
     return NULL;
   }

@@ -12,7 +12,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
   Model *md = calloc(1, sizeof *md);
-  if (!md) { status_set(st, STATUS_SYSTEM, "model: out of memory"); return NULL; }
+  if (!md) { status_set(st, STATUS_MEMORY, "model: out of memory"); return NULL; }
   md->problem = p;
   md->cm = cm;
   md->hooke = fem_hooke(p);
@@ -32,7 +32,7 @@ md->slip = calloc(nt + 1, sizeof *md->slip);
 md->fixed_point_tol = solver->tol, md->fixed_point_max = solver->max_iter;
 if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   model_free(md);
-  status_set(st, STATUS_SYSTEM, "model: out of memory for %d unknowns", n);
+  status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
 #line 170 "paper/model.nw"
@@ -77,7 +77,7 @@ static int model_coulomb(Model *md, Status *st)
 {
   int nc = md->dofs->nc, rc, steps = 0;
   double *Tn = malloc((nc + 1) * sizeof *Tn);
-  if (!Tn) return status_set(st, STATUS_SYSTEM, "coulomb: out of memory");
+  if (!Tn) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
   memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
   rc = model_state(md, st);
   md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
@@ -186,7 +186,7 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
     return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
                       "free to move; use optimizer.metric = euclidean");
   double *Scc = malloc((size_t) nc * nc * sizeof *Scc), mean = 0;
-  if (!Scc) return status_set(st, STATUS_SYSTEM, "contact stiffness: out of memory");
+  if (!Scc) return status_set(st, STATUS_MEMORY, "contact stiffness: out of memory");
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   

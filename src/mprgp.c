@@ -29,7 +29,7 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
   mp->p = malloc(n * sizeof *mp->p), mp->q = malloc(n * sizeof *mp->q);
   mp->z = malloc(n * sizeof *mp->z);
   if (!mp->p || !mp->q || !mp->z)
-    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (cgssor)");
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (cgssor)");
   return STATUS_OK;
 }
 

@@ -35,7 +35,7 @@ Newton_workspace *newton_alloc(int n, int m, Status *st)
   int p = 2 * n + 2 * (n - 1) + m, nm = n + m, mm = m > 0 ? m : 1;
   if (!w || n < 2 || m < 0) {
     free(w);
-    status_set(st, n < 2 || m < 0 ? STATUS_INPUT : STATUS_SYSTEM, "newton: %s",
+    status_set(st, n < 2 || m < 0 ? STATUS_INPUT : STATUS_MEMORY, "newton: %s",
                n < 2 || m < 0 ? "needs n >= 2 design nodes and m >= 0" : "out of memory");
     return NULL;
   }
@@ -57,7 +57,7 @@ Newton_workspace *newton_alloc(int n, int m, Status *st)
      && !!(w->Sig = gsl_matrix_alloc(mm, mm));
   if (!ok) {
     newton_free(w);
-    status_set(st, STATUS_SYSTEM, "newton: out of memory for n = %d, m = %d", n, m);
+    status_set(st, STATUS_MEMORY, "newton: out of memory for n = %d, m = %d", n, m);
     return NULL;
   }
   return w;

@@ -139,7 +139,7 @@ static int projgrad(Evaluator *ev, double *X)
   double t = ev->tau, pg;
   double *work = malloc(4 * n * sizeof *work);
   Projgrad_work w = { work, work + n, work + 2 * n, work + 3 * n };
-  if (!work) return status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (;; k++) {
     if ((rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) break;
     int stop = report_iterate(ev, k, pg);
@@ -300,7 +300,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
-if (!Linv || !g) rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+if (!Linv || !g) rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
 else if (gsl_linalg_cholesky_decomp1(&S.matrix))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -328,7 +328,7 @@ static int slsqp(Evaluator *ev, double *X)
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
   double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
   Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, X, 0, 0 };
-  if (!work) return status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
   double *y = q.metric.X0 + n, *tol = y + n, f;
   memcpy(q.metric.X0, X, n * sizeof *X);
@@ -434,7 +434,7 @@ static int newton(Evaluator *ev, double *X)
   if (!nr.qp || !nr.S) {
     newton_free(nr.qp), free(nr.S);
     if (!nr.qp) return (int) ev->st->code;      /* newton_alloc said why */
-    return status_set(ev->st, STATUS_SYSTEM, "optimiser: out of memory");
+    return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
   nr.g = nr.v + mm, nr.r = nr.g + n, nr.d = nr.r + n, nr.trial = nr.d + n, nr.Xk = nr.trial + n;
@@ -479,7 +479,7 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   Evaluator ev = { md, B, o, n, malloc(2 * n * sizeof(double)), NULL, 0, 0,
                    0, 0, model_clock(), monitor, data, rep, st, 0 };
   memset(rep, 0, sizeof *rep);
-  if (!ev.X) return status_set(st, STATUS_SYSTEM, "optimiser: out of memory");
+  if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     

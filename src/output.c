@@ -1,6 +1,10 @@
-#line 171 "paper/output.nw"
+#line 178 "paper/output.nw"
+#define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
+#include <dirent.h>
 #include <errno.h>
+#include <ftw.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,7 +12,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 212 "paper/output.nw"
+#line 224 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -24,14 +28,69 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
+#line 255 "paper/output.nw"
+static int output_remove_one(const char *path, const struct stat *sb, int flag,
+                             struct FTW *ftw)
+{
+  (void) sb, (void) flag, (void) ftw;
+  return remove(path);
+}
+
+static void output_remove_tree(const char *path)
+{
+  nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
+}
+#line 270 "paper/output.nw"
+static int output_check_dir(const char *dir, Status *st)
+{
+  struct stat sb;
+  char path[1200];
+  if (stat(dir, &sb)) return STATUS_OK;                 /* absent */
+  if (!S_ISDIR(sb.st_mode))
+    return status_set(st, STATUS_INPUT, "%s: exists and is not a folder", dir);
+  snprintf(path, sizeof path, "%s/summary.dat", dir);
+  if (!stat(path, &sb)) return STATUS_OK;
+  DIR *d = opendir(dir);
+  struct dirent *e;
+  int empty = d != NULL;
+  while (d && empty && (e = readdir(d)))
+    empty = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..");
+  if (d) closedir(d);
+  return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
+    "holds files that are not a run's (no summary.dat): choose another -o", dir);
+}
+#line 292 "paper/output.nw"
+static void output_remove_dead(const char *dir)
+{
+  char parent[1100], prefix[300], path[1400];
+  const char *slash = strrchr(dir, '/');
+  snprintf(parent, sizeof parent, "%.*s", slash ? (int) (slash - dir) : 1,
+           slash ? dir : ".");
+  snprintf(prefix, sizeof prefix, "%s.partial-", slash ? slash + 1 : dir);
+  DIR *d = opendir(*parent ? parent : "/");
+  struct dirent *e;
+  while (d && (e = readdir(d))) {
+    char *end;
+    if (strncmp(e->d_name, prefix, strlen(prefix))) continue;
+    long pid = strtol(e->d_name + strlen(prefix), &end, 10);
+    if (*end || pid <= 0 || !(kill((pid_t) pid, 0) && errno == ESRCH)) continue;
+    snprintf(path, sizeof path, "%s/%s", *parent ? parent : "", e->d_name);
+    output_remove_tree(path);
+  }
+  if (d) closedir(d);
+}
+
+#line 243 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
   snprintf(o->dir, sizeof o->dir, "%s", dir);
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
-  return output_mkdirs(o->stage, st);
+  int rc = output_check_dir(dir, st);
+  if (!rc) output_remove_dead(dir);
+  return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 239 "paper/output.nw"
+#line 316 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -41,7 +100,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 252 "paper/output.nw"
+#line 329 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -70,55 +129,44 @@ int output_close(Output *o, FILE *f, Status *st)
                       o->file[o->nfiles - 1]);
   return STATUS_OK;
 }
-#line 285 "paper/output.nw"
-static void output_remove_stage(Output *o, int unlink_files)
-{
-  char path[1300];
-  for (int k = o->nfiles - 1; k >= 0; k--) {
-    snprintf(path, sizeof path, "%s/%s", o->stage, o->file[k]);
-    if (unlink_files) unlink(path);
-    for (char *s; (s = strrchr(path, '/')) && s > path + strlen(o->stage); ) {
-      *s = '\0';
-      rmdir(path);
-    }
-  }
-  rmdir(o->stage);
-}
-
+#line 363 "paper/output.nw"
 int output_commit(Output *o, Status *st)
 {
-  char from[1300], to[1300];
-  for (int k = 0; k < o->nfiles; k++) {
-    snprintf(from, sizeof from, "%s/%s", o->stage, o->file[k]);
-    snprintf(to, sizeof to, "%s/%s", o->dir, o->file[k]);
-    *strrchr(to, '/') = '\0';
-    if (output_mkdirs(to, st)) { output_abort(o); return st ? st->code : 1; }
-    snprintf(to, sizeof to, "%s/%s", o->dir, o->file[k]);
-    if (rename(from, to)) {
-      status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s", to,
-                 strerror(errno));
-      output_abort(o);
-      return STATUS_SYSTEM;
-    }
+  char old[1200];
+  struct stat sb;
+  int had = !stat(o->dir, &sb);
+  snprintf(old, sizeof old, "%s.old-%ld", o->dir, (long) getpid());
+  if (had && rename(o->dir, old)) {
+    status_set(st, STATUS_SYSTEM, "%s: cannot move the old run aside: %s",
+               o->dir, strerror(errno));
+    output_abort(o);
+    return STATUS_SYSTEM;
   }
-  output_remove_stage(o, 0);
+  if (rename(o->stage, o->dir)) {
+    status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s", o->dir,
+               strerror(errno));
+    if (had) rename(old, o->dir);
+    output_abort(o);
+    return STATUS_SYSTEM;
+  }
+  if (had) output_remove_tree(old);
   return STATUS_OK;
 }
 
-void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 324 "paper/output.nw"
+void output_abort(Output *o) { output_remove_tree(o->stage); }
+#line 391 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 337 "paper/output.nw"
+#line 404 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 346 "paper/output.nw"
+#line 413 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -126,7 +174,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 356 "paper/output.nw"
+#line 423 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -137,7 +185,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 369 "paper/output.nw"
+#line 436 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -153,19 +201,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 393 "paper/output.nw"
+#line 460 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 384 "paper/output.nw"
+#line 451 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 402 "paper/output.nw"
+#line 469 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -179,7 +227,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 418 "paper/output.nw"
+#line 485 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -197,7 +245,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 477 "paper/output.nw"
+#line 544 "paper/output.nw"
 static void output_vtu_friction(FILE *f, const Model *md)
 {
   const Dofs *d = md->dofs;
@@ -210,7 +258,7 @@ static void output_vtu_friction(FILE *f, const Model *md)
   }
   fprintf(f, "</DataArray>\n");
 }
-#line 439 "paper/output.nw"
+#line 506 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
 {
   const Mesh *m = md->mesh;
@@ -228,7 +276,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
   for (int t = 0; t < m->ntri; t++)
     fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
   
-#line 461 "paper/output.nw"
+#line 528 "paper/output.nw"
 fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
 for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
 fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
@@ -241,10 +289,10 @@ for (int k = 0; k < m->nnodes; k++)
 fprintf(f, "</DataArray>\n");
 if (md->dofs->nt) output_vtu_friction(f, md);
 fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 456 "paper/output.nw"
+#line 523 "paper/output.nw"
   return output_close(o, f, st);
 }
-#line 492 "paper/output.nw"
+#line 559 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -257,7 +305,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 536 "paper/output.nw"
+#line 603 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -270,7 +318,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 512 "paper/output.nw"
+#line 579 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -290,7 +338,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 552 "paper/output.nw"
+#line 619 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -305,7 +353,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 575 "paper/output.nw"
+#line 642 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -332,7 +380,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 701 "paper/output.nw"
+#line 768 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -343,7 +391,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 609 "paper/output.nw"
+#line 676 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -379,7 +427,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 648 "paper/output.nw"
+#line 715 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -400,7 +448,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 679 "paper/output.nw"
+#line 746 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -419,7 +467,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 717 "paper/output.nw"
+#line 784 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

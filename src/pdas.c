@@ -1,4 +1,4 @@
-#line 184 "paper/pdas.nw"
+#line 185 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,12 +7,21 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 310 "paper/pdas.nw"
+#line 322 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 318 "paper/pdas.nw"
+#line 310 "paper/pdas.nw"
+/* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
+static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
+                               Status *st)
+{
+  if (cm->status == CHOLMOD_OUT_OF_MEMORY)
+    return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
+  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
+}
+#line 330 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 703 "paper/pdas.nw"
+#line 714 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -21,12 +30,11 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   cholmod_common *cm = w->cm;
   if (!cholmod_solve2(sys1, pd->L, *v, NULL, &pd->sol, NULL, &pd->Y, &pd->E, cm)
       || !cholmod_solve2(sys2, pd->L, pd->sol, NULL, v, NULL, &pd->Y, &pd->E, cm))
-    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to solve "
-                      "(CHOLMOD status %d)", cm->status);
+    return pdas_cholmod_failed(cm, "pdas: CHOLMOD failed to solve", st);
   return STATUS_OK;
 }
 
-#line 253 "paper/pdas.nw"
+#line 254 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -43,22 +51,21 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   cm->postorder = postorder;
   free(last), free(perm);
   
-#line 273 "paper/pdas.nw"
+#line 274 "paper/pdas.nw"
 pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
 if (!ok || !pd->rhs || !pd->Lb)
-  return status_set(st, STATUS_SYSTEM, "qp_alloc: CHOLMOD failed to "
-                    "analyse A (CHOLMOD status %d)", cm->status);
+  return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
 const int *P = pd->Ls->Perm;
 for (int t = 0; t < w->nk; t++)
   if ((pd->tc[t] = w->bnd[P[pd->first + t]]) < 0)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 269 "paper/pdas.nw"
+#line 270 "paper/pdas.nw"
 }
 
-#line 224 "paper/pdas.nw"
+#line 225 "paper/pdas.nw"
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -75,7 +82,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   pd->S = malloc(nc * nc * sizeof *pd->S), pd->M = malloc(nc * nc * sizeof *pd->M);
   if (!pd->K.x || !pd->act || !pd->tc || !pd->fr || !pd->f || !pd->y || !pd->r
       || !pd->Lcc || !pd->S || !pd->M)
-    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (pdas, "
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
                       "nc = %d)", w->nk);
   memcpy(pd->K.x, A->x, nz * sizeof(double));
   pd->first = w->n - w->nk;
@@ -94,7 +101,7 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 199 "paper/pdas.nw"
+#line 200 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -111,7 +118,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 405 "paper/pdas.nw"
+#line 416 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -125,7 +132,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 425 "paper/pdas.nw"
+#line 436 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -136,7 +143,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 445 "paper/pdas.nw"
+#line 456 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -145,7 +152,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 435 "paper/pdas.nw"
+#line 446 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -154,7 +161,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 458 "paper/pdas.nw"
+#line 469 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -171,7 +178,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 478 "paper/pdas.nw"
+#line 489 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -192,7 +199,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 381 "paper/pdas.nw"
+#line 393 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -205,8 +212,7 @@ static int condense(Qp_workspace *w, Status *st)
   ok = pd->L && cholmod_factorize(&pd->K, pd->L, cm) && cm->status >= CHOLMOD_OK;
   cm->print = print, cm->final_ll = final_ll;
   if (!ok)
-    return status_set(st, STATUS_SYSTEM, "pdas: CHOLMOD failed to factorise "
-                      "(CHOLMOD status %d)", cm->status);
+    return pdas_cholmod_failed(cm, "pdas: CHOLMOD failed to factorise", st);
   if (pd->L->minor < pd->L->n) return SINGULAR;
   read_trailing_block(w);
   schur_complement(w);
@@ -215,7 +221,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 517 "paper/pdas.nw"
+#line 528 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -223,7 +229,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 540 "paper/pdas.nw"
+#line 551 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -235,7 +241,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 524 "paper/pdas.nw"
+#line 535 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -246,7 +252,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 558 "paper/pdas.nw"
+#line 569 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -258,13 +264,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 572 "paper/pdas.nw"
+#line 583 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 586 "paper/pdas.nw"
+#line 597 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -281,7 +287,7 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 577 "paper/pdas.nw"
+#line 588 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double k = fmax(qp_ratio(sqrt(tn), sf),
                   fmax(qp_ratio(sqrt(inf), su),
@@ -289,7 +295,7 @@ for (int c = 0; c < w->nk; c++) {
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
 
-#line 611 "paper/pdas.nw"
+#line 622 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -319,7 +325,7 @@ static int predict_active_set(Qp_workspace *w)
   return same;
 }
 
-#line 660 "paper/pdas.nw"
+#line 671 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -338,7 +344,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 685 "paper/pdas.nw"
+#line 696 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -354,14 +360,14 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 322 "paper/pdas.nw"
+#line 334 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 342 "paper/pdas.nw"
+#line 354 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) {
   for (int c = 0; c < w->nk; c++) pd->y[c] = w->x[w->ik[c]];
@@ -370,7 +376,7 @@ if (pd->warm) {
   predict_active_set(w);
   pd->stepped = 1;
 }
-#line 328 "paper/pdas.nw"
+#line 340 "paper/pdas.nw"
   }
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
@@ -381,7 +387,7 @@ if (pd->warm) {
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 361 "paper/pdas.nw"
+#line 373 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -390,10 +396,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
   "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
-#line 338 "paper/pdas.nw"
+#line 350 "paper/pdas.nw"
 }
 
-#line 724 "paper/pdas.nw"
+#line 734 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -410,7 +416,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 743 "paper/pdas.nw"
+#line 753 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -418,7 +424,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 762 "paper/pdas.nw"
+#line 772 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -427,10 +433,10 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   int *fr = malloc((size_t) (nk - nc + 1) * sizeof *fr);
   double *SFF = malloc((size_t) (nk - nc) * (nk - nc) * sizeof *SFF + 1);
   double *SFn = malloc((size_t) (nk - nc) * nc * sizeof *SFn + 1);
-  if (!fr || !SFF || !SFn) code = status_set(st, STATUS_SYSTEM, "qp_schur: out of memory");
+  if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 780 "paper/pdas.nw"
+#line 790 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -453,11 +459,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 773 "paper/pdas.nw"
+#line 783 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 813 "paper/pdas.nw"
+#line 823 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

@@ -145,7 +145,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   w->flo = malloc(nk * sizeof *w->flo), w->fhi = malloc(nk * sizeof *w->fhi);
   if (!w->bnd || !w->lo || !w->d || !w->x || !w->g || !w->T || !w->ik
       || !w->pos || !w->flo || !w->fhi)
-    return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory (n = %d)",
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)",
                       w->n);
   for (int i = 0; i < w->n; i++) w->bnd[i] = -1;
   for (int k = 0; k < w->nk; k++) {
@@ -173,7 +173,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     }
   for (int i = 0; !bad && i < w->n; i++) bad = next[i] != Ap[i + 1];
   free(next);
-  if (oom) return status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory");
+  if (oom) return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory");
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
@@ -184,7 +184,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
 {
   if (check_problem(qp, opt, cm, st)) return NULL;
   Qp_workspace *w = calloc(1, sizeof *w);
-  if (!w) { status_set(st, STATUS_SYSTEM, "qp_alloc: out of memory"); return NULL; }
+  if (!w) { status_set(st, STATUS_MEMORY, "qp_alloc: out of memory"); return NULL; }
   w->qp = qp, w->opt = *opt, w->cm = cm;
   w->n = (int) qp->A->ncol, w->nc = qp->nc, w->nk = qp->nc + qp->nt;
   int code = alloc_common(w, st);

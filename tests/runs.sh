@@ -1,0 +1,76 @@
+# runs.sh: what a run leaves behind and how it ends (issue "a user's first
+# hour"): a problem too large for the memory is refused before any work
+# (exit 5), memory running out on the way is exit 5 too; Ctrl-C or SIGTERM
+# during optimize writes every file of the best design so far, with
+# stop_reason interrupted, exit 130 and no staging folder; an output folder
+# holds exactly one run's files and is replaced as a whole; a folder that
+# is not a run's is never replaced; a killed run's staging folder goes;
+# gradcheck reports progress; --matrix-market works with every command.
+. tests/lib.sh
+ex=data/example-5.1.scene
+
+# ---- memory ------------------------------------------------------------------
+for N in 100000 2000000; do
+  $BIN solve $ex -o $TMP/N$N -s design.N=$N >/dev/null 2>$TMP/err
+  check "design.N = $N: refused before any work, exit 5, one line with the estimate and the memory" \
+    clean_failure $? 5 $TMP/err $TMP/N$N 'needs about [0-9.e+]+ GB, more than the [0-9.]+ GB this process may use'
+done
+( ulimit -v 400000; $BIN solve $ex -o $TMP/ulimit -s mesh.refine=64 >/dev/null 2>$TMP/err )
+check "ulimit -v 400 MB, N = 1024 (0.85 GB estimated): refused by the estimate, exit 5" \
+  clean_failure $? 5 $TMP/err $TMP/ulimit 'more than the 0.41 GB this process may use'
+# 900 MB passes the estimate but not the allocations: out of memory on the way
+( ulimit -v 900000; $BIN solve $ex -o $TMP/oom -s mesh.refine=64 >/dev/null 2>$TMP/err )
+check "ulimit -v 900 MB, N = 1024: memory runs out on the way, exit 5, one line, nothing written" \
+  clean_failure $? 5 $TMP/err $TMP/oom 'out of memory'
+
+# ---- interrupts ------------------------------------------------------------------
+# SLSQP on N = 256 takes about 10 s: the signal comes after the first
+# iterations are printed.
+for sig in INT TERM; do
+  d=$TMP/sig$sig
+  $BIN optimize $ex -o $d -s mesh.refine=16 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
+  pid=$!
+  for t in $(seq 300); do grep -q '^   2  E' $TMP/out && break; sleep 0.1; done
+  kill -$sig $pid; wait $pid; rc=$?
+  check "SIG$sig during optimize: exit 130, one line saying so" \
+    holds 'rc == 130 && lines == 1' rc=$rc lines="$(wc -l < $TMP/err)"
+  check "SIG$sig: the files of the best design so far, stop_reason interrupted ($(value stop_reason $d), iteration $(value iterations $d))" \
+    test "$(value stop_reason $d)" = interrupted -a -s $d/final/contact.dat -a -s $d/multipliers.dat \
+      -a "$(value iterations $d)" -ge 2
+  check "SIG$sig: the last iterate recorded is the final design (iterates.dat, final/shape.dat)" \
+    test "$(awk 'NF == 4 { x[$2] = $4 } END { for (i = 0; i < 257; i++) printf "%.10e\n", x[i] }' $d/iterates.dat | md5sum)" \
+       = "$(awk 'NR > 1 { printf "%.10e\n", $2 }' $d/final/shape.dat | md5sum)"
+  check "SIG$sig: no staging folder is left" test -z "$(ls -d $d.partial-* 2>/dev/null)"
+done
+
+# ---- output folders ---------------------------------------------------------------
+d=$TMP/folder
+$BIN optimize $ex -o $d >/dev/null 2>&1 && $BIN solve $ex -o $d >/dev/null 2>$TMP/err
+check "a solve into an optimisation's folder replaces it: no history.dat, no final/ beside the new files" \
+  test -s $d/summary.dat -a ! -e $d/history.dat -a ! -e $d/final
+mkdir -p $TMP/mine && echo precious > $TMP/mine/notes.txt
+$BIN solve $ex -o $TMP/mine >/dev/null 2>$TMP/err; rc=$?
+check "a folder that is not a run's is refused (exit 2, one line) and left alone" \
+  holds 'rc == 2 && lines == 1 && kept' rc=$rc lines="$(wc -l < $TMP/err)" \
+    kept=$(grep -q precious $TMP/mine/notes.txt && echo 1 || echo 0)
+dead=999999; while kill -0 $dead 2>/dev/null; do dead=$((dead - 1)); done
+mkdir -p $d.partial-$dead/final $d.partial-$$ && touch $d.partial-$dead/final/x
+$BIN solve $ex -o $d >/dev/null 2>&1
+check "a dead run's staging folder is removed by the next run; a live one's is not" \
+  test ! -e $d.partial-$dead -a -d $d.partial-$$
+rmdir $d.partial-$$
+
+# ---- gradcheck progress, --matrix-market ------------------------------------------------
+$BIN gradcheck $ex -o $TMP/gc -s mesh.refine=8 --matrix-market $TMP/gc.mtx >$TMP/out 2>$TMP/err
+check "gradcheck at N = 128 prints progress lines, the last at node 129 of 129" \
+  test "$(grep -c '^gradcheck: node ' $TMP/out)" -ge 2 -a \
+       "$(grep '^gradcheck: node ' $TMP/out | tail -1 | awk '{ print $3, $5 }')" = "129 129,"
+$BIN solve $ex -o $TMP/s128 -s mesh.refine=8 --matrix-market $TMP/s.mtx >/dev/null 2>&1
+check "gradcheck --matrix-market writes A at the design checked: the solve's matrix" cmp -s $TMP/gc.mtx $TMP/s.mtx
+$BIN optimize $ex -o $TMP/opt --matrix-market $TMP/opt.mtx >/dev/null 2>&1
+$BIN solve $ex -o $TMP/s16 --matrix-market $TMP/s16.mtx >/dev/null 2>&1
+check "optimize --matrix-market writes A at the final design: a Matrix Market file of the same size, other values" \
+  test "$(head -1 $TMP/opt.mtx | cut -c1-14)" = "%%MatrixMarket" -a \
+       "$(grep -v '^%' $TMP/opt.mtx | head -1)" = "$(grep -v '^%' $TMP/s16.mtx | head -1)" -a \
+       "$(md5sum < $TMP/opt.mtx)" != "$(md5sum < $TMP/s16.mtx)"
+finish
