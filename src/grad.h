@@ -4,11 +4,15 @@
 #include "status.h"
 #include "model.h"
 
+/* STATUS_INPUT, naming origin and the command that needs it, when E has
+   no gradient: a Coulomb state minimises no energy */
+int grad_available(const Problem *p, const char *origin, const char *command,
+                   Status *st);
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
    model solved last.  It is a checked error to call it before a solve,
    or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 63 "paper/grad.nw"
+#line 67 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   double *G;      /* N+1: dE/dX_i by (4.8) at X */
@@ -28,5 +32,5 @@ void grad_check_free(Grad_check *gc);
    NULL. */
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
-#line 44 "paper/grad.nw"
+#line 48 "paper/grad.nw"
 #endif

@@ -1,6 +1,5 @@
-#line 16 "paper/main.nw"
+#line 18 "paper/main.nw"
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,7 +9,8 @@
 #include "scene.h"
 #include "output.h"
 #include "usage.h"
-#line 112 "paper/main.nw"
+#include "interrupt.h"
+#line 123 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -40,7 +40,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 153 "paper/main.nw"
+#line 164 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -71,7 +71,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 200 "paper/main.nw"
+#line 211 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -88,15 +88,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 221 "paper/main.nw"
-static int refuse_coulomb(const Run *r, const char *command, Status *st)
-{
-  if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
-  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: %s needs "
-                    "the gradient of an energy, and a Coulomb state minimises "
-                    "none (contact.model = tresca has one)", r->s.path, command);
-}
-#line 233 "paper/main.nw"
+#line 236 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -107,11 +99,11 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 253 "paper/main.nw"
+#line 256 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
-  if (refuse_coulomb(r, "gradcheck", st)) return st->code;
+  if (grad_available(&r->s.problem, r->s.path, "gradcheck", st)) return st->code;
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
   double last = model_clock();
   int rc = gc ? grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &last, st)
@@ -128,20 +120,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 284 "paper/main.nw"
-static volatile sig_atomic_t interrupted;  /* the signal received, or 0 */
-static void note_signal(int sig) { interrupted = sig; }
-static void catch_signals(int on)
-{
-  struct sigaction sa;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on ? note_signal : SIG_DFL;
-  sa.sa_flags = SA_RESETHAND;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, NULL);
-  sigaction(SIGTERM, &sa, NULL);
-}
-#line 307 "paper/main.nw"
+#line 329 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -149,9 +128,9 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
          p->seconds);
   fflush(stdout);
   output_history_add(data, p, X);
-  return interrupted != 0;
+  return interrupt_signal() != 0;
 }
-#line 323 "paper/main.nw"
+#line 345 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -164,7 +143,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 342 "paper/main.nw"
+#line 364 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -175,11 +154,11 @@ static int command_optimize(Run *r, Status *st)
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
-  if (refuse_coulomb(r, "optimize", st)) rc = st->code;
+  if (grad_available(&r->s.problem, r->s.path, "optimize", st)) rc = st->code;
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
-    catch_signals(1);
+    interrupt_catch(1);
     if (!(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
@@ -191,7 +170,7 @@ static int command_optimize(Run *r, Status *st)
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
     if (!rc && r->a->matrix_market)
       rc = output_matrix_market(r->a->matrix_market, r->md, st);
-    catch_signals(0);
+    interrupt_catch(0);
     rc = output_end(&o, rc, st);
   }
   if (!rc)
@@ -202,7 +181,7 @@ static int command_optimize(Run *r, Status *st)
   if (!rc && !strcmp(rep.stop_reason, "interrupted"))
     rc = status_set(st, STATUS_INTERRUPTED, "%s: interrupted by signal %d at "
                     "iteration %d: the files of the best design so far are in %s/",
-                    r->s.path, (int) interrupted, rep.iterations, r->dir);
+                    r->s.path, interrupt_signal(), rep.iterations, r->dir);
   else if (!rc && strcmp(rep.stop_reason, "converged"))
     rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected gradient "
                     "%.2e > optimizer.tol = %.0e after %d iterations; the files of the last "
@@ -213,7 +192,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 398 "paper/main.nw"
+#line 420 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

@@ -24,30 +24,41 @@ const char usage_solve[] =
   "DIR receives summary.dat (energy, kkt_residual, iterations,\n"
   "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat,\n"
   "nodes.dat, triangles.dat and solution.vtu (ParaView).\n"
-  "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write.\n";
+  "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write,\n"
+  "5 too large for the memory (refused before any work) or out of memory.\n";
 
 const char usage_gradcheck[] =
   "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
+  "                  [--matrix-market FILE]\n"
   "Compare the gradient (4.8) at the scene's initial design with finite\n"
   "differences of E (steps C0 * 1e-2 .. 1e-6; one-sided where alpha_i = 0)\n"
   "and print the largest relative error |G - G_fd| / max|G|.\n\n"
   "  -o DIR                output folder (default: out/NAME-gradcheck)\n"
   "  -s section.key=value  override a key of the scene (repeatable)\n"
+  "  --matrix-market FILE  also write A(X) at the design checked\n"
   "  -h, --help            this text\n\n"
   "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
-  "difference, relative error) and summary.dat (max_relative_error, ...).\n";
+  "difference, relative error) and summary.dat (max_relative_error, ...).\n"
+  "Prints its progress at most once a second.\n"
+  "Exit status: 0 success, 2 bad input, 3 a state solve failed, 4 cannot\n"
+  "write, 5 out of memory.\n";
 
 const char usage_optimize[] =
   "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
+  "                  [--matrix-market FILE]\n"
   "Minimise the total potential energy E over the design set B (4.4) from\n"
   "the scene's initial design (projected onto B if outside), by\n"
   "optimizer.method = newton (default), slsqp or projgrad (Algorithm 4.1).\n"
   "Prints a line per iteration: E, projected gradient, contact, seconds.\n\n"
   "  -o DIR                output folder (default: out/NAME-optimize)\n"
   "  -s section.key=value  override a key of the scene (repeatable)\n"
+  "  --matrix-market FILE  also write A(X) at the final design\n"
   "  -h, --help            this text\n\n"
   "DIR receives history.dat, iterates.dat, summary.dat (energy, iterations,\n"
   "evaluations, projected_gradient, stop_reason, ...), multipliers.dat, and\n"
   "initial/ and final/ with the files of solve.\n"
+  "Ctrl-C or SIGTERM stops it at the next accepted iterate and writes the\n"
+  "files of that design (stop_reason interrupted); a second one kills it.\n"
   "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
-  "last design accepted are written), 4 cannot write.\n";
+  "last design accepted are written), 4 cannot write, 5 out of memory,\n"
+  "130 interrupted (the files of the best design so far are written).\n";
