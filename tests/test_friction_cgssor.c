@@ -17,37 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "setup.h"
-#include "scene.h"
-#include "model.h"
+#include "case.h"
 
-#define EX51 "data/example-5.1.scene"
-
-typedef struct {
-  Scene s;
-  cholmod_common cm;
-  Model *md;
-  int rc;
-  Status st;
-} Case;
-
-/* load EX51 with the overrides, build its model, solve at alpha0 */
-static int open_case(Case *c, int n, char **ov)
-{
-  memset(c, 0, sizeof *c);
-  test_start(&c->cm);
-  if ((c->rc = scene_load(&c->s, EX51, n, ov, &c->st))) return c->rc;
-  if (!(c->md = model_new(&c->s.problem, &c->s.solver, &c->cm, &c->st)))
-    return c->rc = c->st.code;
-  return c->rc = model_solve(c->md, c->s.alpha0, &c->st);
-}
-
-static void close_case(Case *c)
-{
-  model_free(c->md);
-  if (c->s.alpha0) scene_free(&c->s);
-  cholmod_finish(&c->cm);
-}
 
 /* the case solved by pdas (k = 0) and by cgssor (k = 1): the overrides
    ov and the method's */
@@ -60,20 +31,6 @@ static void open_pair(Case c[2], int n, char **ov)
     all[n] = method[k];
     open_case(&c[k], n + 1, all);
   }
-}
-
-static double max_abs(const double *v, int n)
-{
-  double m = 0;
-  for (int i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
-  return m;
-}
-
-static double max_diff(const double *u, const double *v, int n)
-{
-  double m = 0;
-  for (int i = 0; i < n; i++) m = fmax(m, fabs(u[i] - v[i]));
-  return m;
 }
 
 /* nodes in contact (Q = lo, exactly) and sticking (u1 = 0, exactly) */
