@@ -8,7 +8,7 @@
 #include "scene.h"
 #include "output.h"
 #include "usage.h"
-#line 108 "paper/main.nw"
+#line 128 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -38,7 +38,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 149 "paper/main.nw"
+#line 169 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -65,7 +65,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 183 "paper/main.nw"
+#line 203 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -82,7 +82,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 204 "paper/main.nw"
+#line 224 "paper/main.nw"
 static int refuse_coulomb(const Run *r, const char *command, Status *st)
 {
   if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
@@ -90,7 +90,7 @@ static int refuse_coulomb(const Run *r, const char *command, Status *st)
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
-#line 221 "paper/main.nw"
+#line 241 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -104,7 +104,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 245 "paper/main.nw"
+#line 265 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -113,7 +113,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 260 "paper/main.nw"
+#line 280 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -126,7 +126,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 279 "paper/main.nw"
+#line 299 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -167,7 +167,21 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 327 "paper/main.nw"
+#line 350 "paper/main.nw"
+static int command_plain(int argc, char **argv)
+{
+  int latex = argc == 3 && !strcmp(argv[2], "--latex");
+  if (!strcmp(argv[1], "--version")) printf("contactopt %s\n", CONTACTOPT_VERSION);
+  else if (strcmp(argv[1], "keys")) return -1;
+  else if (argc > 2 && (!strcmp(argv[2], "-h") || !strcmp(argv[2], "--help")))
+    fputs(usage_keys, stdout);
+  else if (argc > 3 || (argc == 3 && !latex)) {
+    fprintf(stderr, "contactopt: keys: %s: unknown option (try --help)\n", argv[2]);
+    return STATUS_INPUT;
+  } else scene_keys_print(stdout, latex);
+  return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
+}
+#line 371 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -184,7 +198,8 @@ int main(int argc, char **argv)
   Status st = { STATUS_OK, "" };
   Args a;
   const Command *c = NULL;
-  int help = 0;
+  int help = 0, plain = argc > 1 ? command_plain(argc, argv) : -1;
+  if (plain >= 0) return plain;
   for (size_t k = 0; argc > 1 && k < sizeof commands / sizeof *commands; k++)
     if (!strcmp(commands[k].name, argv[1])) c = &commands[k];
   for (int k = 1; k < argc; k++)
