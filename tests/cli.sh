@@ -39,6 +39,16 @@ check "contact.dat: every gap >= 0 and every contact force >= -1e-12 max T" \
 check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $OLDPWD/$scene d/x.scene &&
   $OLDPWD/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
 
+# one override switches a side, the contact law or the initial shape: the
+# file's keys that the new word makes meaningless are dropped
+$BIN solve $scene -o $TMP/free -s top.bc=free > /dev/null 2> $TMP/err; rc=$?
+check "solve -s top.bc=free alone: exit 0, no load, E = 0 ($(cat $TMP/err))" \
+  sh -c "[ $rc -eq 0 ] && [ \"\$(awk '\$1 == \"energy\" { print \$2 }' $TMP/free/summary.dat)\" = 0 ]"
+$BIN solve data/example-5.1-tresca.scene -o $TMP/coulomb -s contact.model=coulomb \
+  -s contact.friction=0.2 > /dev/null 2> $TMP/err; rc=$?
+check "solve -s contact.model=coulomb on the Tresca scene drops its g: exit 0 ($(cat $TMP/err))" \
+  sh -c "[ $rc -eq 0 ] && grep -q '^contact coulomb' $TMP/coulomb/summary.dat"
+
 # bad input: status 2, one line naming the file, no output folder
 bad() { # description expected-words... -- arguments
   desc=$1; shift; words=""
@@ -57,6 +67,8 @@ bad "the schur metric with Algorithm 4.1" optimizer.metric schur slsqp -- $scene
 bad "an unknown metric" optimizer.metric sobolev -- $scene -s optimizer.metric=sobolev
 bad "a metric with the Newton method" optimizer.metric "no effect" newton -- $scene \
   -s optimizer.method=newton -s optimizer.metric=schur
+bad "a key of an override that the switch makes meaningless" top.P2 "no effect" -- $scene \
+  -s top.bc=free -s top.P2=1e6
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 printf '[geometry\na = 0\n' > $TMP/broken.scene

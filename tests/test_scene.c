@@ -195,6 +195,51 @@ static void test_overrides(void)
   }
 }
 
+/* an override of a selector drops the file's keys that its word makes
+   meaningless; keys given by overrides are still refused */
+static void test_switching(void)
+{
+  char *top_free[] = {"top.bc=free"}, *top_del[] = {"top.bc="};
+  char *coulomb[] = {"contact.model=coulomb", "contact.friction=0.2"};
+  char *line[] = {"design.initial=line", "design.line_start=0",
+                  "design.line_end=0.05"};
+  char *newton[] = {"optimizer.method=newton"};
+  char *p2_after[] = {"top.bc=free", "top.P2=1e6"};
+  char *p2_before[] = {"top.P2=1e6", "top.bc=free"};
+  char text[4096], path[256];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, top_free, &st) == 0
+            && s.problem.side[SIDE_TOP].kind == BC_FREE,
+            "-s top.bc=free alone unloads the top of 5.1: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, top_del, &st) == 0
+            && s.problem.side[SIDE_TOP].kind == BC_FREE,
+            "-s top.bc= (deleted) switches to the default, free: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1-tresca.scene", 2, coulomb, &st) == 0
+            && s.problem.contact == CONTACT_COULOMB && s.problem.friction == 0.2,
+            "-s contact.model=coulomb drops the file's g: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1.scene", 3, line, &st) == 0
+            && strcmp(s.initial, "line") == 0 && s.alpha0[16] == 0.05,
+            "-s design.initial=line drops the file's arc_*: %s", st.msg))
+    scene_free(&s);
+  edit(text, sizeof text, "\nP2 = -5.75e8\n",
+       "\nP2 = -5.75e8\n[optimizer]\nmethod = slsqp\nmetric = euclidean\n");
+  write_file("metric.scene", text, path, sizeof path);
+  if (check(scene_load(&s, path, 1, newton, &st) == 0
+            && s.optimizer.method == OPT_NEWTON,
+            "-s optimizer.method=newton drops the file's metric: %s", st.msg))
+    scene_free(&s);
+  expect("a key given by an override after the switch is refused",
+         "data/example-5.1.scene", 2, p2_after, "(-s top.P2=1e6): top.P2",
+         "no effect with bc = free");
+  expect("a key given by an override before the switch is refused",
+         "data/example-5.1.scene", 2, p2_before, "(-s top.P2=1e6): top.P2",
+         "no effect with bc = free");
+}
+
 /* initial = file: comments, blank lines, two columns, relative path */
 static void test_shape_file(void)
 {
@@ -500,6 +545,7 @@ int main(void)
   test_example_5_1();
   test_example_5_2();
   test_overrides();
+  test_switching();
   test_shape_file();
   test_syntax_errors();
   test_number_errors();
