@@ -1,4 +1,5 @@
-#line 286 "paper/scene.nw"
+#line 289 "paper/scene.nw"
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -11,12 +12,12 @@
 #include <ini.h>
 #include "design.h"
 #include "scene.h"
-#line 324 "paper/scene.nw"
+#line 328 "paper/scene.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
 static const char *const initial_names[] = {"arc", "line", "constant",
   "file", NULL};
-#line 331 "paper/scene.nw"
+#line 335 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -25,7 +26,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 344 "paper/scene.nw"
+#line 348 "paper/scene.nw"
 /* append s to the string buf of size bytes, cut to fit */
 static void cat(char *buf, size_t size, const char *s)
 {
@@ -48,7 +49,7 @@ static const char *name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 373 "paper/scene.nw"
+#line 377 "paper/scene.nw"
 /* buf = x in %g with the fewest digits that read back as x exactly, its
    exponent without + and leading zeros (2.15e11, 1e-6) */
 static const char *shortest(double x, char *buf, size_t size)
@@ -68,7 +69,7 @@ static const char *shortest(double x, char *buf, size_t size)
   }
   return buf;
 }
-#line 401 "paper/scene.nw"
+#line 405 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -90,7 +91,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else shortest(d.tol, buf, size);
   return buf;
 }
-#line 430 "paper/scene.nw"
+#line 434 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -119,10 +120,10 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 590 "paper/scene.nw"
+#line 594 "paper/scene.nw"
 static const Key keys[] = {
   
-#line 464 "paper/scene.nw"
+#line 468 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -161,9 +162,9 @@ static const Key keys[] = {
 {"design", "file", KEY_TEXT, .at = AT(shape_file), .unit = "-",
  .selector = "initial", .when = "file", .accepted = "N + 1 rows",
  .meaning = "a shape file, relative to the scene's folder"},
-#line 592 "paper/scene.nw"
+#line 596 "paper/scene.nw"
   
-#line 505 "paper/scene.nw"
+#line 509 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -179,9 +180,9 @@ static const Key keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 593 "paper/scene.nw"
+#line 597 "paper/scene.nw"
   
-#line 525 "paper/scene.nw"
+#line 529 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -203,9 +204,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 594 "paper/scene.nw"
+#line 598 "paper/scene.nw"
   
-#line 550 "paper/scene.nw"
+#line 554 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "finite", .meaning = "the body force, x1 component"},
 {"body_force", "F2", KEY_REAL, .at = AT(problem.F[1]), .unit = "N/m^3",
@@ -218,9 +219,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "friction", KEY_REAL, .at = AT(problem.friction), .unit = "1",
  .selector = "model", .when = "coulomb", .accepted = ">= 0",
  .meaning = "Coulomb's coefficient of friction"},
-#line 595 "paper/scene.nw"
+#line 599 "paper/scene.nw"
   
-#line 565 "paper/scene.nw"
+#line 569 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -243,10 +244,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "max_iter", KEY_INT, .at = AT(optimizer.max_iter),
  .unit = "-", .by = optimizer_default, .selector = "method",
  .accepted = ">= 1", .meaning = "iteration limit of the optimiser"},
-#line 596 "paper/scene.nw"
+#line 600 "paper/scene.nw"
 };
 enum { NKEYS = sizeof keys / sizeof keys[0] };
-#line 602 "paper/scene.nw"
+#line 606 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 static const Key *key_find(const char *sec, const char *key)
 {
@@ -265,7 +266,7 @@ static int section_known(const char *sec)
     if (strcmp(keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 625 "paper/scene.nw"
+#line 629 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 static const char *key_names(const char *sec, char *buf, size_t size)
 {
@@ -281,7 +282,7 @@ static const char *key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 644 "paper/scene.nw"
+#line 648 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 static int key_means(const Key *k, const char *w)
 {
@@ -293,7 +294,7 @@ static int key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 667 "paper/scene.nw"
+#line 671 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)NKEYS <= (int)TABLE_MAX, "a scene's values fit the loader");
 
@@ -303,7 +304,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 682 "paper/scene.nw"
+#line 686 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -317,13 +318,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 713 "paper/scene.nw"
+#line 717 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 723 "paper/scene.nw"
+#line 727 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -342,7 +343,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 745 "paper/scene.nw"
+#line 749 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -350,7 +351,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 756 "paper/scene.nw"
+#line 760 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -360,7 +361,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 769 "paper/scene.nw"
+#line 773 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -380,7 +381,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 798 "paper/scene.nw"
+#line 802 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -388,7 +389,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   char where[640], list[256];
   origin(L, L->override, where, sizeof where);
   
-#line 819 "paper/scene.nw"
+#line 823 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -398,7 +399,7 @@ if (!section_known(sec))
 if (!key_find(sec, key))
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, key_names(sec, list, sizeof list));
-#line 805 "paper/scene.nw"
+#line 809 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -409,7 +410,7 @@ if (!key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 832 "paper/scene.nw"
+#line 836 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -419,7 +420,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 846 "paper/scene.nw"
+#line 850 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -430,7 +431,39 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 876 "paper/scene.nw"
+#line 902 "paper/scene.nw"
+/* tell a NUL byte on the current line */
+static int nul_byte(Loader *L)
+{
+  return fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
+              "UTF-8, not UTF-16)", L->path, L->line);
+}
+#line 922 "paper/scene.nw"
+/* whether buf, the start of a line, is or has begun a comment */
+static int in_comment(const char *buf, int line)
+{
+  const char *p = buf;
+  if (line == 1 && strncmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
+  p += strspn(p, " \t\r\v\f");
+  if (*p == ';' || *p == '#') return 1;
+  for (; *p; p++)
+    if (*p == ';' && isspace((unsigned char)p[-1])) return 1;
+  return 0;
+}
+
+/* the line begun in buf is longer than buf: drop the rest of a comment
+   (0), or tell the line too long */
+static int long_line(Loader *L, const char *buf, int size)
+{
+  int c;
+  if (!in_comment(buf, L->line))
+    return fail(L, "%s: line %d: longer than %d characters (only a comment "
+                "may be longer)", L->path, L->line, size - 2);
+  while ((c = getc(L->fp)) != EOF && c != '\n')
+    if (c == '\0') return nul_byte(L);
+  return 0;
+}
+#line 881 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -443,22 +476,13 @@ static char *read_line(char *buf, int size, void *user)
   buf[n] = '\0';
   L->line++;
   L->indented = buf[0] == ' ' || buf[0] == '\t';
-  
-#line 896 "paper/scene.nw"
-if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)) {
-  fail(L, "%s: line %d: longer than %d characters", L->path, L->line,
-       size - 2);
-  return NULL;
-}
-if (strlen(buf) < (size_t)n) {
-  fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or UTF-8, "
-       "not UTF-16)", L->path, L->line);
-  return NULL;
-}
-#line 889 "paper/scene.nw"
+  if (strlen(buf) < (size_t)n) return nul_byte(L), NULL;
+  if (n == size - 1 && buf[n - 1] != '\n' && !feof(L->fp)
+      && long_line(L, buf, size))
+    return NULL;
   return buf;
 }
-#line 913 "paper/scene.nw"
+#line 953 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -469,7 +493,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 930 "paper/scene.nw"
+#line 970 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -477,18 +501,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 923 "paper/scene.nw"
+#line 963 "paper/scene.nw"
   
-#line 941 "paper/scene.nw"
+#line 981 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 924 "paper/scene.nw"
+#line 964 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 953 "paper/scene.nw"
+#line 993 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -503,18 +527,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 974 "paper/scene.nw"
+#line 1014 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 967 "paper/scene.nw"
+#line 1007 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 996 "paper/scene.nw"
+#line 1036 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -525,7 +549,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1013 "paper/scene.nw"
+#line 1053 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -539,7 +563,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1032 "paper/scene.nw"
+#line 1072 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -552,7 +576,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1057 "paper/scene.nw"
+#line 1097 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -564,7 +588,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1044 "paper/scene.nw"
+#line 1084 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -574,7 +598,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1078 "paper/scene.nw"
+#line 1118 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
@@ -586,7 +610,7 @@ static const char *to_real(const char *str, double *x)
   if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 1093 "paper/scene.nw"
+#line 1133 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -600,7 +624,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1110 "paper/scene.nw"
+#line 1150 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -611,7 +635,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1130 "paper/scene.nw"
+#line 1170 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -626,7 +650,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1147 "paper/scene.nw"
+#line 1187 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -645,7 +669,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1169 "paper/scene.nw"
+#line 1209 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -655,7 +679,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1181 "paper/scene.nw"
+#line 1221 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -665,7 +689,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1193 "paper/scene.nw"
+#line 1233 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -676,7 +700,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1209 "paper/scene.nw"
+#line 1249 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -690,7 +714,7 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1231 "paper/scene.nw"
+#line 1271 "paper/scene.nw"
 /* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -706,7 +730,7 @@ static int read_geometry(Loader *L, Scene *s)
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1256 "paper/scene.nw"
+#line 1296 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -721,7 +745,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1282 "paper/scene.nw"
+#line 1322 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -734,7 +758,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1316 "paper/scene.nw"
+#line 1356 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -742,7 +766,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1294 "paper/scene.nw"
+#line 1334 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -753,7 +777,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 1347 "paper/scene.nw"
+#line 1387 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -764,7 +788,7 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1367 "paper/scene.nw"
+#line 1407 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -777,7 +801,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1383 "paper/scene.nw"
+#line 1423 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -787,14 +811,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1395 "paper/scene.nw"
+#line 1435 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1407 "paper/scene.nw"
+#line 1447 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -805,7 +829,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1422 "paper/scene.nw"
+#line 1462 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -816,7 +840,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1435 "paper/scene.nw"
+#line 1475 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -827,7 +851,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1451 "paper/scene.nw"
+#line 1491 "paper/scene.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -843,7 +867,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1473 "paper/scene.nw"
+#line 1513 "paper/scene.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -868,7 +892,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->problem.N + 1);
   return rc;
 }
-#line 1503 "paper/scene.nw"
+#line 1543 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -882,7 +906,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1520 "paper/scene.nw"
+#line 1560 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -895,7 +919,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->problem.C0prime);
   return 0;
 }
-#line 1538 "paper/scene.nw"
+#line 1578 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -913,7 +937,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1566 "paper/scene.nw"
+#line 1606 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -930,7 +954,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1592 "paper/scene.nw"
+#line 1632 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -938,7 +962,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->problem.side[id];
   int rc;
   
-#line 1611 "paper/scene.nw"
+#line 1651 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -953,7 +977,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1599 "paper/scene.nw"
+#line 1639 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = real(L, sec, "P2", &d->P[1])))
     return rc;
@@ -962,7 +986,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1629 "paper/scene.nw"
+#line 1669 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -974,7 +998,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1650 "paper/scene.nw"
+#line 1690 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -988,7 +1012,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1666 "paper/scene.nw"
+#line 1706 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -997,7 +1021,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1702 "paper/scene.nw"
+#line 1742 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1016,7 +1040,7 @@ static int read_contact(Loader *L, Scene *s)
                  "in Pa" : "a friction coefficient");
   return 0;
 }
-#line 1688 "paper/scene.nw"
+#line 1728 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1027,7 +1051,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 1727 "paper/scene.nw"
+#line 1767 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1049,7 +1073,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1760 "paper/scene.nw"
+#line 1800 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1074,7 +1098,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1794 "paper/scene.nw"
+#line 1834 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1087,7 +1111,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1811 "paper/scene.nw"
+#line 1851 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1107,14 +1131,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1834 "paper/scene.nw"
+#line 1874 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 1851 "paper/scene.nw"
+#line 1891 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1143,7 +1167,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 1883 "paper/scene.nw"
+#line 1923 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1167,7 +1191,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 1911 "paper/scene.nw"
+#line 1951 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1180,7 +1204,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 1929 "paper/scene.nw"
+#line 1969 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1204,18 +1228,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 1958 "paper/scene.nw"
+#line 1998 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 1952 "paper/scene.nw"
+#line 1992 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 1975 "paper/scene.nw"
+#line 2015 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1231,7 +1255,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 1996 "paper/scene.nw"
+#line 2036 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

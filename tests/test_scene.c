@@ -292,19 +292,51 @@ static void test_nul_bytes(void)
 }
 
 /* the errors of the file's syntax and names */
+/* lines longer than inih's buffer: a comment of any length (a whole line
+   after ';', '#' or blanks, or after a value), then a syntax error whose
+   line number counts the long ones; a value line of 300 characters is
+   refused, and a NUL byte in a long comment */
+static void test_long_lines(void)
+{
+  char text[8192], path[256], c[1001], with[4096], v[301];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  memset(c, 'c', sizeof c - 1);
+  c[sizeof c - 1] = '\0';
+  snprintf(with, sizeof with, "\n;%s\n#%s\n   ;%s\nR = 3 ;%s\n", c, c, c, c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-comments.scene", text, path, sizeof path);
+  if (check(scene_load(&s, path, 0, NULL, &st) == 0 && s.problem.R == 3,
+            "comments of 1000 characters (whole lines, indented, after a "
+            "value) are read past: %s", st.msg))
+    scene_free(&s);
+  snprintf(with, sizeof with, "\n;%s\nR = 3\noops\n", c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-syntax.scene", text, path, sizeof path);
+  expect("a syntax error after a long comment: its line", path, 0, NULL,
+         "line 17", "syntax error");
+  memset(v, '1', sizeof v - 1);
+  v[sizeof v - 1] = '\0';
+  snprintf(with, sizeof with, "\nR = %s\n", v);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-value.scene", text, path, sizeof path);
+  expect("a value line of 304 characters", path, 0, NULL, "line 15",
+         "longer than 198 characters (only a comment may be longer)");
+  snprintf(with, sizeof with, "\n;%s", c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  memcpy(strstr(text, "cccc") + 500, "\0", 1);
+  write_bytes("long-nul.scene", text, strlen(text) + strlen(text + strlen(text) + 1) + 1,
+              path, sizeof path);
+  expect("a NUL byte in a long comment", path, 0, NULL, "line 15", "NUL byte");
+}
+
 static void test_syntax_errors(void)
 {
-  char text[4096], path[256], line[300];
-  memset(line, 'x', sizeof line);
-  memcpy(line, "\n; ", 3);
-  line[sizeof line - 2] = '\n';
-  line[sizeof line - 1] = '\0';
+  char text[4096], path[256];
   edit(text, sizeof text, "\nP2 = -5.75e8\n", "\nP2 = -5.75e8\noops\n");
   write_file("syntax.scene", text, path, sizeof path);
   expect("syntax error", path, 0, NULL, "line 29", "syntax error");
-  edit(text, sizeof text, "\nR = 3\n", line);
-  write_file("long.scene", text, path, sizeof path);
-  expect("overlong line", path, 0, NULL, "line 15", "longer than");
+  test_long_lines();
   expect_edit("continuation line", "\nb = 4\n", "\nb = 4\n  gamma = 1\n",
               "geometry.b", "indented");
   expect_edit("key before any section", "[geometry]\n", "x = 1\n[geometry]\n",
