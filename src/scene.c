@@ -1,4 +1,4 @@
-#line 289 "paper/scene.nw"
+#line 334 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -8,16 +8,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 #include <ini.h>
 #include "design.h"
 #include "scene.h"
-#line 328 "paper/scene.nw"
+#line 374 "paper/scene.nw"
 static const char *const side_names[] = {"left", "right", "top", NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
 static const char *const initial_names[] = {"arc", "line", "constant",
   "file", NULL};
-#line 335 "paper/scene.nw"
+#line 381 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 static int name_index(const char *const *names, const char *w)
 {
@@ -26,7 +27,7 @@ static int name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 348 "paper/scene.nw"
+#line 394 "paper/scene.nw"
 /* append s to the string buf of size bytes, cut to fit */
 static void cat(char *buf, size_t size, const char *s)
 {
@@ -49,7 +50,7 @@ static const char *name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 377 "paper/scene.nw"
+#line 423 "paper/scene.nw"
 /* buf = x in %g with the fewest digits that read back as x exactly, its
    exponent without + and leading zeros (2.15e11, 1e-6) */
 static const char *shortest(double x, char *buf, size_t size)
@@ -69,7 +70,7 @@ static const char *shortest(double x, char *buf, size_t size)
   }
   return buf;
 }
-#line 405 "paper/scene.nw"
+#line 451 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -91,7 +92,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else shortest(d.tol, buf, size);
   return buf;
 }
-#line 434 "paper/scene.nw"
+#line 480 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -120,14 +121,15 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 594 "paper/scene.nw"
+#line 646 "paper/scene.nw"
 static const Key keys[] = {
   
-#line 468 "paper/scene.nw"
+#line 514 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
- .accepted = "> a", .meaning = "x1 of the right side"},
+ .accepted = "a < b, b - a in [1e-30, 1e30]",
+ .meaning = "x1 of the right side"},
 {"geometry", "gamma", KEY_REAL, .at = AT(problem.gamma), .unit = "m",
  .accepted = "> mesh.C0prime", .meaning = "x2 of the top side"},
 {"design", "N", KEY_INT, .at = AT(problem.N), .unit = "-",
@@ -162,9 +164,9 @@ static const Key keys[] = {
 {"design", "file", KEY_TEXT, .at = AT(shape_file), .unit = "-",
  .selector = "initial", .when = "file", .accepted = "N + 1 rows",
  .meaning = "a shape file, relative to the scene's folder"},
-#line 596 "paper/scene.nw"
+#line 648 "paper/scene.nw"
   
-#line 509 "paper/scene.nw"
+#line 556 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -175,14 +177,14 @@ static const Key keys[] = {
 {"mesh", "refine", KEY_INT, .at = AT_DEFAULT, .unit = "-", .dflt = "1",
  .accepted = ">= 1", .meaning = "multiplies N, M and R: a finer mesh"},
 {"material", "E", KEY_REAL, .at = AT(problem.E), .unit = "Pa",
- .accepted = "> 0", .meaning = "Young's modulus"},
+ .accepted = "1e-30 <= E <= 1e30", .meaning = "Young's modulus"},
 {"material", "nu", KEY_REAL, .at = AT(problem.nu), .unit = "1",
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 597 "paper/scene.nw"
+#line 649 "paper/scene.nw"
   
-#line 529 "paper/scene.nw"
+#line 576 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -194,34 +196,39 @@ static const Key keys[] = {
    .meaning = "end of the loaded interval"},                               \
   {sec, "P1", KEY_REAL, .at = AT(problem.side[i].P[0]), .unit = "Pa",      \
    .dflt = "0", .selector = "bc", .when = "traction",                      \
-   .accepted = "(P1, P2) != 0", .meaning = "the traction, x1 component"},  \
+   .accepted = "0 or |P1| / E in [1e-30, 1e30]",                            \
+   .meaning = "the traction, x1 component; (P1, P2) != 0"},  \
   {sec, "P2", KEY_REAL, .at = AT(problem.side[i].P[1]), .unit = "Pa",      \
    .dflt = "0", .selector = "bc", .when = "traction",                      \
-   .accepted = "(P1, P2) != 0", .meaning = "the traction, x2 component"}
+   .accepted = "0 or |P2| / E in [1e-30, 1e30]",                            \
+   .meaning = "the traction, x2 component; (P1, P2) != 0"}
 SIDE_KEYS("left", SIDE_LEFT, "C0prime <= from < to", "from < to <= gamma",
           "left side, x1 = a"),
 SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 598 "paper/scene.nw"
+#line 650 "paper/scene.nw"
   
-#line 554 "paper/scene.nw"
+#line 603 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
- .dflt = "0", .accepted = "finite", .meaning = "the body force, x1 component"},
+ .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
+ .meaning = "the body force, x1 component"},
 {"body_force", "F2", KEY_REAL, .at = AT(problem.F[1]), .unit = "N/m^3",
- .dflt = "0", .accepted = "finite", .meaning = "the body force, x2 component"},
+ .dflt = "0", .accepted = "0 or |F2| (b - a) / E in [1e-30, 1e30]",
+ .meaning = "the body force, x2 component"},
 {"contact", "model", KEY_WORD, problem_contact_names, AT(problem.contact),
  "-", "frictionless", .meaning = "the contact law"},
 {"contact", "g", KEY_REAL, .at = AT(problem.slip_bound), .unit = "Pa",
- .selector = "model", .when = "tresca", .accepted = ">= 0",
+ .selector = "model", .when = "tresca",
+ .accepted = "0 or g / E in [1e-30, 1e30]",
  .meaning = "slip bound of given friction"},
 {"contact", "friction", KEY_REAL, .at = AT(problem.friction), .unit = "1",
- .selector = "model", .when = "coulomb", .accepted = ">= 0",
+ .selector = "model", .when = "coulomb", .accepted = "0 <= friction <= 1e30",
  .meaning = "Coulomb's coefficient of friction"},
-#line 599 "paper/scene.nw"
+#line 651 "paper/scene.nw"
   
-#line 569 "paper/scene.nw"
+#line 621 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -244,10 +251,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "max_iter", KEY_INT, .at = AT(optimizer.max_iter),
  .unit = "-", .by = optimizer_default, .selector = "method",
  .accepted = ">= 1", .meaning = "iteration limit of the optimiser"},
-#line 600 "paper/scene.nw"
+#line 652 "paper/scene.nw"
 };
 enum { NKEYS = sizeof keys / sizeof keys[0] };
-#line 606 "paper/scene.nw"
+#line 658 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 static const Key *key_find(const char *sec, const char *key)
 {
@@ -266,7 +273,7 @@ static int section_known(const char *sec)
     if (strcmp(keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 629 "paper/scene.nw"
+#line 681 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 static const char *key_names(const char *sec, char *buf, size_t size)
 {
@@ -282,7 +289,7 @@ static const char *key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 648 "paper/scene.nw"
+#line 700 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 static int key_means(const Key *k, const char *w)
 {
@@ -294,7 +301,7 @@ static int key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 671 "paper/scene.nw"
+#line 723 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)NKEYS <= (int)TABLE_MAX, "a scene's values fit the loader");
 
@@ -304,7 +311,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 686 "paper/scene.nw"
+#line 738 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -318,13 +325,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 717 "paper/scene.nw"
+#line 769 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 727 "paper/scene.nw"
+#line 779 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -343,7 +350,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 749 "paper/scene.nw"
+#line 801 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -351,7 +358,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 760 "paper/scene.nw"
+#line 812 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -361,7 +368,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 773 "paper/scene.nw"
+#line 825 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -381,7 +388,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 802 "paper/scene.nw"
+#line 854 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -389,7 +396,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   char where[640], list[256];
   origin(L, L->override, where, sizeof where);
   
-#line 823 "paper/scene.nw"
+#line 875 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -399,7 +406,7 @@ if (!section_known(sec))
 if (!key_find(sec, key))
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, key_names(sec, list, sizeof list));
-#line 809 "paper/scene.nw"
+#line 861 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -410,7 +417,7 @@ if (!key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 836 "paper/scene.nw"
+#line 888 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -420,7 +427,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 850 "paper/scene.nw"
+#line 902 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -431,14 +438,14 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 902 "paper/scene.nw"
+#line 954 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Loader *L)
 {
   return fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
               "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 922 "paper/scene.nw"
+#line 974 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 static int in_comment(const char *buf, int line)
 {
@@ -463,7 +470,7 @@ static int long_line(Loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 881 "paper/scene.nw"
+#line 933 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -482,7 +489,7 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 953 "paper/scene.nw"
+#line 1005 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -493,7 +500,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 970 "paper/scene.nw"
+#line 1022 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -501,18 +508,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 963 "paper/scene.nw"
+#line 1015 "paper/scene.nw"
   
-#line 981 "paper/scene.nw"
+#line 1033 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 964 "paper/scene.nw"
+#line 1016 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 993 "paper/scene.nw"
+#line 1045 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -527,18 +534,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1014 "paper/scene.nw"
+#line 1066 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 1007 "paper/scene.nw"
+#line 1059 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1036 "paper/scene.nw"
+#line 1088 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -549,7 +556,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1053 "paper/scene.nw"
+#line 1105 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -563,7 +570,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1072 "paper/scene.nw"
+#line 1124 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -576,7 +583,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1097 "paper/scene.nw"
+#line 1149 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -588,7 +595,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1084 "paper/scene.nw"
+#line 1136 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -598,33 +605,60 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1118 "paper/scene.nw"
+#line 1178 "paper/scene.nw"
+/* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
+   the point), or, for an integer, [+-]digits */
+static int decimal(const char *s, int integer)
+{
+  int digits = 0;
+  s += *s == '+' || *s == '-';
+  for (; isdigit((unsigned char)*s); s++) digits++;
+  if (!integer && *s == '.')
+    for (s++; isdigit((unsigned char)*s); s++) digits++;
+  if (!digits) return 0;
+  if (!integer && (*s == 'e' || *s == 'E')) {
+    s++;
+    s += *s == '+' || *s == '-';
+    if (!isdigit((unsigned char)*s)) return 0;
+    while (isdigit((unsigned char)*s)) s++;
+  }
+  return *s == '\0';
+}
+
+/* why str, not decimal, is no number (or integer) */
+static const char *not_decimal(const char *str, int integer)
+{
+  const char *p = str + (*str == '+' || *str == '-');
+  if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X'))
+    return "a hexadecimal number: write it in decimal";
+  if (strncasecmp(p, "inf", 3) == 0 || strncasecmp(p, "nan", 3) == 0)
+    return "not a finite number";
+  return integer ? "not an integer" : "not a number";
+}
+
 /* x = the number str: NULL, or why str is not a number */
 static const char *to_real(const char *str, double *x)
 {
-  char *end;
+  if (!decimal(str, 0)) return not_decimal(str, 0);
   errno = 0;
-  *x = strtod(str, &end);
-  if (end == str || *end) return "not a number";
+  *x = strtod(str, NULL);
   if (errno == ERANGE) return "out of the range of a double";
-  if (!isfinite(*x)) return "not a finite number";
   return NULL;
 }
-#line 1133 "paper/scene.nw"
+#line 1221 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
-  char *end;
   long v;
+  if (!decimal(str, 1)) return not_decimal(str, 1);
   errno = 0;
-  v = strtol(str, &end, 10);
-  if (end == str || *end) return "not an integer";
+  v = strtol(str, NULL, 10);
   if (errno == ERANGE || v < INT_MIN || v > INT_MAX)
     return "out of the range of an int";
   *k = (int)v;
   return NULL;
 }
-#line 1150 "paper/scene.nw"
+#line 1237 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -635,7 +669,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1170 "paper/scene.nw"
+#line 1257 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -650,7 +684,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1187 "paper/scene.nw"
+#line 1274 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -669,7 +703,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1209 "paper/scene.nw"
+#line 1296 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -679,7 +713,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1221 "paper/scene.nw"
+#line 1308 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -689,7 +723,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1233 "paper/scene.nw"
+#line 1320 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -700,7 +734,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1249 "paper/scene.nw"
+#line 1336 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -714,8 +748,30 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1271 "paper/scene.nw"
-/* [geometry]: a < b, and gamma, with b - a and gamma (b - a) finite */
+#line 1360 "paper/scene.nw"
+/* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
+#define WINDOW_MIN 1e-30
+#define WINDOW_MAX 1e30
+
+/* whether |x| / unit lies in the window (false if it overflows) */
+static int in_window(double x, double unit)
+{
+  double r = fabs(x) / unit;
+  return r >= WINDOW_MIN && r <= WINDOW_MAX;
+}
+
+/* refuse the load x = the value converted last, times `times`, unless
+   it is 0 or in the window times E; what names it in the message */
+static int check_load(Loader *L, const Scene *s, double x, double times,
+                      const char *what)
+{
+  if (x == 0 || in_window(x * times, s->problem.E)) return 0;
+  return blame(L, "%s / E = %.3g: a load must be 0 or lie within [1e-30, "
+               "1e30] times E, where every product the solvers form is "
+               "finite", what, fabs(x) * times / s->problem.E);
+}
+#line 1390 "paper/scene.nw"
+/* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
   int rc;
@@ -725,12 +781,16 @@ static int read_geometry(Loader *L, Scene *s)
   if (!(s->problem.b > s->problem.a)) return blame(L, "must exceed geometry.a = %g", s->problem.a);
   if (!isfinite(s->problem.b - s->problem.a))
     return blame(L, "the width b - a overflows a double");
+  if (!in_window(s->problem.b - s->problem.a, 1))
+    return blame(L, "the width b - a = %g must lie in [1e-30, 1e30], where "
+                 "every product the solvers form is finite",
+                 s->problem.b - s->problem.a);
   if ((rc = real(L, "geometry", "gamma", &s->problem.gamma))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1296 "paper/scene.nw"
+#line 1419 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -745,7 +805,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1322 "paper/scene.nw"
+#line 1445 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -758,7 +818,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1356 "paper/scene.nw"
+#line 1479 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -766,7 +826,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1334 "paper/scene.nw"
+#line 1457 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -777,7 +837,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 1387 "paper/scene.nw"
+#line 1510 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -788,7 +848,7 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1407 "paper/scene.nw"
+#line 1530 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -801,7 +861,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1423 "paper/scene.nw"
+#line 1546 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -811,14 +871,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1435 "paper/scene.nw"
+#line 1558 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1447 "paper/scene.nw"
+#line 1570 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -829,7 +889,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1462 "paper/scene.nw"
+#line 1585 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -840,7 +900,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1475 "paper/scene.nw"
+#line 1598 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -851,7 +911,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1491 "paper/scene.nw"
+#line 1614 "paper/scene.nw"
 /* one line of a shape file: store its last number as alpha0[*row] */
 static int read_row(Loader *L, Scene *s, const char *path, int lineno,
                     char *line, int *row)
@@ -867,7 +927,7 @@ static int read_row(Loader *L, Scene *s, const char *path, int lineno,
   (*row)++;
   return 0;
 }
-#line 1513 "paper/scene.nw"
+#line 1636 "paper/scene.nw"
 /* alpha0 = the last column of the N+1 rows of the file at path */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -892,7 +952,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
                row, s->problem.N + 1);
   return rc;
 }
-#line 1543 "paper/scene.nw"
+#line 1666 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -906,7 +966,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1560 "paper/scene.nw"
+#line 1683 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -919,7 +979,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->problem.C0prime);
   return 0;
 }
-#line 1578 "paper/scene.nw"
+#line 1701 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -937,13 +997,16 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1606 "paper/scene.nw"
+#line 1729 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
   int rc, k;
   if ((rc = real(L, "material", "E", &s->problem.E))) return rc;
   if (!(s->problem.E > 0)) return blame(L, "Young's modulus must be > 0");
+  if (!in_window(s->problem.E, 1))
+    return blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
+                 "product the solvers form is finite");
   if ((rc = real(L, "material", "nu", &s->problem.nu))) return rc;
   if (!(s->problem.nu < 0.5))
     return blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
@@ -954,7 +1017,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1632 "paper/scene.nw"
+#line 1758 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -962,7 +1025,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->problem.side[id];
   int rc;
   
-#line 1651 "paper/scene.nw"
+#line 1779 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -977,16 +1040,18 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1639 "paper/scene.nw"
+#line 1765 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
-      || (rc = real(L, sec, "P2", &d->P[1])))
+      || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
+      || (rc = real(L, sec, "P2", &d->P[1]))
+      || (rc = check_load(L, s, d->P[1], 1, "|P2|")))
     return rc;
   if (d->P[0] == 0 && d->P[1] == 0)
     return bad(L, find(L, sec, "bc"), "the traction (%s.P1, %s.P2) is "
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1669 "paper/scene.nw"
+#line 1797 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -998,7 +1063,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1690 "paper/scene.nw"
+#line 1818 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -1012,7 +1077,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1706 "paper/scene.nw"
+#line 1834 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1021,7 +1086,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1742 "paper/scene.nw"
+#line 1873 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1038,20 +1103,26 @@ static int read_contact(Loader *L, Scene *s)
   if (!(*value[k] >= 0))
     return blame(L, "must be >= 0 (%s)", k == CONTACT_TRESCA ? "a slip bound "
                  "in Pa" : "a friction coefficient");
+  if (k == CONTACT_TRESCA) return check_load(L, s, p->slip_bound, 1, "g");
+  if (!(p->friction <= WINDOW_MAX))
+    return blame(L, "must be <= 1e30: it multiplies a contact force");
   return 0;
 }
-#line 1728 "paper/scene.nw"
+#line 1856 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
   int rc;
+  double w = s->problem.b - s->problem.a;
   if ((rc = real(L, "body_force", "F1", &s->problem.F[0]))
-      || (rc = real(L, "body_force", "F2", &s->problem.F[1])))
+      || (rc = check_load(L, s, s->problem.F[0], w, "|F1| (b - a)"))
+      || (rc = real(L, "body_force", "F2", &s->problem.F[1]))
+      || (rc = check_load(L, s, s->problem.F[1], w, "|F2| (b - a)")))
     return rc;
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 1767 "paper/scene.nw"
+#line 1901 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1073,7 +1144,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 1800 "paper/scene.nw"
+#line 1934 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1098,7 +1169,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 1834 "paper/scene.nw"
+#line 1968 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1111,7 +1182,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 1851 "paper/scene.nw"
+#line 1985 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1131,14 +1202,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 1874 "paper/scene.nw"
+#line 2008 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 1891 "paper/scene.nw"
+#line 2025 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1167,7 +1238,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 1923 "paper/scene.nw"
+#line 2057 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1191,7 +1262,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 1951 "paper/scene.nw"
+#line 2085 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1204,7 +1275,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 1969 "paper/scene.nw"
+#line 2103 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1228,18 +1299,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 1998 "paper/scene.nw"
+#line 2132 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 1992 "paper/scene.nw"
+#line 2126 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2015 "paper/scene.nw"
+#line 2149 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1255,7 +1326,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2036 "paper/scene.nw"
+#line 2170 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

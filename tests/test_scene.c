@@ -376,6 +376,47 @@ static void test_number_errors(void)
               "not an integer");
   expect_edit("integer out of range", "\nN = 16\n", "\nN = 99999999999\n",
               "design.N", "out of the range of an int");
+  expect_edit("hexadecimal number 0x10", "\nE = 2.15e11\n", "\nE = 0x10\n",
+              "material.E", "a hexadecimal number: write it in decimal");
+  expect_edit("hexadecimal number -0x1p-3", "\nline_end = 0.05\n",
+              "\nline_end = -0x1p-3\n", "design.line_end", "hexadecimal");
+  expect_edit("hexadecimal integer 0x10", "\nN = 16\n", "\nN = 0x10\n",
+              "design.N", "a hexadecimal number: write it in decimal");
+  expect_edit("infinity", "\nC0 = 0.05\n", "\nC0 = -Infinity\n",
+              "design.C0", "not a finite number");
+  expect_edit("a number without digits", "\nC0 = 0.05\n", "\nC0 = .e5\n",
+              "design.C0", "not a number");
+  expect_edit("an exponent without digits", "\nC0 = 0.05\n", "\nC0 = 5e+\n",
+              "design.C0", "not a number");
+  expect_edit("a sign without digits", "\nN = 16\n", "\nN = -\n",
+              "design.N", "not an integer");
+}
+
+/* magnitudes outside the window in which every product is finite */
+static void test_magnitude_errors(void)
+{
+  const char *p2 = "\nP2 = -5.75e8\n";
+  expect_edit("E above 1e30", "\nE = 2.15e11\n", "\nE = 1e308\n",
+              "material.E", "[1e-30, 1e30]");
+  expect_edit("E below 1e-30", "\nE = 2.15e11\n", "\nE = 1e-300\n",
+              "material.E", "[1e-30, 1e30]");
+  expect_edit("b - a above 1e30", "\nb = 4\n", "\nb = 2e30\n",
+              "geometry.b", "b - a = 2e+30 must lie in [1e-30, 1e30]");
+  expect_edit("b - a below 1e-30", "\nb = 4\n", "\nb = 1e-31\n",
+              "geometry.b", "b - a = 1e-31 must lie in [1e-30, 1e30]");
+  expect_edit("a traction 4.7e288 E", p2, "\nP2 = -1e300\n", "top.P2",
+              "|P2| / E = 4.65e+288: a load must be 0 or lie within");
+  expect_edit("a traction 4.7e-312 E", p2, "\nP2 = -5.75e8\nP1 = 1e-300\n",
+              "top.P1", "|P1| / E = 4.65e-312");
+  expect_edit("a body force 1.9e289 E / (b - a)", p2,
+              "\nP2 = -5.75e8\n[body_force]\nF2 = -1e300\n", "body_force.F2",
+              "|F2| (b - a) / E = 1.86e+289");
+  expect_edit("a slip bound 4.7e-302 E", p2,
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e-290\n",
+              "contact.g", "g / E = 4.65e-302");
+  expect_edit("a friction coefficient above 1e30", p2,
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 1e31\n",
+              "contact.friction", "must be <= 1e30");
 }
 
 /* values out of their range */
@@ -581,6 +622,7 @@ int main(void)
   test_shape_file();
   test_syntax_errors();
   test_number_errors();
+  test_magnitude_errors();
   test_range_errors();
   test_initial_errors();
   test_condition_errors();
