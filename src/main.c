@@ -38,7 +38,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 169 "paper/main.nw"
+#line 170 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -54,6 +54,7 @@ static int run_command(const Args *a, const char *suffix,
   Run r = { .a = a };
   int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
+  if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
                          opt_metric_name(r.s.optimizer.metric) };
@@ -65,7 +66,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 203 "paper/main.nw"
+#line 205 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -82,7 +83,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 224 "paper/main.nw"
+#line 226 "paper/main.nw"
 static int refuse_coulomb(const Run *r, const char *command, Status *st)
 {
   if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
@@ -90,7 +91,7 @@ static int refuse_coulomb(const Run *r, const char *command, Status *st)
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
-#line 241 "paper/main.nw"
+#line 243 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -104,7 +105,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 265 "paper/main.nw"
+#line 267 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -113,7 +114,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 280 "paper/main.nw"
+#line 282 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -126,7 +127,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 299 "paper/main.nw"
+#line 301 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -167,7 +168,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 350 "paper/main.nw"
+#line 352 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -181,7 +182,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 371 "paper/main.nw"
+#line 373 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

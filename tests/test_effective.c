@@ -8,7 +8,7 @@
    initial shape, every key of the fuzzing corpus, Coulomb friction, a
    constant shape under a loaded right side, and a shape file named
    relative to a scene that was itself named relative to the current
-   folder.  Then the two refusals: a shape file whose path is too long for
+   folder, as it is and resampled onto a refined mesh.  Then the two refusals: a shape file whose path is too long for
    a line of a scene, and a file that cannot be written.  Run from the
    repository root. */
 #include <stdio.h>
@@ -115,7 +115,7 @@ static void put(const char *path, const char *text)
 static void relative_file(void)
 {
   char path[4200], text[4200], *ov[] = {"design.initial=file", NO_ARC,
-                                        "design.file=shape.dat"};
+                                        "design.file=shape.dat", NULL};
   int i, n = 0;
   snprintf(path, sizeof path, "%s/sub", tmpdir);
   mkdir(path, 0700);
@@ -132,6 +132,9 @@ static void relative_file(void)
   if (chdir(tmpdir)) return;
   round_trip("a shape file beside a scene named sub/x.scene", "sub/x.scene",
              5, ov, 99);
+  ov[5] = "mesh.refine=3";      /* the file's 17 rows resampled on 49 nodes */
+  round_trip("the same file resampled on the mesh refined three times",
+             "sub/x.scene", 6, ov, 98);
   if (chdir(root)) exit(1);
   snprintf(path, sizeof path, "%s/sub/shape.dat", tmpdir);
   unlink(path);

@@ -240,6 +240,105 @@ static void test_switching(void)
          "no effect with bc = free");
 }
 
+/* write the shape file name holding text, and a scene (the base with
+   initial = file) that names it; scene = its path */
+static void shape_scene(const char *name, const char *text, char *scene,
+                        size_t size)
+{
+  char path[256], with[128], body[4096];
+  write_file(name, text, path, sizeof path);
+  snprintf(with, sizeof with, "initial = file\nfile = %s\n", name);
+  edit(body, sizeof body, "initial = line\nline_start = 0\nline_end = 0.05\n",
+       with);
+  snprintf(path, sizeof path, "%.60s.scene", name);
+  write_file(path, body, scene, size);
+}
+
+/* text = rows x1 = x(i) alpha = 0.01 x1, i = 0..n */
+static void linear_rows(char *text, size_t size, int n, double (*x)(int, int))
+{
+  int i, used = snprintf(text, size, "# x1[m] alpha[m]\n");
+  for (i = 0; i <= n; i++)
+    used += snprintf(text + used, size - used, "%.17g %.17g\n", x(i, n),
+                     0.01 * x(i, n));
+}
+static double even(int i, int n) { return 4.0 * i / n; }
+static double uneven(int i, int n) { return 4.0 * i * i / ((double)n * n); }
+static double near(int i, int n) { return 4.0 * i / n + (i % n ? 1e-10 : 0); }
+static double off(int i, int n) { return 4.0 * i / n + (i % n ? 1e-8 : 0); }
+
+/* a shape file whose rows are not the 17 design nodes is resampled by
+   linear interpolation onto them, and the scene's note says so; rows
+   within the tolerance of the nodes are the nodes */
+static void test_resampled_files(void)
+{
+  static const struct { const char *name, *what; int n; double (*x)(int, int); int note; } f[] = {
+    {"fine.dat", "33 rows, every 1/8", 32, even, 1},
+    {"uneven.dat", "17 rows at x1 = 4 (i/16)^2", 16, uneven, 1},
+    {"off.dat", "17 rows 1e-8 off the nodes", 16, off, 1},
+    {"near.dat", "17 rows 1e-10 off the nodes (within 4e-9)", 16, near, 0}};
+  static const double peak[] = {0, 0.01, 0.04, 0.01, 0};  /* at x1 = 0..4 */
+  char text[8192], scene[256];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  size_t k;
+  int i, ok;
+  shape_scene("coarse.dat", "0 0\n1 0.01\n2 0.04\n3 0.01\n4 0\n", scene, sizeof scene);
+  if (check(scene_load(&s, scene, 0, NULL, &st) == 0, "a coarse shape of 5 rows loads: %s", st.msg)) {
+    for (ok = 1, i = 0; i <= 16; i++) {
+      int j = i / 4 < 3 ? i / 4 : 3;
+      double t = (i - 4.0 * j) / 4;
+      ok &= fabs(s.alpha0[i] - ((1 - t) * peak[j] + t * peak[j + 1])) <= 1e-17;
+    }
+    check(ok && strstr(s.note, "coarse.dat: 5 rows on [0, 4] resampled by linear "
+                       "interpolation onto the N + 1 = 17 design nodes"),
+          "5 rows are resampled onto the 17 nodes, and the note says so: %s", s.note);
+    scene_free(&s);
+  }
+  for (k = 0; k < sizeof f / sizeof f[0]; k++) {
+    linear_rows(text, sizeof text, f[k].n, f[k].x);
+    shape_scene(f[k].name, text, scene, sizeof scene);
+    if (!check(scene_load(&s, scene, 0, NULL, &st) == 0, "%s: loads: %s", f[k].what, st.msg))
+      continue;
+    for (ok = 1, i = 0; i <= 16; i++)   /* as they are: bit for bit */
+      ok &= f[k].note ? fabs(s.alpha0[i] - 0.01 * (0.25 * i)) <= 1e-17
+                      : s.alpha0[i] == 0.01 * f[k].x(i, 16);
+    check(ok && (f[k].note ? strstr(s.note, "resampled") != NULL : !s.note[0]),
+          "%s: %s", f[k].what, f[k].note ? "resampled, alpha0 = 0.01 x1 at the "
+          "nodes to 1e-17, with a note" : "the file's alpha as it is, no note");
+    scene_free(&s);
+  }
+}
+
+/* shape files that are no shape on [a, b] = [0, 4] */
+static void test_shape_file_errors(void)
+{
+  static const struct { const char *name, *text, *what, *word; } f[] = {
+    {"short.dat", "0 0\n1 0.01\n", "a shape on [0, 1] for a body on [0, 4]",
+     "short.dat line 2: x1 = 1: a shape ends at x1 = b = 4"},
+    {"late.dat", "# x1 alpha\n0.5 0\n4 0\n", "a shape from 0.5",
+     "late.dat line 2: x1 = 0.5: a shape begins at x1 = a = 0"},
+    {"repeat.dat", "0 0\n2 0.01\n2 0.02\n4 0\n", "x1 repeated",
+     "repeat.dat line 3: x1 = 2 does not increase (line 2 has 2)"},
+    {"reverse.dat", "4 0\n3 0.01\n0 0\n", "x1 decreasing",
+     "reverse.dat line 2: x1 = 3 does not increase (line 1 has 4)"},
+    {"column.dat", "0.01\n0.02\n", "one column",
+     "column.dat line 1: 1 number: a row of a shape file is x1 alpha"},
+    {"three.dat", "0 0 0\n4 0 0\n", "three columns",
+     "three.dat line 1: 3 numbers"},
+    {"one.dat", "# x1 alpha\n0 0\n", "one row", "one.dat has 1 row x1 alpha"},
+    {"none.dat", "# x1 alpha\n\n", "no row", "none.dat has 0 rows x1 alpha"},
+    {"hex.dat", "0 0\n4 0x1p-7\n", "a hexadecimal alpha",
+     "hex.dat line 2: '0x1p-7' is a hexadecimal number"},
+  };
+  char scene[256];
+  size_t k;
+  for (k = 0; k < sizeof f / sizeof f[0]; k++) {
+    shape_scene(f[k].name, f[k].text, scene, sizeof scene);
+    expect(f[k].what, scene, 0, NULL, "design.file", f[k].word);
+  }
+}
+
 /* initial = file: comments, blank lines, two columns, relative path */
 static void test_shape_file(void)
 {
@@ -256,10 +355,13 @@ static void test_shape_file(void)
   write_file("file.scene", text, scene, sizeof scene);
   if (check(scene_load(&s, scene, 0, NULL, &st) == 0,
             "initial = file loads relative to the scene: %s", st.msg)) {
-    for (i = 0; i <= 16; i++) ok &= fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
-    check(ok, "initial = file: the last column is alpha0");
+    for (i = 0; i <= 16; i++) ok &= s.alpha0[i] == strtod("0.001", NULL) * i
+                                     || fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
+    check(ok && !s.note[0], "initial = file: rows at the 17 nodes give alpha0 "
+          "as they are, without a note");
     scene_free(&s);
   }
+  test_resampled_files();
 }
 
 /* NUL bytes: in a line (which would otherwise look overlong), in the
@@ -481,10 +583,7 @@ static void test_initial_errors(void)
               "design.arc_radius", "> 0");
   expect_edit("shape file missing", line, "initial = file\nfile = none.dat\n",
               "design.file", "cannot read");
-  write_file("short.dat", "0 0\n1 0.01\n", path, sizeof path);
-  expect_edit("shape file with wrong rows", line,
-              "initial = file\nfile = short.dat\n", "design.file",
-              "short.dat has 2 rows of values, expected N + 1 = 17");
+  test_shape_file_errors();
   write_file("nonnum.dat", "0 0\n1 abc\n", path, sizeof path);
   expect_edit("shape file with a non-number", line,
               "initial = file\nfile = nonnum.dat\n", "design.file",
