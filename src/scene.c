@@ -70,7 +70,7 @@ static const char *shortest(double x, char *buf, size_t size)
   }
   return buf;
 }
-#line 460 "paper/scene.nw"
+#line 461 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -92,7 +92,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else shortest(d.tol, buf, size);
   return buf;
 }
-#line 489 "paper/scene.nw"
+#line 490 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -121,10 +121,10 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 656 "paper/scene.nw"
+#line 657 "paper/scene.nw"
 static const Key keys[] = {
   
-#line 523 "paper/scene.nw"
+#line 524 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -165,9 +165,9 @@ static const Key keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder"},
-#line 658 "paper/scene.nw"
+#line 659 "paper/scene.nw"
   
-#line 566 "paper/scene.nw"
+#line 567 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -183,9 +183,9 @@ static const Key keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 659 "paper/scene.nw"
+#line 660 "paper/scene.nw"
   
-#line 586 "paper/scene.nw"
+#line 587 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -209,9 +209,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 660 "paper/scene.nw"
+#line 661 "paper/scene.nw"
   
-#line 613 "paper/scene.nw"
+#line 614 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -227,9 +227,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "friction", KEY_REAL, .at = AT(problem.friction), .unit = "1",
  .selector = "model", .when = "coulomb", .accepted = "0 <= friction <= 1e30",
  .meaning = "Coulomb's coefficient of friction"},
-#line 661 "paper/scene.nw"
+#line 662 "paper/scene.nw"
   
-#line 631 "paper/scene.nw"
+#line 632 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -252,10 +252,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "max_iter", KEY_INT, .at = AT(optimizer.max_iter),
  .unit = "-", .by = optimizer_default, .selector = "method",
  .accepted = ">= 1", .meaning = "iteration limit of the optimiser"},
-#line 662 "paper/scene.nw"
+#line 663 "paper/scene.nw"
 };
 enum { NKEYS = sizeof keys / sizeof keys[0] };
-#line 668 "paper/scene.nw"
+#line 669 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 static const Key *key_find(const char *sec, const char *key)
 {
@@ -274,7 +274,7 @@ static int section_known(const char *sec)
     if (strcmp(keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 691 "paper/scene.nw"
+#line 692 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 static const char *key_names(const char *sec, char *buf, size_t size)
 {
@@ -290,7 +290,7 @@ static const char *key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 710 "paper/scene.nw"
+#line 711 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 static int key_means(const Key *k, const char *w)
 {
@@ -302,7 +302,7 @@ static int key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 733 "paper/scene.nw"
+#line 734 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)NKEYS <= (int)TABLE_MAX, "a scene's values fit the loader");
 
@@ -312,7 +312,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 748 "paper/scene.nw"
+#line 749 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -326,13 +326,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 779 "paper/scene.nw"
+#line 780 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 789 "paper/scene.nw"
+#line 790 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -351,7 +351,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 811 "paper/scene.nw"
+#line 812 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -359,7 +359,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 822 "paper/scene.nw"
+#line 823 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -369,7 +369,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 835 "paper/scene.nw"
+#line 836 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -389,7 +389,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 864 "paper/scene.nw"
+#line 865 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -397,7 +397,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   char where[640], list[256];
   origin(L, L->override, where, sizeof where);
   
-#line 885 "paper/scene.nw"
+#line 886 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -407,7 +407,7 @@ if (!section_known(sec))
 if (!key_find(sec, key))
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, key_names(sec, list, sizeof list));
-#line 871 "paper/scene.nw"
+#line 872 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -418,7 +418,7 @@ if (!key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 898 "paper/scene.nw"
+#line 899 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -428,7 +428,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 912 "paper/scene.nw"
+#line 913 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -439,14 +439,14 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 964 "paper/scene.nw"
+#line 965 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Loader *L)
 {
   return fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
               "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 984 "paper/scene.nw"
+#line 985 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 static int in_comment(const char *buf, int line)
 {
@@ -471,7 +471,7 @@ static int long_line(Loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 943 "paper/scene.nw"
+#line 944 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -490,7 +490,7 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1015 "paper/scene.nw"
+#line 1016 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -501,7 +501,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1032 "paper/scene.nw"
+#line 1033 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -509,18 +509,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 1025 "paper/scene.nw"
+#line 1026 "paper/scene.nw"
   
-#line 1043 "paper/scene.nw"
+#line 1044 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 1026 "paper/scene.nw"
+#line 1027 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1055 "paper/scene.nw"
+#line 1056 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -535,18 +535,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1076 "paper/scene.nw"
+#line 1077 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
                          L->path);
-#line 1069 "paper/scene.nw"
+#line 1070 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1098 "paper/scene.nw"
+#line 1099 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -557,7 +557,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1115 "paper/scene.nw"
+#line 1116 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -571,7 +571,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1134 "paper/scene.nw"
+#line 1135 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -584,7 +584,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1159 "paper/scene.nw"
+#line 1160 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -596,7 +596,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1146 "paper/scene.nw"
+#line 1147 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -606,7 +606,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1188 "paper/scene.nw"
+#line 1189 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -646,7 +646,7 @@ static const char *to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1231 "paper/scene.nw"
+#line 1232 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -659,7 +659,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1247 "paper/scene.nw"
+#line 1248 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -670,7 +670,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1267 "paper/scene.nw"
+#line 1268 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -685,7 +685,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1284 "paper/scene.nw"
+#line 1285 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -704,7 +704,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1306 "paper/scene.nw"
+#line 1307 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -714,7 +714,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1318 "paper/scene.nw"
+#line 1319 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -724,7 +724,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1330 "paper/scene.nw"
+#line 1331 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -735,7 +735,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1346 "paper/scene.nw"
+#line 1347 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -749,7 +749,7 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1370 "paper/scene.nw"
+#line 1371 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -771,7 +771,7 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                "1e30] times E, where every product the solvers form is "
                "finite", what, fabs(x) * times / s->problem.E);
 }
-#line 1400 "paper/scene.nw"
+#line 1401 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -791,7 +791,7 @@ static int read_geometry(Loader *L, Scene *s)
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1429 "paper/scene.nw"
+#line 1430 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -806,7 +806,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1455 "paper/scene.nw"
+#line 1456 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -819,7 +819,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1489 "paper/scene.nw"
+#line 1490 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -827,7 +827,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1467 "paper/scene.nw"
+#line 1468 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -838,7 +838,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 1520 "paper/scene.nw"
+#line 1521 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -849,7 +849,7 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1540 "paper/scene.nw"
+#line 1541 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -862,7 +862,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1556 "paper/scene.nw"
+#line 1557 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -872,14 +872,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1568 "paper/scene.nw"
+#line 1569 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1580 "paper/scene.nw"
+#line 1581 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -890,7 +890,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1595 "paper/scene.nw"
+#line 1596 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -901,7 +901,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1608 "paper/scene.nw"
+#line 1609 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -912,7 +912,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1625 "paper/scene.nw"
+#line 1626 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -940,7 +940,7 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1655 "paper/scene.nw"
+#line 1656 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -963,7 +963,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 1765 "paper/scene.nw"
+#line 1766 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -976,7 +976,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 1722 "paper/scene.nw"
+#line 1723 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Loader *L, Scene *s, const char *path,
@@ -994,14 +994,14 @@ static int shape_from_rows(Loader *L, Scene *s, const char *path,
                    "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                    r->x[j - 1]);
   
-#line 1754 "paper/scene.nw"
+#line 1755 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 1739 "paper/scene.nw"
+#line 1740 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -1014,7 +1014,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 1684 "paper/scene.nw"
+#line 1685 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -1039,7 +1039,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 1783 "paper/scene.nw"
+#line 1784 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -1053,7 +1053,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1800 "paper/scene.nw"
+#line 1801 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -1066,7 +1066,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->problem.C0prime);
   return 0;
 }
-#line 1818 "paper/scene.nw"
+#line 1819 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -1084,7 +1084,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1846 "paper/scene.nw"
+#line 1847 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -1104,7 +1104,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1875 "paper/scene.nw"
+#line 1876 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -1112,7 +1112,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->problem.side[id];
   int rc;
   
-#line 1896 "paper/scene.nw"
+#line 1897 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -1127,7 +1127,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1882 "paper/scene.nw"
+#line 1883 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = real(L, sec, "P2", &d->P[1]))
@@ -1138,7 +1138,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1914 "paper/scene.nw"
+#line 1915 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -1150,7 +1150,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1935 "paper/scene.nw"
+#line 1936 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -1164,7 +1164,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1951 "paper/scene.nw"
+#line 1952 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1173,7 +1173,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1990 "paper/scene.nw"
+#line 1991 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1195,7 +1195,7 @@ static int read_contact(Loader *L, Scene *s)
     return blame(L, "must be <= 1e30: it multiplies a contact force");
   return 0;
 }
-#line 1973 "paper/scene.nw"
+#line 1974 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1209,7 +1209,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 2018 "paper/scene.nw"
+#line 2019 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1231,7 +1231,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2051 "paper/scene.nw"
+#line 2052 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1256,7 +1256,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2085 "paper/scene.nw"
+#line 2086 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1269,7 +1269,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2102 "paper/scene.nw"
+#line 2103 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1289,14 +1289,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2125 "paper/scene.nw"
+#line 2126 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2142 "paper/scene.nw"
+#line 2143 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1325,7 +1325,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2174 "paper/scene.nw"
+#line 2175 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1349,7 +1349,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2202 "paper/scene.nw"
+#line 2203 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1362,7 +1362,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2220 "paper/scene.nw"
+#line 2221 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1386,18 +1386,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2249 "paper/scene.nw"
+#line 2250 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2243 "paper/scene.nw"
+#line 2244 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2266 "paper/scene.nw"
+#line 2267 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1413,7 +1413,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2287 "paper/scene.nw"
+#line 2288 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];
