@@ -194,7 +194,7 @@ build/paper/contactopt.tex: paper/contactopt.nw | deps
 	noweave -delay paper/contactopt.nw > $@
 build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
-paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex \
+paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
@@ -202,6 +202,12 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex
 	  noindex contactopt; \
 	  [ $$i -gt 1 ] && ! grep -q 'Rerun' contactopt.log && break; done; true
 	cp build/paper/contactopt.pdf $@
+
+# The table of the keys of a scene (the scene appendix): printed by the
+# program from the table its scene loader reads (paper/scene.nw).
+figures/keys.tex: bin/contactopt
+	@mkdir -p figures
+	bin/contactopt keys --latex > $@.partial && mv $@.partial $@
 
 # ---- the figures of Section 5 ---------------------------------------------------
 # Every figure is drawn from the data files the program writes; each run is

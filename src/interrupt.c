@@ -1,4 +1,4 @@
-#line 299 "paper/main.nw"
+#line 321 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

@@ -10,7 +10,7 @@
 #include "output.h"
 #include "usage.h"
 #include "interrupt.h"
-#line 123 "paper/main.nw"
+#line 143 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -40,7 +40,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 164 "paper/main.nw"
+#line 185 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -57,6 +57,7 @@ static int run_command(const Args *a, const char *suffix,
   Run r = { .a = a };
   int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
+  if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
                          opt_metric_name(r.s.optimizer.metric) };
@@ -71,7 +72,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 211 "paper/main.nw"
+#line 233 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -88,7 +89,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 236 "paper/main.nw"
+#line 258 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -99,7 +100,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 256 "paper/main.nw"
+#line 278 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -120,7 +121,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 329 "paper/main.nw"
+#line 351 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -130,7 +131,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 345 "paper/main.nw"
+#line 367 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -143,7 +144,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 364 "paper/main.nw"
+#line 386 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -192,7 +193,21 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 420 "paper/main.nw"
+#line 445 "paper/main.nw"
+static int command_plain(int argc, char **argv)
+{
+  int latex = argc == 3 && !strcmp(argv[2], "--latex");
+  if (!strcmp(argv[1], "--version")) printf("contactopt %s\n", CONTACTOPT_VERSION);
+  else if (strcmp(argv[1], "keys")) return -1;
+  else if (argc > 2 && (!strcmp(argv[2], "-h") || !strcmp(argv[2], "--help")))
+    fputs(usage_keys, stdout);
+  else if (argc > 3 || (argc == 3 && !latex)) {
+    fprintf(stderr, "contactopt: keys: %s: unknown option (try --help)\n", argv[2]);
+    return STATUS_INPUT;
+  } else scene_keys_print(stdout, latex);
+  return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
+}
+#line 466 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -209,7 +224,8 @@ int main(int argc, char **argv)
   Status st = { STATUS_OK, "" };
   Args a;
   const Command *c = NULL;
-  int help = 0;
+  int help = 0, plain = argc > 1 ? command_plain(argc, argv) : -1;
+  if (plain >= 0) return plain;
   for (size_t k = 0; argc > 1 && k < sizeof commands / sizeof *commands; k++)
     if (!strcmp(commands[k].name, argv[1])) c = &commands[k];
   for (int k = 1; k < argc; k++)

@@ -39,6 +39,29 @@ check "contact.dat: every gap >= 0 and every contact force >= -1e-12 max T" \
 check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $OLDPWD/$scene d/x.scene &&
   $OLDPWD/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
 
+# one override switches a side, the contact law or the initial shape: the
+# file's keys that the new word makes meaningless are dropped
+$BIN solve $scene -o $TMP/free -s top.bc=free > /dev/null 2> $TMP/err; rc=$?
+check "solve -s top.bc=free alone: exit 0, no load, E = 0 ($(cat $TMP/err))" \
+  sh -c "[ $rc -eq 0 ] && [ \"\$(awk '\$1 == \"energy\" { print \$2 }' $TMP/free/summary.dat)\" = 0 ]"
+$BIN solve data/example-5.1-tresca.scene -o $TMP/coulomb -s contact.model=coulomb \
+  -s contact.friction=0.2 > /dev/null 2> $TMP/err; rc=$?
+check "solve -s contact.model=coulomb on the Tresca scene drops its g: exit 0 ($(cat $TMP/err))" \
+  sh -c "[ $rc -eq 0 ] && grep -q '^contact coulomb' $TMP/coulomb/summary.dat"
+
+# a fine mesh from a coarse optimum: the final shape.dat of an optimisation
+# on N = 16, read on the mesh refined four times, is resampled onto its 65
+# nodes, and the program says so in one line
+$BIN optimize $scene -o $TMP/coarse > /dev/null 2>&1
+$BIN solve $scene -o $TMP/fine -s mesh.refine=4 -s design.initial=file \
+  -s design.file=$TMP/coarse/final/shape.dat > $TMP/stdout 2> $TMP/err; rc=$?
+check "solve on N = 64 from the optimum on N = 16: exit 0, the note on stdout ($(head -1 $TMP/stdout | cut -c1-150))" \
+  sh -c "[ $rc -eq 0 ] && grep -q 'shape.dat: 17 rows on \[0, 4\] resampled by linear interpolation onto the N + 1 = 65 design nodes' $TMP/stdout"
+grep -v '^#' $TMP/fine/shape.dat | awk 'NR % 4 == 1' > $TMP/every4
+grep -v '^#' $TMP/coarse/final/shape.dat | paste $TMP/every4 - > $TMP/both
+check "the resampled shape is the coarse optimum at every fourth node (to 1e-15 m)" \
+  le "$(rows_max 'abs($2 - $4) + abs($1 - $3)' $TMP/both)" 1e-15
+
 # bad input: status 2, one line naming the file, no output folder
 bad() { # description expected-words... -- arguments
   desc=$1; shift; words=""
@@ -57,6 +80,11 @@ bad "the schur metric with Algorithm 4.1" optimizer.metric schur slsqp -- $scene
 bad "an unknown metric" optimizer.metric sobolev -- $scene -s optimizer.metric=sobolev
 bad "a metric with the Newton method" optimizer.metric "no effect" newton -- $scene \
   -s optimizer.method=newton -s optimizer.metric=schur
+bad "a key of an override that the switch makes meaningless" top.P2 "no effect" -- $scene \
+  -s top.bc=free -s top.P2=1e6
+printf '# x1 alpha\n0 0.01\n1 0.01\n' > $TMP/short.dat
+bad "a shape on [0, 1] for a body on [0, 4]" design.file 'short.dat line 3' 'ends at x1 = b = 4' -- $scene \
+  -s design.initial=file -s design.file=$TMP/short.dat
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 printf '[geometry\na = 0\n' > $TMP/broken.scene

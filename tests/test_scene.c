@@ -200,6 +200,150 @@ static void test_overrides(void)
     scene_free(&s);
 }
 
+/* an override of a selector drops the file's keys that its word makes
+   meaningless; keys given by overrides are still refused */
+static void test_switching(void)
+{
+  char *top_free[] = {"top.bc=free"}, *top_del[] = {"top.bc="};
+  char *coulomb[] = {"contact.model=coulomb", "contact.friction=0.2"};
+  char *line[] = {"design.initial=line", "design.line_start=0",
+                  "design.line_end=0.05"};
+  char *newton[] = {"optimizer.method=newton"};
+  char *p2_after[] = {"top.bc=free", "top.P2=1e6"};
+  char *p2_before[] = {"top.P2=1e6", "top.bc=free"};
+  char text[4096], path[256];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, top_free, &st) == 0
+            && s.problem.side[SIDE_TOP].kind == BC_FREE,
+            "-s top.bc=free alone unloads the top of 5.1: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1.scene", 1, top_del, &st) == 0
+            && s.problem.side[SIDE_TOP].kind == BC_FREE,
+            "-s top.bc= (deleted) switches to the default, free: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1-tresca.scene", 2, coulomb, &st) == 0
+            && s.problem.contact == CONTACT_COULOMB && s.problem.friction == 0.2,
+            "-s contact.model=coulomb drops the file's g: %s", st.msg))
+    scene_free(&s);
+  if (check(scene_load(&s, "data/example-5.1.scene", 3, line, &st) == 0
+            && strcmp(s.initial, "line") == 0 && s.alpha0[16] == 0.05,
+            "-s design.initial=line drops the file's arc_*: %s", st.msg))
+    scene_free(&s);
+  edit(text, sizeof text, "\nP2 = -5.75e8\n",
+       "\nP2 = -5.75e8\n[optimizer]\nmethod = slsqp\nmetric = euclidean\n");
+  write_file("metric.scene", text, path, sizeof path);
+  if (check(scene_load(&s, path, 1, newton, &st) == 0
+            && s.optimizer.method == OPT_NEWTON,
+            "-s optimizer.method=newton drops the file's metric: %s", st.msg))
+    scene_free(&s);
+  expect("a key given by an override after the switch is refused",
+         "data/example-5.1.scene", 2, p2_after, "(-s top.P2=1e6): top.P2",
+         "no effect with bc = free");
+  expect("a key given by an override before the switch is refused",
+         "data/example-5.1.scene", 2, p2_before, "(-s top.P2=1e6): top.P2",
+         "no effect with bc = free");
+}
+
+/* write the shape file name holding text, and a scene (the base with
+   initial = file) that names it; scene = its path */
+static void shape_scene(const char *name, const char *text, char *scene,
+                        size_t size)
+{
+  char path[256], with[128], body[4096];
+  write_file(name, text, path, sizeof path);
+  snprintf(with, sizeof with, "initial = file\nfile = %s\n", name);
+  edit(body, sizeof body, "initial = line\nline_start = 0\nline_end = 0.05\n",
+       with);
+  snprintf(path, sizeof path, "%.60s.scene", name);
+  write_file(path, body, scene, size);
+}
+
+/* text = rows x1 = x(i) alpha = 0.01 x1, i = 0..n */
+static void linear_rows(char *text, size_t size, int n, double (*x)(int, int))
+{
+  int i, used = snprintf(text, size, "# x1[m] alpha[m]\n");
+  for (i = 0; i <= n; i++)
+    used += snprintf(text + used, size - used, "%.17g %.17g\n", x(i, n),
+                     0.01 * x(i, n));
+}
+static double even(int i, int n) { return 4.0 * i / n; }
+static double uneven(int i, int n) { return 4.0 * i * i / ((double)n * n); }
+static double near(int i, int n) { return 4.0 * i / n + (i % n ? 1e-10 : 0); }
+static double off(int i, int n) { return 4.0 * i / n + (i % n ? 1e-8 : 0); }
+
+/* a shape file whose rows are not the 17 design nodes is resampled by
+   linear interpolation onto them, and the scene's note says so; rows
+   within the tolerance of the nodes are the nodes */
+static void test_resampled_files(void)
+{
+  static const struct { const char *name, *what; int n; double (*x)(int, int); int note; } f[] = {
+    {"fine.dat", "33 rows, every 1/8", 32, even, 1},
+    {"uneven.dat", "17 rows at x1 = 4 (i/16)^2", 16, uneven, 1},
+    {"off.dat", "17 rows 1e-8 off the nodes", 16, off, 1},
+    {"near.dat", "17 rows 1e-10 off the nodes (within 4e-9)", 16, near, 0}};
+  static const double peak[] = {0, 0.01, 0.04, 0.01, 0};  /* at x1 = 0..4 */
+  char text[8192], scene[256];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  size_t k;
+  int i, ok;
+  shape_scene("coarse.dat", "0 0\n1 0.01\n2 0.04\n3 0.01\n4 0\n", scene, sizeof scene);
+  if (check(scene_load(&s, scene, 0, NULL, &st) == 0, "a coarse shape of 5 rows loads: %s", st.msg)) {
+    for (ok = 1, i = 0; i <= 16; i++) {
+      int j = i / 4 < 3 ? i / 4 : 3;
+      double t = (i - 4.0 * j) / 4;
+      ok &= fabs(s.alpha0[i] - ((1 - t) * peak[j] + t * peak[j + 1])) <= 1e-17;
+    }
+    check(ok && strstr(s.note, "coarse.dat: 5 rows on [0, 4] resampled by linear "
+                       "interpolation onto the N + 1 = 17 design nodes"),
+          "5 rows are resampled onto the 17 nodes, and the note says so: %s", s.note);
+    scene_free(&s);
+  }
+  for (k = 0; k < sizeof f / sizeof f[0]; k++) {
+    linear_rows(text, sizeof text, f[k].n, f[k].x);
+    shape_scene(f[k].name, text, scene, sizeof scene);
+    if (!check(scene_load(&s, scene, 0, NULL, &st) == 0, "%s: loads: %s", f[k].what, st.msg))
+      continue;
+    for (ok = 1, i = 0; i <= 16; i++)   /* as they are: bit for bit */
+      ok &= f[k].note ? fabs(s.alpha0[i] - 0.01 * (0.25 * i)) <= 1e-17
+                      : s.alpha0[i] == 0.01 * f[k].x(i, 16);
+    check(ok && (f[k].note ? strstr(s.note, "resampled") != NULL : !s.note[0]),
+          "%s: %s", f[k].what, f[k].note ? "resampled, alpha0 = 0.01 x1 at the "
+          "nodes to 1e-17, with a note" : "the file's alpha as it is, no note");
+    scene_free(&s);
+  }
+}
+
+/* shape files that are no shape on [a, b] = [0, 4] */
+static void test_shape_file_errors(void)
+{
+  static const struct { const char *name, *text, *what, *word; } f[] = {
+    {"short.dat", "0 0\n1 0.01\n", "a shape on [0, 1] for a body on [0, 4]",
+     "short.dat line 2: x1 = 1: a shape ends at x1 = b = 4"},
+    {"late.dat", "# x1 alpha\n0.5 0\n4 0\n", "a shape from 0.5",
+     "late.dat line 2: x1 = 0.5: a shape begins at x1 = a = 0"},
+    {"repeat.dat", "0 0\n2 0.01\n2 0.02\n4 0\n", "x1 repeated",
+     "repeat.dat line 3: x1 = 2 does not increase (line 2 has 2)"},
+    {"reverse.dat", "4 0\n3 0.01\n0 0\n", "x1 decreasing",
+     "reverse.dat line 2: x1 = 3 does not increase (line 1 has 4)"},
+    {"column.dat", "0.01\n0.02\n", "one column",
+     "column.dat line 1: 1 number: a row of a shape file is x1 alpha"},
+    {"three.dat", "0 0 0\n4 0 0\n", "three columns",
+     "three.dat line 1: 3 numbers"},
+    {"one.dat", "# x1 alpha\n0 0\n", "one row", "one.dat has 1 row x1 alpha"},
+    {"none.dat", "# x1 alpha\n\n", "no row", "none.dat has 0 rows x1 alpha"},
+    {"hex.dat", "0 0\n4 0x1p-7\n", "a hexadecimal alpha",
+     "hex.dat line 2: '0x1p-7' is a hexadecimal number"},
+  };
+  char scene[256];
+  size_t k;
+  for (k = 0; k < sizeof f / sizeof f[0]; k++) {
+    shape_scene(f[k].name, f[k].text, scene, sizeof scene);
+    expect(f[k].what, scene, 0, NULL, "design.file", f[k].word);
+  }
+}
+
 /* initial = file: comments, blank lines, two columns, relative path */
 static void test_shape_file(void)
 {
@@ -216,10 +360,13 @@ static void test_shape_file(void)
   write_file("file.scene", text, scene, sizeof scene);
   if (check(scene_load(&s, scene, 0, NULL, &st) == 0,
             "initial = file loads relative to the scene: %s", st.msg)) {
-    for (i = 0; i <= 16; i++) ok &= fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
-    check(ok, "initial = file: the last column is alpha0");
+    for (i = 0; i <= 16; i++) ok &= s.alpha0[i] == strtod("0.001", NULL) * i
+                                     || fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
+    check(ok && !s.note[0], "initial = file: rows at the 17 nodes give alpha0 "
+          "as they are, without a note");
     scene_free(&s);
   }
+  test_resampled_files();
 }
 
 /* NUL bytes: in a line (which would otherwise look overlong), in the
@@ -252,19 +399,51 @@ static void test_nul_bytes(void)
 }
 
 /* the errors of the file's syntax and names */
+/* lines longer than inih's buffer: a comment of any length (a whole line
+   after ';', '#' or blanks, or after a value), then a syntax error whose
+   line number counts the long ones; a value line of 300 characters is
+   refused, and a NUL byte in a long comment */
+static void test_long_lines(void)
+{
+  char text[8192], path[256], c[1001], with[4096], v[301];
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  memset(c, 'c', sizeof c - 1);
+  c[sizeof c - 1] = '\0';
+  snprintf(with, sizeof with, "\n;%s\n#%s\n   ;%s\nR = 3 ;%s\n", c, c, c, c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-comments.scene", text, path, sizeof path);
+  if (check(scene_load(&s, path, 0, NULL, &st) == 0 && s.problem.R == 3,
+            "comments of 1000 characters (whole lines, indented, after a "
+            "value) are read past: %s", st.msg))
+    scene_free(&s);
+  snprintf(with, sizeof with, "\n;%s\nR = 3\noops\n", c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-syntax.scene", text, path, sizeof path);
+  expect("a syntax error after a long comment: its line", path, 0, NULL,
+         "line 17", "syntax error");
+  memset(v, '1', sizeof v - 1);
+  v[sizeof v - 1] = '\0';
+  snprintf(with, sizeof with, "\nR = %s\n", v);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  write_file("long-value.scene", text, path, sizeof path);
+  expect("a value line of 304 characters", path, 0, NULL, "line 15",
+         "longer than 198 characters (only a comment may be longer)");
+  snprintf(with, sizeof with, "\n;%s", c);
+  edit(text, sizeof text, "\nR = 3\n", with);
+  memcpy(strstr(text, "cccc") + 500, "\0", 1);
+  write_bytes("long-nul.scene", text, strlen(text) + strlen(text + strlen(text) + 1) + 1,
+              path, sizeof path);
+  expect("a NUL byte in a long comment", path, 0, NULL, "line 15", "NUL byte");
+}
+
 static void test_syntax_errors(void)
 {
-  char text[4096], path[256], line[300];
-  memset(line, 'x', sizeof line);
-  memcpy(line, "\n; ", 3);
-  line[sizeof line - 2] = '\n';
-  line[sizeof line - 1] = '\0';
+  char text[4096], path[256];
   edit(text, sizeof text, "\nP2 = -5.75e8\n", "\nP2 = -5.75e8\noops\n");
   write_file("syntax.scene", text, path, sizeof path);
   expect("syntax error", path, 0, NULL, "line 29", "syntax error");
-  edit(text, sizeof text, "\nR = 3\n", line);
-  write_file("long.scene", text, path, sizeof path);
-  expect("overlong line", path, 0, NULL, "line 15", "longer than");
+  test_long_lines();
   expect_edit("continuation line", "\nb = 4\n", "\nb = 4\n  gamma = 1\n",
               "geometry.b", "indented");
   expect_edit("key before any section", "[geometry]\n", "x = 1\n[geometry]\n",
@@ -304,6 +483,47 @@ static void test_number_errors(void)
               "not an integer");
   expect_edit("integer out of range", "\nN = 16\n", "\nN = 99999999999\n",
               "design.N", "out of the range of an int");
+  expect_edit("hexadecimal number 0x10", "\nE = 2.15e11\n", "\nE = 0x10\n",
+              "material.E", "a hexadecimal number: write it in decimal");
+  expect_edit("hexadecimal number -0x1p-3", "\nline_end = 0.05\n",
+              "\nline_end = -0x1p-3\n", "design.line_end", "hexadecimal");
+  expect_edit("hexadecimal integer 0x10", "\nN = 16\n", "\nN = 0x10\n",
+              "design.N", "a hexadecimal number: write it in decimal");
+  expect_edit("infinity", "\nC0 = 0.05\n", "\nC0 = -Infinity\n",
+              "design.C0", "not a finite number");
+  expect_edit("a number without digits", "\nC0 = 0.05\n", "\nC0 = .e5\n",
+              "design.C0", "not a number");
+  expect_edit("an exponent without digits", "\nC0 = 0.05\n", "\nC0 = 5e+\n",
+              "design.C0", "not a number");
+  expect_edit("a sign without digits", "\nN = 16\n", "\nN = -\n",
+              "design.N", "not an integer");
+}
+
+/* magnitudes outside the window in which every product is finite */
+static void test_magnitude_errors(void)
+{
+  const char *p2 = "\nP2 = -5.75e8\n";
+  expect_edit("E above 1e30", "\nE = 2.15e11\n", "\nE = 1e308\n",
+              "material.E", "[1e-30, 1e30]");
+  expect_edit("E below 1e-30", "\nE = 2.15e11\n", "\nE = 1e-300\n",
+              "material.E", "[1e-30, 1e30]");
+  expect_edit("b - a above 1e30", "\nb = 4\n", "\nb = 2e30\n",
+              "geometry.b", "b - a = 2e+30 must lie in [1e-30, 1e30]");
+  expect_edit("b - a below 1e-30", "\nb = 4\n", "\nb = 1e-31\n",
+              "geometry.b", "b - a = 1e-31 must lie in [1e-30, 1e30]");
+  expect_edit("a traction 4.7e288 E", p2, "\nP2 = -1e300\n", "top.P2",
+              "|P2| / E = 4.65e+288: a load must be 0 or lie within");
+  expect_edit("a traction 4.7e-312 E", p2, "\nP2 = -5.75e8\nP1 = 1e-300\n",
+              "top.P1", "|P1| / E = 4.65e-312");
+  expect_edit("a body force 1.9e289 E / (b - a)", p2,
+              "\nP2 = -5.75e8\n[body_force]\nF2 = -1e300\n", "body_force.F2",
+              "|F2| (b - a) / E = 1.86e+289");
+  expect_edit("a slip bound 4.7e-302 E", p2,
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e-290\n",
+              "contact.g", "g / E = 4.65e-302");
+  expect_edit("a friction coefficient above 1e30", p2,
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 1e31\n",
+              "contact.friction", "must be <= 1e30");
 }
 
 /* values out of their range */
@@ -368,10 +588,7 @@ static void test_initial_errors(void)
               "design.arc_radius", "> 0");
   expect_edit("shape file missing", line, "initial = file\nfile = none.dat\n",
               "design.file", "cannot read");
-  write_file("short.dat", "0 0\n1 0.01\n", path, sizeof path);
-  expect_edit("shape file with wrong rows", line,
-              "initial = file\nfile = short.dat\n", "design.file",
-              "short.dat has 2 rows of values, expected N + 1 = 17");
+  test_shape_file_errors();
   write_file("nonnum.dat", "0 0\n1 abc\n", path, sizeof path);
   expect_edit("shape file with a non-number", line,
               "initial = file\nfile = nonnum.dat\n", "design.file",
@@ -502,9 +719,11 @@ int main(void)
   test_example_5_1();
   test_example_5_2();
   test_overrides();
+  test_switching();
   test_shape_file();
   test_syntax_errors();
   test_number_errors();
+  test_magnitude_errors();
   test_range_errors();
   test_initial_errors();
   test_condition_errors();

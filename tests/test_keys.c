@@ -1,0 +1,163 @@
+/* test_keys.c: the table of keys as `contactopt keys` prints it
+   (scene_keys_print, paper/scene.nw) against what the loader does.  For
+   every key printed with a default, the scene with the key deleted (-s
+   key=) and the scene with the key set to the printed default load to the
+   same Scene, bit for bit; a default printed for some words of its
+   selector ("100 (pdas), 100000 (psor, cgssor)") is tried with each word.
+   For every key printed as required, the scene without it is refused as
+   missing that key.  The base is Example 5.1, with the overrides that make
+   the key mean something (a loaded left side for left.P1, ...).  The names
+   themselves (every key printed is accepted, every key accepted is
+   printed) are checked by tests/keys.sh.  Run from the repository root. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "check.h"
+#include "same.h"
+#include "scene.h"
+
+static const char *base = "data/example-5.1.scene";
+static char shape[64];          /* a shape file for design.file */
+
+/* the overrides that make a key mean something in the base, by the first
+   prefix of section.key that matches */
+#define NO_ARC "design.arc_x1=", "design.arc_x2=", "design.arc_radius="
+static struct { const char *prefix, *over[8]; } enable[] = {
+  {"left.bc", {NULL}},
+  {"left.", {"left.bc=traction", "left.from=0.5", "left.to=1",
+             "left.P1=1e6", "left.P2=1e6"}},
+  {"right.bc", {NULL}},
+  {"right.", {"right.bc=traction", "right.from=0.5", "right.to=1",
+              "right.P1=1e6", "right.P2=1e6"}},
+  {"top.bc", {"top.from=", "top.to=", "top.P1=", "top.P2="}},
+  {"top.", {"top.P1=1e6"}},
+  {"design.line", {"design.initial=line", NO_ARC, "design.line_start=0",
+                   "design.line_end=0.05"}},
+  {"design.constant", {"design.initial=constant", NO_ARC,
+                       "design.constant=0.02"}},
+  {"design.file", {"design.initial=file", NO_ARC, shape}},
+  {"contact.g", {"contact.model=tresca", "contact.g=1e6"}},
+  {"contact.friction", {"contact.model=coulomb", "contact.friction=0.2"}},
+};
+
+/* ov = the overrides enabling name, then more (NULL-ended); their number */
+static int overrides(const char *name, char **ov, char *const *more)
+{
+  size_t i;
+  int n = 0, j;
+  for (i = 0; i < sizeof enable / sizeof enable[0]; i++)
+    if (strncmp(name, enable[i].prefix, strlen(enable[i].prefix)) == 0) {
+      for (j = 0; j < 8 && enable[i].over[j]; j++)
+        ov[n++] = (char *)enable[i].over[j];
+      break;
+    }
+  for (; *more; more++) ov[n++] = *more;
+  return n;
+}
+
+/* the fields of a printed line, split at runs of two or more blanks */
+static int split(char *line, char **field, int max)
+{
+  int n = 0;
+  char *p = line;
+  line[strcspn(line, "\n")] = '\0';
+  while (*p && n < max) {
+    field[n++] = p;
+    p = strstr(p, "  ");
+    if (!p) break;
+    *p = '\0';
+    for (p += 2; *p == ' '; p++) continue;
+  }
+  return n;
+}
+
+/* name with the selector's word sel (or none) loads to the same scene with
+   name deleted as with name = value */
+static void same_default(const char *name, const char *value, const char *sel)
+{
+  char del[64], set[96], *ov[24], *more[3] = {NULL, NULL, NULL};
+  Scene a, b;
+  Status sa = {STATUS_OK, ""}, sb = {STATUS_OK, ""};
+  const char *diff = "";
+  int n, ra, rb;
+  snprintf(del, sizeof del, "%s=", name);
+  snprintf(set, sizeof set, "%s=%s", name, value);
+  more[0] = (char *)sel, more[sel ? 1 : 0] = del;
+  ra = scene_load(&a, base, n = overrides(name, ov, more), ov, &sa);
+  more[sel ? 1 : 0] = set;
+  rb = scene_load(&b, base, overrides(name, ov, more), ov, &sb);
+  if (!ra && !rb) diff = scene_differs(&a, &b);
+  check(!ra && !rb && !diff, "%s: the printed default %s%s%s is the loader's "
+        "(%d overrides)%s%s%s%s", name, value, sel ? " with " : "",
+        sel ? sel : "", n, ra ? sa.msg : "", rb ? sb.msg : "",
+        diff ? " differ in " : "", diff ? diff : "");
+  scene_free(&a);
+  scene_free(&b);
+}
+
+/* a default printed as "V (w, w), V (w)": each V with each of its words */
+static void same_defaults(const char *name, const char *text)
+{
+  char buf[128], sel[96], *p = buf, *open, *close, *w, *save = NULL;
+  const char *selector = strncmp(name, "solver.", 7) == 0 ? "solver.state"
+                                                          : "optimizer.method";
+  snprintf(buf, sizeof buf, "%s", text);
+  while ((open = strstr(p, " (")) && (close = strchr(open, ')'))) {
+    *open = *close = '\0';
+    for (w = strtok_r(open + 2, ", ", &save); w; w = strtok_r(NULL, ", ", &save)) {
+      snprintf(sel, sizeof sel, "%s=%s", selector, w);
+      same_default(name, p, sel);
+    }
+    p = close + 1;
+    if (*p == ',') p += 2;          /* ", " before the next value */
+  }
+}
+
+/* name without a default is refused as missing when not given */
+static void required(const char *name)
+{
+  char del[64], *ov[24], *more[2] = {del, NULL};
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc;
+  snprintf(del, sizeof del, "%s=", name);
+  rc = scene_load(&s, base, overrides(name, ov, more), ov, &st);
+  check(rc == STATUS_INPUT && strstr(st.msg, name)
+        && strstr(st.msg, "missing required key"),
+        "%s: printed as required, and refused when not given: %s", name,
+        st.msg);
+  scene_free(&s);
+}
+
+int main(void)
+{
+  char line[512], *f[5];
+  FILE *fp = tmpfile();
+  int n = 0, i;
+  FILE *sh;
+  snprintf(shape, sizeof shape, "design.file=/tmp/test_keys.%d.dat", (int)getpid());
+  if (!fp || !(sh = fopen(shape + 12, "w"))) {
+    perror("test_keys");
+    return 1;
+  }
+  for (i = 0; i <= 16; i++) fprintf(sh, "%g %g\n", 0.25 * i, 0.001 * i);
+  fclose(sh);
+  scene_keys_print(fp, 0);
+  rewind(fp);
+  if (!fgets(line, sizeof line, fp)) return 1;        /* the header */
+  while (fgets(line, sizeof line, fp)) {
+    n++;
+    if (split(line, f, 5) != 5) {
+      check(0, "a printed line has five fields: %s", line);
+      continue;
+    }
+    if (strcmp(f[2], "required") == 0) required(f[0]);
+    else if (strchr(f[2], '(')) same_defaults(f[0], f[2]);
+    else same_default(f[0], f[2], NULL);
+  }
+  check(n == 50, "contactopt keys prints %d keys", n);
+  fclose(fp);
+  unlink(shape + 12);
+  return check_done();
+}
