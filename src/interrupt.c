@@ -1,4 +1,4 @@
-#line 321 "paper/main.nw"
+#line 350 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

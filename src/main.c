@@ -10,37 +10,8 @@
 #include "output.h"
 #include "usage.h"
 #include "interrupt.h"
-#line 143 "paper/main.nw"
-#define MAX_OVERRIDES 64
-typedef struct {
-  const char *scene;                   /* the scene file */
-  const char *outdir;                  /* -o, or NULL for out/NAME */
-  const char *matrix_market;           /* --matrix-market FILE, or NULL */
-  int noverride;
-  char *override[MAX_OVERRIDES];       /* -s section.key=value */
-} Args;
-
-static int args_read(int argc, char **argv, Args *a, Status *st)
-{
-  memset(a, 0, sizeof *a);
-  for (int k = 2; k < argc; k++) {
-    const char *s = argv[k];
-    int more = k + 1 < argc;
-    if (!strcmp(s, "-o") && more) a->outdir = argv[++k];
-    else if (!strcmp(s, "--matrix-market") && more) a->matrix_market = argv[++k];
-    else if (!strcmp(s, "-s") && more && a->noverride == MAX_OVERRIDES)
-      return status_set(st, STATUS_INPUT, "command line: more than %d -s",
-                        MAX_OVERRIDES);
-    else if (!strcmp(s, "-s") && more) a->override[a->noverride++] = argv[++k];
-    else if (s[0] != '-' && !a->scene) a->scene = s;
-    else return status_set(st, STATUS_INPUT, "command line: %s: %s", s,
-                           s[0] == '-' ? "unknown option or missing value"
-                                       : "more than one scene");
-  }
-  if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
-  return STATUS_OK;
-}
-#line 185 "paper/main.nw"
+#include "args.h"
+#line 199 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -72,24 +43,36 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 233 "paper/main.nw"
+#line 252 "paper/main.nw"
+/* after rc: effective.scene, the stiffness matrix if asked, the commit */
+static int finish(Run *r, Output *o, int rc, Status *st)
+{
+  FILE *f = rc ? NULL : output_open(o, "effective.scene", st);
+  if (!rc && !f) rc = st->code;
+  if (f) {
+    int wrc = scene_write(&r->s, f, st), crc = output_close(o, f, st);
+    rc = wrc ? wrc : crc;
+  }
+  if (!rc && r->a->matrix_market)
+    rc = output_matrix_market(r->a->matrix_market, r->md, st);
+  return output_end(o, rc, st);
+}
+#line 268 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
   Model *md = r->md;
   int rc = model_solve(md, r->s.alpha0, st);
   if (rc || (rc = output_begin(&o, r->dir, st))) return rc;
-  rc = output_solve(&o, &r->run, md, r->s.alpha0, st);
-  if (!rc && r->a->matrix_market)
-    rc = output_matrix_market(r->a->matrix_market, md, st);
-  if ((rc = output_end(&o, rc, st))) return rc;
+  if ((rc = finish(r, &o, output_solve(&o, &r->run, md, r->s.alpha0, st), st)))
+    return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
          "%d of %d contact nodes active, %.3f s -> %s/\n", r->s.path, md->energy,
          md->report.kkt, md->report.iterations, r->run.state_solver,
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 258 "paper/main.nw"
+#line 291 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -100,7 +83,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 278 "paper/main.nw"
+#line 311 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -109,19 +92,15 @@ static int command_gradcheck(Run *r, Status *st)
   double last = model_clock();
   int rc = gc ? grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &last, st)
               : (int) st->code;
-  if (!rc && !(rc = output_begin(&o, r->dir, st))) {
-    rc = output_gradcheck(&o, &r->run, r->md, gc, st);
-    if (!rc && r->a->matrix_market)
-      rc = output_matrix_market(r->a->matrix_market, r->md, st);
-    rc = output_end(&o, rc, st);
-  }
+  if (!rc && !(rc = output_begin(&o, r->dir, st)))
+    rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
   if (!rc)
     printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
            r->s.path, gc->err[gc->worst], gc->worst, r->dir);
   grad_check_free(gc);
   return rc;
 }
-#line 351 "paper/main.nw"
+#line 380 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -131,7 +110,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 367 "paper/main.nw"
+#line 396 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -144,7 +123,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 386 "paper/main.nw"
+#line 415 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -169,10 +148,8 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
-    if (!rc && r->a->matrix_market)
-      rc = output_matrix_market(r->a->matrix_market, r->md, st);
     interrupt_catch(0);
-    rc = output_end(&o, rc, st);
+    rc = finish(r, &o, rc, st);
   }
   if (!rc)
     printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
@@ -193,7 +170,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 445 "paper/main.nw"
+#line 472 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -207,7 +184,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 466 "paper/main.nw"
+#line 493 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

@@ -60,6 +60,18 @@ check "a dead run's staging folder is removed by the next run; a live one's is n
   test ! -e $d.partial-$dead -a -d $d.partial-$$
 rmdir $d.partial-$$
 
+# ---- effective.scene: the run's scene, every default written ------------------
+tr=data/example-5.1-tresca.scene
+for cmd in solve gradcheck optimize; do
+  d=$TMP/eff-$cmd
+  $BIN $cmd $tr -o $d -s mesh.refine=2 -s contact.g=2e8 -s material.model=plane_strain >/dev/null 2>&1
+  $BIN $cmd $d/effective.scene -o $d-again >/dev/null 2>&1
+  f=contact.dat; [ $cmd = optimize ] && f=final/contact.dat; [ $cmd = gradcheck ] && f=gradient.dat
+  check "$cmd: effective.scene in the folder reproduces the run bit for bit ($f, energy $(value energy $d))" \
+    test -s $d/effective.scene -a "$(value energy $d)" = "$(value energy $d-again)" -a \
+         "$(md5sum < $d/$f)" = "$(md5sum < $d-again/$f)"
+done
+
 # ---- gradcheck progress, --matrix-market ------------------------------------------------
 $BIN gradcheck $ex -o $TMP/gc -s mesh.refine=8 --matrix-market $TMP/gc.mtx >$TMP/out 2>$TMP/err
 check "gradcheck at N = 128 prints progress lines, the last at node 129 of 129" \
