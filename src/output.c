@@ -332,7 +332,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 701 "paper/output.nw"
+#line 708 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -379,7 +379,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 648 "paper/output.nw"
+#line 653 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -393,14 +393,16 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
             h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
   if ((rc = output_close(o, f, st))) return rc;
   if (!(f = output_open(o, "iterates.dat", st))) return st->code;
-  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration\n");
-  for (int k = 0; k < h->n; k++, fprintf(f, "\n"))
+  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration, "
+             "two blank lines apart (gnuplot: index k)\n");
+  for (int k = 0; k < h->n; k++)
     for (int i = 0; i < h->ndesign; i++)
-      fprintf(f, "%d %d %.10g %.17g\n", h->p[k].iteration, i,
-              p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
+      fprintf(f, "%s%d %d %.10g %.17g\n", k && !i ? "\n\n" : "",
+              h->p[k].iteration, i, p->a + i * (p->b - p->a) / p->N,
+              h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 679 "paper/output.nw"
+#line 686 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -419,7 +421,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 717 "paper/output.nw"
+#line 724 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
