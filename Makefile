@@ -49,6 +49,7 @@ endif
 # Debian packages the package needs, and the command that proves each one.
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
+            python3-meshio \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 

@@ -1,6 +1,7 @@
-#line 171 "paper/output.nw"
+#line 178 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,7 +9,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 212 "paper/output.nw"
+#line 227 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -31,7 +32,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 239 "paper/output.nw"
+#line 254 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -41,7 +42,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 252 "paper/output.nw"
+#line 267 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -70,7 +71,7 @@ int output_close(Output *o, FILE *f, Status *st)
                       o->file[o->nfiles - 1]);
   return STATUS_OK;
 }
-#line 285 "paper/output.nw"
+#line 300 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
@@ -106,19 +107,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 324 "paper/output.nw"
+#line 339 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 337 "paper/output.nw"
+#line 352 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 346 "paper/output.nw"
+#line 361 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -126,7 +127,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 356 "paper/output.nw"
+#line 371 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -137,7 +138,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 369 "paper/output.nw"
+#line 384 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -153,19 +154,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 393 "paper/output.nw"
+#line 408 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 384 "paper/output.nw"
+#line 399 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 402 "paper/output.nw"
+#line 417 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -179,7 +180,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 418 "paper/output.nw"
+#line 433 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -197,54 +198,212 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 477 "paper/output.nw"
-static void output_vtu_friction(FILE *f, const Model *md)
+#line 471 "paper/output.nw"
+typedef struct {
+  const Model *md;          /* the state written */
+  const double *X;          /* its design */
+  double *stress;           /* 5 per triangle: sigma11, sigma22, sigma12,
+                               sigma33, von Mises [Pa] */
+} Vtu_state;
+
+typedef struct {
+  const char *section;      /* PointData, CellData, Points or Cells */
+  const char *name;         /* the array's Name */
+  const char *type;         /* Float64, Int32 or UInt8 */
+  int components;           /* values per point or per cell */
+  size_t count;             /* points or cells */
+  size_t size;              /* bytes per value */
+  int which;                /* the quantity, for a fill of several */
+  void (*fill)(const Vtu_state *s, int which, void *values);
+} Vtu_array;
+#define VTU_MAX_ARRAYS 16
+
+static size_t vtu_bytes(const Vtu_array *a)
 {
-  const Dofs *d = md->dofs;
-  fprintf(f, "<DataArray type=\"Float64\" Name=\"tangential_force\" "
-             "format=\"ascii\">\n");
-  for (int node = 0, k = 0; node < md->mesh->nnodes; node++) {
-    int here = k < d->nt && d->tangent_col[k] == node;  /* row 0 first */
-    fprintf(f, "%.15g\n", here ? md->T[d->nc + k] : 0.0);
-    k += here;
-  }
-  fprintf(f, "</DataArray>\n");
+  return a->count * a->components * a->size;
 }
-#line 439 "paper/output.nw"
-static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
+#line 529 "paper/output.nw"
+static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
-  const Mesh *m = md->mesh;
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++) {
+    v[3 * k] = output_u(s->md, k, 0);
+    v[3 * k + 1] = output_u(s->md, k, 1);
+    v[3 * k + 2] = 0;
+  }
+}
+
+/* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
+static void vtu_contact(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int c = 0; c < d->nc; c++) {
+    int i = d->contact_col[c];
+    v[i] = which == 0 ? s->md->Q[d->contact[c]] + s->X[i]
+                      : model_pressure(s->md, c);
+  }
+}
+
+static void vtu_contact_node(const Vtu_state *s, int which, void *values)
+{
+  uint8_t *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes);
+  for (int c = 0; c < s->md->dofs->nc; c++) v[s->md->dofs->contact_col[c]] = 1;
+}
+
+/* the nodal friction force T_t [N/m], 0 where u1 is held */
+static void vtu_tangential(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
+}
+#line 589 "paper/output.nw"
+static void vtu_triangle_stress(const Model *md, int t, double s[5])
+{
+  double xy[6], q[6], gx[3], gy[3];
+  long double e[3];
+  const double (*D)[3] = md->hooke.D;
+  fem_element_xy(md->mesh, t, xy);
+  fem_element_q(md->mesh, md->dofs, md->Q, t, q);
+  double a2 = fem_element_gradients(xy, gx, gy);
+  for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
+  fem_element_strain(gx, gy, q, e);      /* the strain itself */
+  for (int r = 0; r < 3; r++)
+    s[r] = (double) (D[r][0] * e[0] + D[r][1] * e[1] + D[r][2] * e[2]);
+  s[3] = md->problem->model == MODEL_PLANE_STRAIN
+       ? (double) (D[0][1] * (e[0] + e[1])) : 0.0;
+  s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
+                     + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
+}
+
+static void vtu_stress(const Vtu_state *s, int which, void *values)
+{
+  double *v = values;
+  for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
+}
+#line 619 "paper/output.nw"
+static void vtu_points(const Vtu_state *s, int which, void *values)
+{
+  const double *xy = s->md->mesh->xy;
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++)
+    v[3 * k] = xy[2 * k], v[3 * k + 1] = xy[2 * k + 1], v[3 * k + 2] = 0;
+}
+
+/* which 0: the connectivity, 3 vertices per triangle; 1: the offsets */
+static void vtu_cells(const Vtu_state *s, int which, void *values)
+{
+  const Mesh *m = s->md->mesh;
+  int32_t *v = values;
+  for (int t = 0; t < m->ntri; t++)
+    if (which == 1) v[t] = 3 * (t + 1);
+    else for (int k = 0; k < 3; k++) v[3 * t + k] = m->tri[3 * t + k];
+}
+
+static void vtu_types(const Vtu_state *s, int which, void *values)
+{
+  (void) which;
+  memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
+}
+#line 499 "paper/output.nw"
+static const char *const vtu_stress_names[5] =
+  { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
+
+static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
+{
+  size_t np = md->mesh->nnodes, nt = md->mesh->ntri, d = sizeof(double);
+  int n = 0;
+  a[n++] = (Vtu_array) { "PointData", "displacement", "Float64", 3, np, d, 0, vtu_displacement };
+  a[n++] = (Vtu_array) { "PointData", "gap", "Float64", 1, np, d, 0, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "pressure", "Float64", 1, np, d, 1, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "contact_node", "UInt8", 1, np, 1, 0, vtu_contact_node };
+  if (md->dofs->nt)
+    a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d, 0, vtu_tangential };
+  for (int k = 0; k < 5; k++)
+    a[n++] = (Vtu_array) { "CellData", vtu_stress_names[k], "Float64", 1, nt, d, k, vtu_stress };
+  a[n++] = (Vtu_array) { "Points", "Points", "Float64", 3, np, d, 0, vtu_points };
+  a[n++] = (Vtu_array) { "Cells", "connectivity", "Int32", 1, 3 * nt, 4, 0, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "offsets", "Int32", 1, nt, 4, 1, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
+  return n;
+}
+#line 648 "paper/output.nw"
+static const char *vtu_byte_order(void)
+{
+  const uint16_t one = 1;
+  return *(const uint8_t *) &one ? "LittleEndian" : "BigEndian";
+}
+
+static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
+{
+  unsigned long long offset = 0;
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+             "version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
+             "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" "
+             "NumberOfCells=\"%d\">\n", vtu_byte_order(), m->nnodes, m->ntri);
+  for (int k = 0; k < n; k++) {
+    if (k > 0 && strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "</%s>\n", a[k - 1].section);
+    if (k == 0 || strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "<%s>\n", a[k].section);
+    fprintf(f, "<DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
+               "format=\"appended\" offset=\"%llu\"/>\n", a[k].type, a[k].name,
+            a[k].components, offset);
+    offset += sizeof(uint64_t) + vtu_bytes(&a[k]);
+  }
+  fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
+             "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
+}
+#line 679 "paper/output.nw"
+static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
+                     void *values)
+{
+  for (int k = 0; k < n; k++) {
+    uint64_t bytes = vtu_bytes(&a[k]);
+    a[k].fill(s, a[k].which, values);
+    fwrite(&bytes, sizeof bytes, 1, f);
+    fwrite(values, 1, bytes, f);
+  }
+  fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
+}
+#line 695 "paper/output.nw"
+static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
+{
+  Vtu_array a[VTU_MAX_ARRAYS];
+  int n = vtu_arrays(md, a);
+  size_t most = 0, nt = md->mesh->ntri;
+  for (int k = 0; k < n; k++) most = vtu_bytes(&a[k]) > most ? vtu_bytes(&a[k]) : most;
+  Vtu_state s = { md, X, malloc(5 * nt * sizeof(double)) };
+  void *values = malloc(most);
+  if (!s.stress || !values) {
+    free(s.stress), free(values);
+    return status_set(st, STATUS_SYSTEM, "solution.vtu: out of memory");
+  }
+  for (size_t t = 0; t < nt; t++) vtu_triangle_stress(md, (int) t, s.stress + 5 * t);
+  vtu_header(f, md->mesh, a, n);
+  vtu_data(f, &s, a, n, values);
+  free(s.stress), free(values);
+  return STATUS_OK;
+}
+#line 716 "paper/output.nw"
+static int output_vtu(Output *o, const char *sub, const Model *md,
+                      const double *X, Status *st)
+{
   FILE *f = output_open_in(o, sub, "solution.vtu", st);
   if (!f) return st->code;
-  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-             "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-             "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
-             "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-          m->nnodes, m->ntri);
-  for (int k = 0; k < m->nnodes; k++)
-    fprintf(f, "%.15g %.15g 0\n", m->xy[2 * k], m->xy[2 * k + 1]);
-  fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
-             "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
-  for (int t = 0; t < m->ntri; t++)
-    fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
-  
-#line 461 "paper/output.nw"
-fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
-for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
-fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-for (int t = 0; t < m->ntri; t++) fprintf(f, "5\n");
-fprintf(f, "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
-           "<DataArray type=\"Float64\" Name=\"displacement\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n");
-for (int k = 0; k < m->nnodes; k++)
-  fprintf(f, "%.15g %.15g 0\n", output_u(md, k, 0), output_u(md, k, 1));
-fprintf(f, "</DataArray>\n");
-if (md->dofs->nt) output_vtu_friction(f, md);
-fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 456 "paper/output.nw"
-  return output_close(o, f, st);
+  int rc = vtu_write(f, md, X, st);
+  int rc_close = output_close(o, f, st);
+  return rc ? rc : rc_close;
 }
-#line 492 "paper/output.nw"
+#line 728 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -253,11 +412,11 @@ int output_state(Output *o, const char *sub, const Model *md,
       || (rc = output_contact(o, sub, md, X, st))
       || (rc = output_nodes(o, sub, md, st))
       || (rc = output_triangles(o, sub, md, st))
-      || (rc = output_vtu(o, sub, md, st)))
+      || (rc = output_vtu(o, sub, md, X, st)))
     return rc;
   return STATUS_OK;
 }
-#line 536 "paper/output.nw"
+#line 772 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -270,7 +429,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 512 "paper/output.nw"
+#line 748 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -290,7 +449,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 552 "paper/output.nw"
+#line 788 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -305,7 +464,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 575 "paper/output.nw"
+#line 811 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -332,7 +491,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 708 "paper/output.nw"
+#line 944 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -343,7 +502,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 609 "paper/output.nw"
+#line 845 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -379,7 +538,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 653 "paper/output.nw"
+#line 889 "paper/output.nw"
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
@@ -402,7 +561,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 686 "paper/output.nw"
+#line 922 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -421,7 +580,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 724 "paper/output.nw"
+#line 960 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
