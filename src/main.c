@@ -8,7 +8,7 @@
 #include "scene.h"
 #include "output.h"
 #include "usage.h"
-#line 108 "paper/main.nw"
+#line 109 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
@@ -38,7 +38,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 149 "paper/main.nw"
+#line 150 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -65,7 +65,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 183 "paper/main.nw"
+#line 184 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -82,7 +82,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 204 "paper/main.nw"
+#line 205 "paper/main.nw"
 static int refuse_coulomb(const Run *r, const char *command, Status *st)
 {
   if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
@@ -90,7 +90,7 @@ static int refuse_coulomb(const Run *r, const char *command, Status *st)
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
-#line 221 "paper/main.nw"
+#line 222 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -104,7 +104,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 245 "paper/main.nw"
+#line 248 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -113,7 +113,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 260 "paper/main.nw"
+#line 263 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -126,7 +126,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 279 "paper/main.nw"
+#line 282 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -141,7 +141,8 @@ static int command_optimize(Run *r, Status *st)
   else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
-    if (!(rc = optimize_start(r, &B, X, &moved, st))
+    if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
+        && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = output_state(&o, "final", r->md, X, st))
@@ -167,7 +168,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 327 "paper/main.nw"
+#line 331 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

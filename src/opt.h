@@ -19,7 +19,7 @@ typedef struct {
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 161 "paper/opt.nw"
+#line 168 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -32,7 +32,7 @@ typedef struct {
 
 typedef void (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 175 "paper/opt.nw"
+#line 182 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -45,7 +45,7 @@ typedef struct {
   double state_seconds;   /* of it, state solves and gradients */
 } Opt_report;
 
-#line 189 "paper/opt.nw"
+#line 196 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);

@@ -1,15 +1,16 @@
-#line 178 "paper/output.nw"
+#line 199 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output.h"
 
-#line 227 "paper/output.nw"
+#line 254 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -32,7 +33,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 254 "paper/output.nw"
+#line 281 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -42,7 +43,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 267 "paper/output.nw"
+#line 294 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -63,21 +64,98 @@ FILE *output_open(Output *o, const char *name, Status *st)
   return f;
 }
 
-int output_close(Output *o, FILE *f, Status *st)
+static int output_finish(FILE *f, const char *dir, const char *name,
+                         Status *st)
 {
   int bad = ferror(f);
   if (fclose(f) || bad)
-    return status_set(st, STATUS_SYSTEM, "%s/%s: write failed", o->dir,
-                      o->file[o->nfiles - 1]);
+    return status_set(st, STATUS_SYSTEM, "%s/%s: write failed", dir, name);
   return STATUS_OK;
 }
-#line 300 "paper/output.nw"
+
+int output_close(Output *o, FILE *f, Status *st)
+{
+  return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
+}
+#line 332 "paper/output.nw"
+static int output_folder(Output *o, const char *name, Status *st)
+{
+  char path[1300];
+  if (o->nfiles == OUTPUT_MAX_FILES)
+    return status_set(st, STATUS_SYSTEM, "%s: too many output files", o->dir);
+  snprintf(path, sizeof path, "%s/%s", o->stage, name);
+  if (output_mkdirs(path, st)) return st->code;
+  snprintf(o->file[o->nfiles++], sizeof o->file[0], "%s/", name);
+  return STATUS_OK;
+}
+
+static FILE *output_open_in_folder(Output *o, const char *folder,
+                                   const char *name, Status *st)
+{
+  char path[1300];
+  snprintf(path, sizeof path, "%s/%s/%s", o->stage, folder, name);
+  FILE *f = fopen(path, "w");
+  if (!f) status_set(st, STATUS_SYSTEM, "%s: cannot write: %s", path,
+                     strerror(errno));
+  return f;
+}
+#line 361 "paper/output.nw"
+static void output_remove_folder(const char *path)
+{
+  char file[1400];
+  DIR *d = opendir(path);
+  for (struct dirent *e; d && (e = readdir(d)); )
+    if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) {
+      snprintf(file, sizeof file, "%s/%s", path, e->d_name);
+      unlink(file);
+    }
+  if (d) closedir(d);
+  rmdir(path);
+}
+#line 376 "paper/output.nw"
+static int output_replace_folder(const char *from, const char *to, Status *st)
+{
+  char aside[1400];
+  snprintf(aside, sizeof aside, "%s.old-%ld", to, (long) getpid());
+  int had = !rename(to, aside);
+  if (rename(from, to)) {
+    int e = errno;
+    if (had) rename(aside, to);
+    return status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s",
+                      to, strerror(e));
+  }
+  if (had) output_remove_folder(aside);
+  return STATUS_OK;
+}
+#line 394 "paper/output.nw"
+static int output_move(Output *o, int k, Status *st)
+{
+  char from[1300], to[1300];
+  snprintf(from, sizeof from, "%s/%s", o->stage, o->file[k]);
+  snprintf(to, sizeof to, "%s/%s", o->dir, o->file[k]);
+  size_t n = strlen(to);
+  int folder = to[n - 1] == '/';
+  if (folder) to[n - 1] = '\0', from[strlen(from) - 1] = '\0';
+  char *slash = strrchr(to, '/');
+  *slash = '\0';
+  if (output_mkdirs(to, st)) return st ? st->code : STATUS_SYSTEM;
+  *slash = '/';
+  if (folder) return output_replace_folder(from, to, st);
+  if (rename(from, to))
+    return status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s",
+                      to, strerror(errno));
+  return STATUS_OK;
+}
+
+#line 414 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
   for (int k = o->nfiles - 1; k >= 0; k--) {
     snprintf(path, sizeof path, "%s/%s", o->stage, o->file[k]);
-    if (unlink_files) unlink(path);
+    size_t n = strlen(path);
+    if (unlink_files && path[n - 1] == '/') path[n - 1] = '\0', output_remove_folder(path);
+    else if (unlink_files) unlink(path);
     for (char *s; (s = strrchr(path, '/')) && s > path + strlen(o->stage); ) {
       *s = '\0';
       rmdir(path);
@@ -88,38 +166,29 @@ static void output_remove_stage(Output *o, int unlink_files)
 
 int output_commit(Output *o, Status *st)
 {
-  char from[1300], to[1300];
-  for (int k = 0; k < o->nfiles; k++) {
-    snprintf(from, sizeof from, "%s/%s", o->stage, o->file[k]);
-    snprintf(to, sizeof to, "%s/%s", o->dir, o->file[k]);
-    *strrchr(to, '/') = '\0';
-    if (output_mkdirs(to, st)) { output_abort(o); return st ? st->code : 1; }
-    snprintf(to, sizeof to, "%s/%s", o->dir, o->file[k]);
-    if (rename(from, to)) {
-      status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s", to,
-                 strerror(errno));
+  for (int k = 0; k < o->nfiles; k++)
+    if (output_move(o, k, st)) {
       output_abort(o);
-      return STATUS_SYSTEM;
+      return st ? st->code : STATUS_SYSTEM;
     }
-  }
   output_remove_stage(o, 0);
   return STATUS_OK;
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 339 "paper/output.nw"
+#line 446 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 352 "paper/output.nw"
+#line 459 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 361 "paper/output.nw"
+#line 468 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -127,7 +196,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 371 "paper/output.nw"
+#line 478 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -138,7 +207,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 384 "paper/output.nw"
+#line 491 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -154,19 +223,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 408 "paper/output.nw"
+#line 515 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 399 "paper/output.nw"
+#line 506 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 417 "paper/output.nw"
+#line 524 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -180,7 +249,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 433 "paper/output.nw"
+#line 540 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -198,7 +267,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 471 "paper/output.nw"
+#line 578 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -222,7 +291,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 529 "paper/output.nw"
+#line 636 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -264,7 +333,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 589 "paper/output.nw"
+#line 696 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -288,7 +357,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 619 "paper/output.nw"
+#line 726 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -313,7 +382,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 499 "paper/output.nw"
+#line 606 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -335,7 +404,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 648 "paper/output.nw"
+#line 755 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -362,7 +431,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 679 "paper/output.nw"
+#line 786 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -374,7 +443,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 695 "paper/output.nw"
+#line 802 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -393,7 +462,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 716 "paper/output.nw"
+#line 823 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -403,7 +472,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 728 "paper/output.nw"
+#line 835 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -416,7 +485,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 772 "paper/output.nw"
+#line 879 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -429,7 +498,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 748 "paper/output.nw"
+#line 855 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -449,7 +518,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 788 "paper/output.nw"
+#line 895 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -464,7 +533,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 811 "paper/output.nw"
+#line 918 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -491,7 +560,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 944 "paper/output.nw"
+#line 1122 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -502,7 +571,29 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 845 "paper/output.nw"
+#line 1012 "paper/output.nw"
+#define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
+
+static void history_vtu(Output_history *h, int iteration, const double *X)
+{
+  const Mesh *m = h->md->mesh;
+  char name[64], path[80];
+  for (int i = 0; i < m->ncol; i++)
+    if (m->xy[2 * i + 1] != X[i]) {
+      status_set(&h->vtu, STATUS_INPUT, "iterates/: the model is not at "
+                 "iterate %d (alpha_%d = %.17g, the mesh at %.17g)",
+                 iteration, i, X[i], m->xy[2 * i + 1]);
+      return;
+    }
+  snprintf(name, sizeof name, ITERATE_VTU, iteration);
+  snprintf(path, sizeof path, "iterates/%s", name);
+  FILE *f = output_open_in_folder(h->o, "iterates", name, &h->vtu);
+  if (!f) return;
+  if (vtu_write(f, h->md, X, &h->vtu)) fclose(f);
+  else output_finish(f, h->o->dir, path, &h->vtu);
+}
+
+#line 954 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -526,9 +617,18 @@ static int history_grow(Output_history *h)
 void output_history_add(Output_history *h, const Opt_progress *p,
                         const double *X)
 {
+  if (h->o && !h->vtu.code) history_vtu(h, p->iteration, X);
   if (h->failed || (h->n == h->size && history_grow(h))) return;
   memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
   h->p[h->n++] = *p;
+}
+
+int output_history_vtu(Output_history *h, Output *o, const Model *md,
+                       Status *st)
+{
+  int rc = output_folder(o, "iterates", st);
+  if (!rc) h->o = o, h->md = md;
+  return rc;
 }
 
 void output_history_free(Output_history *h)
@@ -538,20 +638,25 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 889 "paper/output.nw"
-int output_history(Output *o, const Problem *p, const Output_history *h,
-                   Status *st)
+#line 1077 "paper/output.nw"
+static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
-  int rc;
-  if (h->failed) return status_set(st, STATUS_SYSTEM, "optimize: out of memory");
-  FILE *f = output_open(o, "history.dat", st);
+  FILE *f = output_open(o, "iterates.pvd", st);
   if (!f) return st->code;
-  fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n");
   for (int k = 0; k < h->n; k++)
-    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
-            h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
-  if ((rc = output_close(o, f, st))) return rc;
-  if (!(f = output_open(o, "iterates.dat", st))) return st->code;
+    fprintf(f, "<DataSet timestep=\"%d\" part=\"0\" file=\"iterates/"
+               ITERATE_VTU "\"/>\n", h->p[k].iteration, h->p[k].iteration);
+  fputs("</Collection>\n</VTKFile>\n", f);
+  return output_close(o, f, st);
+}
+#line 1041 "paper/output.nw"
+static int history_iterates(Output *o, const Problem *p,
+                            const Output_history *h, Status *st)
+{
+  FILE *f = output_open(o, "iterates.dat", st);
+  if (!f) return st->code;
   fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration, "
              "two blank lines apart (gnuplot: index k)\n");
   for (int k = 0; k < h->n; k++)
@@ -561,7 +666,24 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
               h->X[(size_t) k * h->ndesign + i]);
   return output_close(o, f, st);
 }
-#line 922 "paper/output.nw"
+
+int output_history(Output *o, const Problem *p, const Output_history *h,
+                   Status *st)
+{
+  int rc;
+  if (h->failed) return status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  if (h->vtu.code) return status_set(st, h->vtu.code, "%s", h->vtu.msg);
+  FILE *f = output_open(o, "history.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
+  for (int k = 0; k < h->n; k++)
+    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
+            h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
+  if ((rc = output_close(o, f, st)) || (rc = history_iterates(o, p, h, st)))
+    return rc;
+  return h->o ? history_pvd(o, h, st) : STATUS_OK;
+}
+#line 1100 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -580,7 +702,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 960 "paper/output.nw"
+#line 1138 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

@@ -47,7 +47,8 @@ const char usage_optimize[] =
   "  -s section.key=value  override a key of the scene (repeatable)\n"
   "  -h, --help            this text\n\n"
   "DIR receives history.dat, iterates.dat, summary.dat (energy, iterations,\n"
-  "evaluations, projected_gradient, stop_reason, ...), multipliers.dat, and\n"
-  "initial/ and final/ with the files of solve.\n"
+  "evaluations, projected_gradient, stop_reason, ...), multipliers.dat,\n"
+  "initial/ and final/ with the files of solve, and iterates.pvd with\n"
+  "iterates/ (the state at each iterate: ParaView plays it as an animation).\n"
   "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
   "last design accepted are written), 4 cannot write.\n";

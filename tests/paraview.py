@@ -2,13 +2,15 @@
 
     paraview.py state DIR E NU MODEL   solution.vtu of a solve folder DIR
                                        against its text files
-    paraview.py pvd DIR                iterates.pvd of an optimize folder DIR
+    paraview.py pvd DIR E NU MODEL     iterates.pvd and iterates/ of an
+                                       optimize folder DIR
 
 Every check prints one line, "ok - ..." or "FAIL - ...", as tests/lib.sh
 does; the exit status is 1 if any check failed. E [Pa], NU and MODEL
 (plane_stress or plane_strain) are the scene's material, for the stress
 recomputed here from the displacements alone.
 """
+import os
 import sys
 import xml.etree.ElementTree as ET
 
@@ -178,9 +180,52 @@ def check_stress(mesh, tri, u, E, nu, model, label):
           np.allclose(got[:, 3], s33, rtol=0, atol=1e-12 * vm.max()))
 
 
+# ---- iterates.pvd and iterates/ against history.dat and iterates.dat ------
+def check_pvd(folder, E, nu, model):
+    label = folder.rstrip("/").split("/")[-1] + "/iterates.pvd"
+    root = ET.parse(folder + "/iterates.pvd").getroot()
+    sets = root.findall("./Collection/DataSet")
+    iteration = [int(row[0]) for row in columns(folder + "/history.dat")]
+    steps = [int(d.get("timestep")) for d in sets]
+    check(f"{label}: a VTK collection of {len(sets)} data sets whose time steps are the "
+          f"iterations of history.dat", root.get("type") == "Collection" and steps == iteration)
+    names = [d.get("file") for d in sets]
+    listed = sorted(os.listdir(folder + "/iterates"))
+    check(f"{label}: every file is iterates/iterate-NNNN.vtu of its iteration, is there, "
+          f"and iterates/ holds no other ({len(listed)} files)",
+          names == [f"iterates/iterate-{k:04d}.vtu" for k in steps]
+          and listed == sorted(n.split("/")[1] for n in names))
+    if names != [f"iterates/iterate-{k:04d}.vtu" for k in steps] or not names:
+        return
+    design = columns(folder + "/iterates.dat")
+    final = meshio.read(folder + "/final/solution.vtu")
+    meshes = [meshio.read(folder + "/" + n) for n in names]
+    ncol = int(design[:, 1].max()) + 1
+    same = all(len(m.points) == len(final.points) and len(m.cells[0].data) == len(final.cells[0].data)
+               and set(m.point_data) == set(final.point_data) and set(m.cell_data) == set(final.cell_data)
+               and np.array_equal(m.cells[0].data, final.cells[0].data) for m in meshes)
+    at = all(np.array_equal(m.points[:ncol, 1], design[design[:, 0] == k, 3]) for m, k in zip(meshes, steps))
+    check(f"{label}: all {len(meshes)} iterates load, with the triangles and arrays of "
+          f"final/solution.vtu, and the contact nodes of each at its design in iterates.dat", same and at)
+    check(f"{label}: iteration {steps[0]} is initial/solution.vtu, byte for byte",
+          open(folder + "/" + names[0], "rb").read() == open(folder + "/initial/solution.vtu", "rb").read())
+    last = meshes[-1]
+    check(f"{label}: iteration {steps[-1]}, the last, is the state of final/solution.vtu "
+          f"(points, displacement, stress to 1e-9)",
+          close(last.points, final.points, 1e-15)
+          and close(point_array(last, "displacement"), point_array(final, "displacement"), 1e-9)
+          and close(cell_array(last, "von_mises"), cell_array(final, "von_mises"), 1e-9))
+    check_vtk(folder + "/" + names[len(names) // 2], meshes[len(names) // 2],
+              f"{label}: {names[len(names) // 2]}")
+    for k in (0, len(meshes) - 1):
+        check_stress(meshes[k], meshes[k].cells_dict["triangle"], point_array(meshes[k], "displacement"),
+                     E, nu, model, f"{label}: {names[k]}")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) == 6 and sys.argv[1] == "state":
-        check_state(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5])
+    if len(sys.argv) == 6 and sys.argv[1] in ("state", "pvd"):
+        (check_state if sys.argv[1] == "state" else check_pvd)(
+            sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5])
     else:
         print("FAIL - usage: paraview.py state DIR E NU MODEL | pvd DIR")
         failures += 1
