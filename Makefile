@@ -207,16 +207,17 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) paper/bench-state.tex
 # ---- the figures of Section 5 ---------------------------------------------------
 # Every figure is drawn from the data files the program writes; each run is
 # a rule of its own, so a changed scene or source reruns exactly what
-# depends on it, and make -j2 runs them side by side.
+# depends on it, and make -j2 runs them side by side.  The figures draw the
+# meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
 figures: $(FIGURES) $(ACCURACY_FIGS)
 	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction figure as PDF and PNG, the reproduction, suite and friction tables, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
-	bin/contactopt solve $< -o $(@D) > /dev/null
+	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null
 out/example-%-optimize/summary.dat: data/example-%.scene bin/contactopt
 	@mkdir -p out
-	bin/contactopt optimize $< -o $(@D) > $(@D).log
+	bin/contactopt optimize $< -o $(@D) --plot-files > $(@D).log
 out/example-%-strain-optimize/summary.dat: data/example-%.scene bin/contactopt
 	@mkdir -p out
 	bin/contactopt optimize $< -o $(@D) -s material.model=plane_strain > $(@D).log

@@ -8,12 +8,13 @@
 #include "scene.h"
 #include "output.h"
 #include "usage.h"
-#line 109 "paper/main.nw"
+#line 111 "paper/main.nw"
 #define MAX_OVERRIDES 64
 typedef struct {
   const char *scene;                   /* the scene file */
   const char *outdir;                  /* -o, or NULL for out/NAME */
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
+  int plot_files;                      /* --plot-files */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;
@@ -26,6 +27,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
     int more = k + 1 < argc;
     if (!strcmp(s, "-o") && more) a->outdir = argv[++k];
     else if (!strcmp(s, "--matrix-market") && more) a->matrix_market = argv[++k];
+    else if (!strcmp(s, "--plot-files")) a->plot_files = 1;
     else if (!strcmp(s, "-s") && more && a->noverride == MAX_OVERRIDES)
       return status_set(st, STATUS_INPUT, "command line: more than %d -s",
                         MAX_OVERRIDES);
@@ -38,7 +40,7 @@ static int args_read(int argc, char **argv, Args *a, Status *st)
   if (!a->scene) return status_set(st, STATUS_INPUT, "command line: no SCENE given");
   return STATUS_OK;
 }
-#line 150 "paper/main.nw"
+#line 154 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -65,13 +67,14 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 184 "paper/main.nw"
+#line 189 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
   Model *md = r->md;
   int rc = model_solve(md, r->s.alpha0, st);
   if (rc || (rc = output_begin(&o, r->dir, st))) return rc;
+  o.plot_files = r->a->plot_files;
   rc = output_solve(&o, &r->run, md, r->s.alpha0, st);
   if (!rc && r->a->matrix_market)
     rc = output_matrix_market(r->a->matrix_market, md, st);
@@ -82,7 +85,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 205 "paper/main.nw"
+#line 211 "paper/main.nw"
 static int refuse_coulomb(const Run *r, const char *command, Status *st)
 {
   if (r->s.problem.contact != CONTACT_COULOMB) return STATUS_OK;
@@ -90,7 +93,7 @@ static int refuse_coulomb(const Run *r, const char *command, Status *st)
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
-#line 222 "paper/main.nw"
+#line 228 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -104,7 +107,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 248 "paper/main.nw"
+#line 254 "paper/main.nw"
 static void monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -113,7 +116,7 @@ static void monitor(const Opt_progress *p, const double *X, void *data)
   fflush(stdout);
   output_history_add(data, p, X);
 }
-#line 263 "paper/main.nw"
+#line 269 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -126,7 +129,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 282 "paper/main.nw"
+#line 288 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -141,6 +144,7 @@ static int command_optimize(Run *r, Status *st)
   else if (!X) rc = status_set(st, STATUS_SYSTEM, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
+    o.plot_files = r->a->plot_files;
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
@@ -168,7 +172,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 331 "paper/main.nw"
+#line 338 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

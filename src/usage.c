@@ -20,10 +20,11 @@ const char usage_solve[] =
   "  -s section.key=value  override a key of the scene (repeatable)\n"
   "  --matrix-market FILE  also write the stiffness matrix A(X), Dirichlet\n"
   "                        DOFs removed, in Matrix Market format\n"
+  "  --plot-files          also write nodes.dat and triangles.dat (gnuplot)\n"
   "  -h, --help            this text\n\n"
   "DIR receives summary.dat (energy, kkt_residual, iterations,\n"
-  "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat,\n"
-  "nodes.dat, triangles.dat and solution.vtu (ParaView).\n"
+  "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat and\n"
+  "solution.vtu (ParaView: displacement, gap, pressure, stress).\n"
   "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write.\n";
 
 const char usage_gradcheck[] =
@@ -45,6 +46,7 @@ const char usage_optimize[] =
   "Prints a line per iteration: E, projected gradient, contact, seconds.\n\n"
   "  -o DIR                output folder (default: out/NAME-optimize)\n"
   "  -s section.key=value  override a key of the scene (repeatable)\n"
+  "  --plot-files          also write nodes.dat and triangles.dat (gnuplot)\n"
   "  -h, --help            this text\n\n"
   "DIR receives history.dat, iterates.dat, summary.dat (energy, iterations,\n"
   "evaluations, projected_gradient, stop_reason, ...), multipliers.dat,\n"

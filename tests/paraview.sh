@@ -7,7 +7,7 @@ PYTHON=${PYTHON:-/usr/bin/python3}
 material() { awk -F' *= *' '/^\[/ { in_m = ($0 == "[material]") } in_m && $1 == k { print $2 }' k=$2 $1; }
 # state LABEL SCENE MODEL [-s ...]: solve into $TMP/LABEL, check its VTU
 state() { label=$1 scene=$2 model=$3; shift 3
-  if $BIN solve $scene -o $TMP/$label -s material.model=$model "$@" >/dev/null 2>$TMP/err; then
+  if $BIN solve $scene -o $TMP/$label --plot-files -s material.model=$model "$@" >/dev/null 2>$TMP/err; then
     $PYTHON tests/paraview.py state $TMP/$label "$(material $scene E)" "$(material $scene nu)" $model \
       || failures=$((failures + 1))
   else fail "$label: solve: $(cat $TMP/err)"; fi; }
