@@ -1,4 +1,4 @@
-#line 212 "paper/output.nw"
+#line 213 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -10,7 +10,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 267 "paper/output.nw"
+#line 268 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -33,7 +33,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   return output_mkdirs(o->stage, st);
 }
-#line 294 "paper/output.nw"
+#line 295 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -43,7 +43,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 307 "paper/output.nw"
+#line 308 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -77,7 +77,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 345 "paper/output.nw"
+#line 346 "paper/output.nw"
 static int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -99,7 +99,7 @@ static FILE *output_open_in_folder(Output *o, const char *folder,
                      strerror(errno));
   return f;
 }
-#line 374 "paper/output.nw"
+#line 375 "paper/output.nw"
 static void output_remove_folder(const char *path)
 {
   char file[1400];
@@ -112,7 +112,7 @@ static void output_remove_folder(const char *path)
   if (d) closedir(d);
   rmdir(path);
 }
-#line 389 "paper/output.nw"
+#line 390 "paper/output.nw"
 static int output_replace_folder(const char *from, const char *to, Status *st)
 {
   char aside[1400];
@@ -127,7 +127,7 @@ static int output_replace_folder(const char *from, const char *to, Status *st)
   if (had) output_remove_folder(aside);
   return STATUS_OK;
 }
-#line 407 "paper/output.nw"
+#line 408 "paper/output.nw"
 static int output_move(Output *o, int k, Status *st)
 {
   char from[1300], to[1300];
@@ -147,7 +147,7 @@ static int output_move(Output *o, int k, Status *st)
   return STATUS_OK;
 }
 
-#line 427 "paper/output.nw"
+#line 428 "paper/output.nw"
 static void output_remove_stage(Output *o, int unlink_files)
 {
   char path[1300];
@@ -176,19 +176,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_stage(o, 1); }
-#line 459 "paper/output.nw"
+#line 460 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 472 "paper/output.nw"
+#line 473 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 481 "paper/output.nw"
+#line 482 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -196,7 +196,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 491 "paper/output.nw"
+#line 492 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -207,7 +207,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 504 "paper/output.nw"
+#line 505 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -223,19 +223,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 528 "paper/output.nw"
+#line 529 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 519 "paper/output.nw"
+#line 520 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 537 "paper/output.nw"
+#line 538 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -249,7 +249,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 553 "paper/output.nw"
+#line 554 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -267,7 +267,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 591 "paper/output.nw"
+#line 592 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -291,7 +291,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 649 "paper/output.nw"
+#line 651 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -333,7 +333,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 709 "paper/output.nw"
+#line 711 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -357,7 +357,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 739 "paper/output.nw"
+#line 741 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -382,7 +382,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 619 "paper/output.nw"
+#line 620 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -395,7 +395,8 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "PointData", "pressure", "Float64", 1, np, d, 1, vtu_contact };
   a[n++] = (Vtu_array) { "PointData", "contact_node", "UInt8", 1, np, 1, 0, vtu_contact_node };
   if (md->dofs->nt)
-    a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d, 0, vtu_tangential };
+    a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d,
+                           0, vtu_tangential };
   for (int k = 0; k < 5; k++)
     a[n++] = (Vtu_array) { "CellData", vtu_stress_names[k], "Float64", 1, nt, d, k, vtu_stress };
   a[n++] = (Vtu_array) { "Points", "Points", "Float64", 3, np, d, 0, vtu_points };
@@ -404,7 +405,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 768 "paper/output.nw"
+#line 770 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -431,7 +432,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 799 "paper/output.nw"
+#line 801 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -443,7 +444,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 815 "paper/output.nw"
+#line 817 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -462,7 +463,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 836 "paper/output.nw"
+#line 838 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -472,7 +473,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 849 "paper/output.nw"
+#line 851 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -485,7 +486,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 893 "paper/output.nw"
+#line 895 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -498,7 +499,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 869 "paper/output.nw"
+#line 871 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -518,7 +519,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 909 "paper/output.nw"
+#line 911 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -533,7 +534,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 932 "paper/output.nw"
+#line 934 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -560,7 +561,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1136 "paper/output.nw"
+#line 1138 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -571,7 +572,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1026 "paper/output.nw"
+#line 1028 "paper/output.nw"
 #define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
 
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -593,7 +594,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 968 "paper/output.nw"
+#line 970 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -638,7 +639,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1091 "paper/output.nw"
+#line 1093 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -651,7 +652,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1055 "paper/output.nw"
+#line 1057 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -683,7 +684,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1114 "paper/output.nw"
+#line 1116 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -702,7 +703,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1152 "paper/output.nw"
+#line 1154 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
