@@ -49,6 +49,7 @@ endif
 # Debian packages the package needs, and the command that proves each one.
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
+            python3-meshio \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
@@ -109,7 +110,8 @@ check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
 
 # make bench: the state-solver table, then the performance tables (issue 5;
-# BENCH_NMAX=256 shortens the latter).  bench_cholmod links the modules
+# BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve
+# (issue 14: tests/bench/output.sh) against one CHOLMOD factorisation.  bench_cholmod links the modules
 # like a test program; walltime times a whole run of the program.
 build/bench/bench_cholmod: tests/bench/bench_cholmod.c $(OBJ)
 	@mkdir -p build/bench
@@ -123,6 +125,7 @@ bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/state.sh
 	@sh tests/bench/performance.sh
 	@sh tests/bench/optimize.sh
+	@sh tests/bench/output.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of
@@ -195,7 +198,8 @@ build/paper/contactopt.tex: paper/contactopt.nw | deps
 build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
-                      paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex | deps
+                      paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex \
+                      paper/bench-output.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \
@@ -212,16 +216,17 @@ figures/keys.tex: bin/contactopt
 # ---- the figures of Section 5 ---------------------------------------------------
 # Every figure is drawn from the data files the program writes; each run is
 # a rule of its own, so a changed scene or source reruns exactly what
-# depends on it, and make -j2 runs them side by side.
+# depends on it, and make -j2 runs them side by side.  The figures draw the
+# meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
 figures: $(FIGURES) $(ACCURACY_FIGS)
 	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction figure as PDF and PNG, the reproduction, suite and friction tables, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
-	bin/contactopt solve $< -o $(@D) > /dev/null
+	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null
 out/example-%-optimize/summary.dat: data/example-%.scene bin/contactopt
 	@mkdir -p out
-	bin/contactopt optimize $< -o $(@D) > $(@D).log
+	bin/contactopt optimize $< -o $(@D) --plot-files > $(@D).log
 out/example-%-strain-optimize/summary.dat: data/example-%.scene bin/contactopt
 	@mkdir -p out
 	bin/contactopt optimize $< -o $(@D) -s material.model=plane_strain > $(@D).log

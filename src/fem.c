@@ -155,33 +155,76 @@ for (int r = 0; r < 6; r++)
                             + B[2][r] * DB[2][c]);
 #line 365 "paper/fem.nw"
 }
-#line 388 "paper/fem.nw"
+#line 422 "paper/fem.nw"
+static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
+{
+  int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
+  int *a = malloc(9 * (size_t) m->ntri * sizeof *a), out = 0;
+  *adj_p = p, *adj = a;
+  if (!p || !next || !a) { free(next); return -1; }
+  for (int t = 0; t < 3 * m->ntri; t++) p[m->tri[t] + 1] += 3;
+  for (int k = 0; k < n; k++) p[k + 1] += p[k], next[k] = p[k];
+  for (int t = 0; t < m->ntri; t++)
+    for (int v = 0; v < 3; v++)
+      for (int w = 0; w < 3; w++) a[next[m->tri[3 * t + v]]++] = m->tri[3 * t + w];
+  free(next);
+  for (int k = 0, from = 0; k < n; k++) {
+    int to = p[k + 1];
+    
+#line 444 "paper/fem.nw"
+for (int q = from + 1; q < to; q++)
+  for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
+for (int q = from; q < to; q++)
+  if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
+#line 437 "paper/fem.nw"
+    p[k + 1] = out, from = to;
+  }
+  return 0;
+}
+#line 452 "paper/fem.nw"
+static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
+                      int *rows)
+{
+  int n = 0;
+  for (int q = adj_p[b]; q < adj_p[b + 1]; q++)
+    for (int c = 0; c < 2; c++)
+      if (d->unknown[2 * adj[q] + c] >= 0) {
+        if (rows) rows[n] = d->unknown[2 * adj[q] + c];
+        n++;
+      }
+  return n;
+}
+
+static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
+                          void *Ap, void *Ai)
+{
+  int *p = Ap, *i = Ai;
+  size_t nnz = 0;
+  for (int k = 0, col = 0; k < d->ndof; k++)
+    if (d->unknown[k] >= 0) {
+      if (p) p[col] = (int) nnz;
+      nnz += fem_column(d, adj_p, adj, k / 2, i ? i + nnz : NULL);
+      if (p) p[++col] = (int) nnz;
+    }
+  return nnz;
+}
+
+#line 400 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
-  cholmod_triplet *T = cholmod_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri,
-                                                0, CHOLMOD_REAL, cm);
-  if (!T) { status_set(st, STATUS_MEMORY, "stiffness: out of memory"); return NULL; }
-  for (int t = 0; t < m->ntri; t++) {
-    int g[6];
-    fem_element_dofs(m, d, t, g);
-    
-#line 407 "paper/fem.nw"
-for (int r = 0; r < 6; r++)
-  for (int c = 0; c < 6; c++)
-    if (g[r] >= 0 && g[c] >= 0) {
-      ((int *) T->i)[T->nnz] = g[r];
-      ((int *) T->j)[T->nnz] = g[c];
-      ((double *) T->x)[T->nnz++] = 0;
-    }
-#line 398 "paper/fem.nw"
+  int *adj_p = NULL, *adj = NULL;
+  cholmod_sparse *A = NULL;
+  if (!fem_neighbours(m, &adj_p, &adj)) {
+    size_t nnz = fem_pattern(d, adj_p, adj, NULL, NULL);
+    A = cholmod_allocate_sparse(d->n, d->n, nnz, 1, 1, 0, CHOLMOD_REAL, cm);
+    if (A) fem_pattern(d, adj_p, adj, A->p, A->i);
   }
-  cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
-  cholmod_free_triplet(&T, cm);
+  free(adj_p), free(adj);
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 418 "paper/fem.nw"
+#line 482 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -190,7 +233,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 431 "paper/fem.nw"
+#line 495 "paper/fem.nw"
 static double *fem_entry(cholmod_sparse *A, int r, int c)
 {
   int *Ap = A->p, *Ai = A->i, lo = Ap[c], hi = Ap[c + 1] - 1;
@@ -201,7 +244,7 @@ static double *fem_entry(cholmod_sparse *A, int r, int c)
   return lo <= hi && Ai[lo] == r ? (double *) A->x + lo : NULL;
 }
 
-#line 445 "paper/fem.nw"
+#line 509 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -213,7 +256,7 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 462 "paper/fem.nw"
+#line 526 "paper/fem.nw"
 for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     if (g[r] >= 0 && g[c] >= 0) {
@@ -223,11 +266,11 @@ for (int r = 0; r < 6; r++)
                           "stiffness: pattern does not match the mesh");
       *a += K[r][c];
     }
-#line 456 "paper/fem.nw"
+#line 520 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 482 "paper/fem.nw"
+#line 546 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -241,7 +284,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 499 "paper/fem.nw"
+#line 563 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -249,7 +292,7 @@ static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
 
-#line 508 "paper/fem.nw"
+#line 572 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -257,7 +300,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 522 "paper/fem.nw"
+#line 586 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -276,14 +319,14 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 
-#line 571 "paper/fem.nw"
+#line 635 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 586 "paper/fem.nw"
+#line 650 "paper/fem.nw"
 double xy[6], q[6], gx[3], gy[3];
 long double e[3], De;
 fem_element_xy(m, t, xy);
@@ -297,7 +340,7 @@ for (int r = 0; r < 3; r++) {
   for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
   U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
 }
-#line 577 "paper/fem.nw"
+#line 641 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -11,7 +11,7 @@
 #include "usage.h"
 #include "interrupt.h"
 #include "args.h"
-#line 199 "paper/main.nw"
+#line 206 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -43,7 +43,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 252 "paper/main.nw"
+#line 260 "paper/main.nw"
 /* after rc: effective.scene, the stiffness matrix if asked, the commit */
 static int finish(Run *r, Output *o, int rc, Status *st)
 {
@@ -57,13 +57,14 @@ static int finish(Run *r, Output *o, int rc, Status *st)
     rc = output_matrix_market(r->a->matrix_market, r->md, st);
   return output_end(o, rc, st);
 }
-#line 268 "paper/main.nw"
+#line 276 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
   Model *md = r->md;
   int rc = model_solve(md, r->s.alpha0, st);
   if (rc || (rc = output_begin(&o, r->dir, st))) return rc;
+  o.plot_files = r->a->plot_files;
   if ((rc = finish(r, &o, output_solve(&o, &r->run, md, r->s.alpha0, st), st)))
     return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
@@ -72,7 +73,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 291 "paper/main.nw"
+#line 300 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -83,7 +84,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 311 "paper/main.nw"
+#line 320 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -100,7 +101,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 380 "paper/main.nw"
+#line 391 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -110,7 +111,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 396 "paper/main.nw"
+#line 407 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -123,7 +124,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 415 "paper/main.nw"
+#line 426 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -139,7 +140,9 @@ static int command_optimize(Run *r, Status *st)
   else if (!h || !m) rc = st->code;
   else if (!(rc = output_begin(&o, r->dir, st))) {
     interrupt_catch(1);
-    if (!(rc = optimize_start(r, &B, X, &moved, st))
+    o.plot_files = r->a->plot_files;
+    if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
+        && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = output_state(&o, "final", r->md, X, st))
@@ -170,7 +173,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 472 "paper/main.nw"
+#line 485 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -184,7 +187,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 493 "paper/main.nw"
+#line 506 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

@@ -1,10 +1,11 @@
-#line 178 "paper/output.nw"
+#line 221 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
 #include <ftw.h>
 #include <math.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +13,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 224 "paper/output.nw"
+#line 277 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -28,7 +29,7 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
-#line 255 "paper/output.nw"
+#line 308 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -40,7 +41,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 270 "paper/output.nw"
+#line 323 "paper/output.nw"
 static int output_check_dir(const char *dir, Status *st)
 {
   struct stat sb;
@@ -59,7 +60,7 @@ static int output_check_dir(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 292 "paper/output.nw"
+#line 345 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -80,7 +81,7 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 243 "paper/output.nw"
+#line 296 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
@@ -90,7 +91,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 316 "paper/output.nw"
+#line 369 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -100,7 +101,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 329 "paper/output.nw"
+#line 382 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -121,15 +122,42 @@ FILE *output_open(Output *o, const char *name, Status *st)
   return f;
 }
 
-int output_close(Output *o, FILE *f, Status *st)
+static int output_finish(FILE *f, const char *dir, const char *name,
+                         Status *st)
 {
   int bad = ferror(f);
   if (fclose(f) || bad)
-    return status_set(st, STATUS_SYSTEM, "%s/%s: write failed", o->dir,
-                      o->file[o->nfiles - 1]);
+    return status_set(st, STATUS_SYSTEM, "%s/%s: write failed", dir, name);
   return STATUS_OK;
 }
-#line 363 "paper/output.nw"
+
+int output_close(Output *o, FILE *f, Status *st)
+{
+  return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
+}
+#line 420 "paper/output.nw"
+static int output_folder(Output *o, const char *name, Status *st)
+{
+  char path[1300];
+  if (o->nfiles == OUTPUT_MAX_FILES)
+    return status_set(st, STATUS_SYSTEM, "%s: too many output files", o->dir);
+  snprintf(path, sizeof path, "%s/%s", o->stage, name);
+  if (output_mkdirs(path, st)) return st->code;
+  snprintf(o->file[o->nfiles++], sizeof o->file[0], "%s/", name);
+  return STATUS_OK;
+}
+
+static FILE *output_open_in_folder(Output *o, const char *folder,
+                                   const char *name, Status *st)
+{
+  char path[1300];
+  snprintf(path, sizeof path, "%s/%s/%s", o->stage, folder, name);
+  FILE *f = fopen(path, "w");
+  if (!f) status_set(st, STATUS_SYSTEM, "%s: cannot write: %s", path,
+                     strerror(errno));
+  return f;
+}
+#line 447 "paper/output.nw"
 int output_commit(Output *o, Status *st)
 {
   char old[1200];
@@ -154,19 +182,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_tree(o->stage); }
-#line 391 "paper/output.nw"
+#line 475 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 404 "paper/output.nw"
+#line 488 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 413 "paper/output.nw"
+#line 497 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -174,7 +202,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 423 "paper/output.nw"
+#line 507 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -185,7 +213,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 436 "paper/output.nw"
+#line 520 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -201,19 +229,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 460 "paper/output.nw"
+#line 544 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 451 "paper/output.nw"
+#line 535 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 469 "paper/output.nw"
+#line 553 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -227,7 +255,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 485 "paper/output.nw"
+#line 569 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -245,67 +273,226 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 544 "paper/output.nw"
-static void output_vtu_friction(FILE *f, const Model *md)
+#line 607 "paper/output.nw"
+typedef struct {
+  const Model *md;          /* the state written */
+  const double *X;          /* its design */
+  double *stress;           /* 5 per triangle: sigma11, sigma22, sigma12,
+                               sigma33, von Mises [Pa] */
+} Vtu_state;
+
+typedef struct {
+  const char *section;      /* PointData, CellData, Points or Cells */
+  const char *name;         /* the array's Name */
+  const char *type;         /* Float64, Int32 or UInt8 */
+  int components;           /* values per point or per cell */
+  size_t count;             /* points or cells */
+  size_t size;              /* bytes per value */
+  int which;                /* the quantity, for a fill of several */
+  void (*fill)(const Vtu_state *s, int which, void *values);
+} Vtu_array;
+#define VTU_MAX_ARRAYS 16
+
+static size_t vtu_bytes(const Vtu_array *a)
 {
-  const Dofs *d = md->dofs;
-  fprintf(f, "<DataArray type=\"Float64\" Name=\"tangential_force\" "
-             "format=\"ascii\">\n");
-  for (int node = 0, k = 0; node < md->mesh->nnodes; node++) {
-    int here = k < d->nt && d->tangent_col[k] == node;  /* row 0 first */
-    fprintf(f, "%.15g\n", here ? md->T[d->nc + k] : 0.0);
-    k += here;
-  }
-  fprintf(f, "</DataArray>\n");
+  return a->count * a->components * a->size;
 }
-#line 506 "paper/output.nw"
-static int output_vtu(Output *o, const char *sub, const Model *md, Status *st)
+#line 666 "paper/output.nw"
+static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
-  const Mesh *m = md->mesh;
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++) {
+    v[3 * k] = output_u(s->md, k, 0);
+    v[3 * k + 1] = output_u(s->md, k, 1);
+    v[3 * k + 2] = 0;
+  }
+}
+
+/* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
+static void vtu_contact(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int c = 0; c < d->nc; c++) {
+    int i = d->contact_col[c];
+    v[i] = which == 0 ? s->md->Q[d->contact[c]] + s->X[i]
+                      : model_pressure(s->md, c);
+  }
+}
+
+static void vtu_contact_node(const Vtu_state *s, int which, void *values)
+{
+  uint8_t *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes);
+  for (int c = 0; c < s->md->dofs->nc; c++) v[s->md->dofs->contact_col[c]] = 1;
+}
+
+/* the nodal friction force T_t [N/m], 0 where u1 is held */
+static void vtu_tangential(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
+}
+#line 726 "paper/output.nw"
+static void vtu_triangle_stress(const Model *md, int t, double s[5])
+{
+  double xy[6], q[6], gx[3], gy[3];
+  long double e[3];
+  const double (*D)[3] = md->hooke.D;
+  fem_element_xy(md->mesh, t, xy);
+  fem_element_q(md->mesh, md->dofs, md->Q, t, q);
+  double a2 = fem_element_gradients(xy, gx, gy);
+  for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
+  fem_element_strain(gx, gy, q, e);      /* the strain itself */
+  for (int r = 0; r < 3; r++)
+    s[r] = (double) (D[r][0] * e[0] + D[r][1] * e[1] + D[r][2] * e[2]);
+  s[3] = md->problem->model == MODEL_PLANE_STRAIN
+       ? (double) (D[0][1] * (e[0] + e[1])) : 0.0;
+  s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
+                     + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
+}
+
+static void vtu_stress(const Vtu_state *s, int which, void *values)
+{
+  double *v = values;
+  for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
+}
+#line 756 "paper/output.nw"
+static void vtu_points(const Vtu_state *s, int which, void *values)
+{
+  const double *xy = s->md->mesh->xy;
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++)
+    v[3 * k] = xy[2 * k], v[3 * k + 1] = xy[2 * k + 1], v[3 * k + 2] = 0;
+}
+
+/* which 0: the connectivity, 3 vertices per triangle; 1: the offsets */
+static void vtu_cells(const Vtu_state *s, int which, void *values)
+{
+  const Mesh *m = s->md->mesh;
+  int32_t *v = values;
+  for (int t = 0; t < m->ntri; t++)
+    if (which == 1) v[t] = 3 * (t + 1);
+    else for (int k = 0; k < 3; k++) v[3 * t + k] = m->tri[3 * t + k];
+}
+
+static void vtu_types(const Vtu_state *s, int which, void *values)
+{
+  (void) which;
+  memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
+}
+#line 635 "paper/output.nw"
+static const char *const vtu_stress_names[5] =
+  { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
+
+static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
+{
+  size_t np = md->mesh->nnodes, nt = md->mesh->ntri, d = sizeof(double);
+  int n = 0;
+  a[n++] = (Vtu_array) { "PointData", "displacement", "Float64", 3, np, d, 0, vtu_displacement };
+  a[n++] = (Vtu_array) { "PointData", "gap", "Float64", 1, np, d, 0, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "pressure", "Float64", 1, np, d, 1, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "contact_node", "UInt8", 1, np, 1, 0, vtu_contact_node };
+  if (md->dofs->nt)
+    a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d,
+                           0, vtu_tangential };
+  for (int k = 0; k < 5; k++)
+    a[n++] = (Vtu_array) { "CellData", vtu_stress_names[k], "Float64", 1, nt, d, k, vtu_stress };
+  a[n++] = (Vtu_array) { "Points", "Points", "Float64", 3, np, d, 0, vtu_points };
+  a[n++] = (Vtu_array) { "Cells", "connectivity", "Int32", 1, 3 * nt, 4, 0, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "offsets", "Int32", 1, nt, 4, 1, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
+  return n;
+}
+#line 785 "paper/output.nw"
+static const char *vtu_byte_order(void)
+{
+  const uint16_t one = 1;
+  return *(const uint8_t *) &one ? "LittleEndian" : "BigEndian";
+}
+
+static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
+{
+  unsigned long long offset = 0;
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+             "version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
+             "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" "
+             "NumberOfCells=\"%d\">\n", vtu_byte_order(), m->nnodes, m->ntri);
+  for (int k = 0; k < n; k++) {
+    if (k > 0 && strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "</%s>\n", a[k - 1].section);
+    if (k == 0 || strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "<%s>\n", a[k].section);
+    fprintf(f, "<DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
+               "format=\"appended\" offset=\"%llu\"/>\n", a[k].type, a[k].name,
+            a[k].components, offset);
+    offset += sizeof(uint64_t) + vtu_bytes(&a[k]);
+  }
+  fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
+             "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
+}
+#line 816 "paper/output.nw"
+static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
+                     void *values)
+{
+  for (int k = 0; k < n; k++) {
+    uint64_t bytes = vtu_bytes(&a[k]);
+    a[k].fill(s, a[k].which, values);
+    fwrite(&bytes, sizeof bytes, 1, f);
+    fwrite(values, 1, bytes, f);
+  }
+  fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
+}
+#line 832 "paper/output.nw"
+static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
+{
+  Vtu_array a[VTU_MAX_ARRAYS];
+  int n = vtu_arrays(md, a);
+  size_t most = 0, nt = md->mesh->ntri;
+  for (int k = 0; k < n; k++) most = vtu_bytes(&a[k]) > most ? vtu_bytes(&a[k]) : most;
+  Vtu_state s = { md, X, malloc(5 * nt * sizeof(double)) };
+  void *values = malloc(most);
+  if (!s.stress || !values) {
+    free(s.stress), free(values);
+    return status_set(st, STATUS_SYSTEM, "solution.vtu: out of memory");
+  }
+  for (size_t t = 0; t < nt; t++) vtu_triangle_stress(md, (int) t, s.stress + 5 * t);
+  vtu_header(f, md->mesh, a, n);
+  vtu_data(f, &s, a, n, values);
+  free(s.stress), free(values);
+  return STATUS_OK;
+}
+#line 853 "paper/output.nw"
+static int output_vtu(Output *o, const char *sub, const Model *md,
+                      const double *X, Status *st)
+{
   FILE *f = output_open_in(o, sub, "solution.vtu", st);
   if (!f) return st->code;
-  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-             "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-             "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
-             "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-          m->nnodes, m->ntri);
-  for (int k = 0; k < m->nnodes; k++)
-    fprintf(f, "%.15g %.15g 0\n", m->xy[2 * k], m->xy[2 * k + 1]);
-  fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
-             "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
-  for (int t = 0; t < m->ntri; t++)
-    fprintf(f, "%d %d %d\n", m->tri[3 * t], m->tri[3 * t + 1], m->tri[3 * t + 2]);
-  
-#line 528 "paper/output.nw"
-fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
-for (int t = 0; t < m->ntri; t++) fprintf(f, "%d\n", 3 * (t + 1));
-fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-for (int t = 0; t < m->ntri; t++) fprintf(f, "5\n");
-fprintf(f, "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
-           "<DataArray type=\"Float64\" Name=\"displacement\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n");
-for (int k = 0; k < m->nnodes; k++)
-  fprintf(f, "%.15g %.15g 0\n", output_u(md, k, 0), output_u(md, k, 1));
-fprintf(f, "</DataArray>\n");
-if (md->dofs->nt) output_vtu_friction(f, md);
-fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-#line 523 "paper/output.nw"
-  return output_close(o, f, st);
+  int rc = vtu_write(f, md, X, st);
+  int rc_close = output_close(o, f, st);
+  return rc ? rc : rc_close;
 }
-#line 559 "paper/output.nw"
+#line 866 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
   int rc;
   if ((rc = output_shape(o, sub, md, X, st))
       || (rc = output_contact(o, sub, md, X, st))
-      || (rc = output_nodes(o, sub, md, st))
-      || (rc = output_triangles(o, sub, md, st))
-      || (rc = output_vtu(o, sub, md, st)))
+      || (o->plot_files && ((rc = output_nodes(o, sub, md, st))
+                            || (rc = output_triangles(o, sub, md, st))))
+      || (rc = output_vtu(o, sub, md, X, st)))
     return rc;
   return STATUS_OK;
 }
-#line 603 "paper/output.nw"
+#line 910 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -318,7 +505,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 579 "paper/output.nw"
+#line 886 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -338,7 +525,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 619 "paper/output.nw"
+#line 926 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -353,7 +540,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 642 "paper/output.nw"
+#line 949 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -380,7 +567,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 768 "paper/output.nw"
+#line 1153 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -391,7 +578,29 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 676 "paper/output.nw"
+#line 1043 "paper/output.nw"
+#define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
+
+static void history_vtu(Output_history *h, int iteration, const double *X)
+{
+  const Mesh *m = h->md->mesh;
+  char name[64], path[80];
+  for (int i = 0; i < m->ncol; i++)
+    if (m->xy[2 * i + 1] != X[i]) {
+      status_set(&h->vtu, STATUS_INPUT, "iterates/: the model is not at "
+                 "iterate %d (alpha_%d = %.17g, the mesh at %.17g)",
+                 iteration, i, X[i], m->xy[2 * i + 1]);
+      return;
+    }
+  snprintf(name, sizeof name, ITERATE_VTU, iteration);
+  snprintf(path, sizeof path, "iterates/%s", name);
+  FILE *f = output_open_in_folder(h->o, "iterates", name, &h->vtu);
+  if (!f) return;
+  if (vtu_write(f, h->md, X, &h->vtu)) fclose(f);
+  else output_finish(f, h->o->dir, path, &h->vtu);
+}
+
+#line 985 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -415,9 +624,18 @@ static int history_grow(Output_history *h)
 void output_history_add(Output_history *h, const Opt_progress *p,
                         const double *X)
 {
+  if (h->o && !h->vtu.code) history_vtu(h, p->iteration, X);
   if (h->failed || (h->n == h->size && history_grow(h))) return;
   memcpy(h->X + (size_t) h->n * h->ndesign, X, h->ndesign * sizeof *X);
   h->p[h->n++] = *p;
+}
+
+int output_history_vtu(Output_history *h, Output *o, const Model *md,
+                       Status *st)
+{
+  int rc = output_folder(o, "iterates", st);
+  if (!rc) h->o = o, h->md = md;
+  return rc;
 }
 
 void output_history_free(Output_history *h)
@@ -427,28 +645,52 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 715 "paper/output.nw"
+#line 1108 "paper/output.nw"
+static int history_pvd(Output *o, const Output_history *h, Status *st)
+{
+  FILE *f = output_open(o, "iterates.pvd", st);
+  if (!f) return st->code;
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n");
+  for (int k = 0; k < h->n; k++)
+    fprintf(f, "<DataSet timestep=\"%d\" part=\"0\" file=\"iterates/"
+               ITERATE_VTU "\"/>\n", h->p[k].iteration, h->p[k].iteration);
+  fputs("</Collection>\n</VTKFile>\n", f);
+  return output_close(o, f, st);
+}
+#line 1072 "paper/output.nw"
+static int history_iterates(Output *o, const Problem *p,
+                            const Output_history *h, Status *st)
+{
+  FILE *f = output_open(o, "iterates.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration, "
+             "two blank lines apart (gnuplot: index k)\n");
+  for (int k = 0; k < h->n; k++)
+    for (int i = 0; i < h->ndesign; i++)
+      fprintf(f, "%s%d %d %.10g %.17g\n", k && !i ? "\n\n" : "",
+              h->p[k].iteration, i, p->a + i * (p->b - p->a) / p->N,
+              h->X[(size_t) k * h->ndesign + i]);
+  return output_close(o, f, st);
+}
+
 int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
   int rc;
   if (h->failed) return status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  if (h->vtu.code) return status_set(st, h->vtu.code, "%s", h->vtu.msg);
   FILE *f = output_open(o, "history.dat", st);
   if (!f) return st->code;
   fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
   for (int k = 0; k < h->n; k++)
     fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
             h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
-  if ((rc = output_close(o, f, st))) return rc;
-  if (!(f = output_open(o, "iterates.dat", st))) return st->code;
-  fprintf(f, "# iteration i x1[m] alpha[m]: one block per iteration\n");
-  for (int k = 0; k < h->n; k++, fprintf(f, "\n"))
-    for (int i = 0; i < h->ndesign; i++)
-      fprintf(f, "%d %d %.10g %.17g\n", h->p[k].iteration, i,
-              p->a + i * (p->b - p->a) / p->N, h->X[(size_t) k * h->ndesign + i]);
-  return output_close(o, f, st);
+  if ((rc = output_close(o, f, st)) || (rc = history_iterates(o, p, h, st)))
+    return rc;
+  return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 746 "paper/output.nw"
+#line 1131 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -467,7 +709,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 784 "paper/output.nw"
+#line 1169 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

@@ -1,4 +1,4 @@
-#line 79 "paper/output.nw"
+#line 111 "paper/output.nw"
 #ifndef CONTACTOPT_OUTPUT_H
 #define CONTACTOPT_OUTPUT_H
 #include <stdio.h>
@@ -10,6 +10,7 @@
 #define OUTPUT_MAX_FILES 64
 typedef struct {
   char dir[1024];                     /* the output folder */
+  int plot_files;                     /* also nodes.dat, triangles.dat */
   char stage[1100];                   /* the staging folder beside it */
   int nfiles;                         /* files written so far */
   char file[OUTPUT_MAX_FILES][128];   /* their names relative to dir */
@@ -28,7 +29,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 117 "paper/output.nw"
+#line 150 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -44,16 +45,24 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 137 "paper/output.nw"
+#line 172 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
   Opt_progress *p;          /* n: the progress of each iteration */
   double *X;                /* n x ndesign: the iterates */
   int failed;               /* out of memory while recording */
+  Output *o;                /* with VTUs: the output receiving iterates/ */
+  const Model *md;          /* with VTUs: the model, at each iterate */
+  Status vtu;               /* the first VTU not written; code 0: none */
 } Output_history;
 
 Output_history *output_history_new(int ndesign, Status *st);
+/* from now on output_history_add also writes the state of md, which must
+   be at the iterate, as iterates/iterate-NNNN.vtu (NNNN the iteration)
+   into o, and output_history the collection iterates.pvd */
+int output_history_vtu(Output_history *h, Output *o, const Model *md,
+                       Status *st);
 void output_history_add(Output_history *h, const Opt_progress *p,
                         const double *X);
 void output_history_free(Output_history *h);
@@ -64,7 +73,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 160 "paper/output.nw"
+#line 203 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
@@ -78,5 +87,5 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 111 "paper/output.nw"
+#line 144 "paper/output.nw"
 #endif

@@ -7,7 +7,7 @@ $BIN --help > $TMP/help; rc=$?
 check "contactopt --help exits 0 and names the solve command" \
   sh -c "[ $rc -eq 0 ] && grep -q solve $TMP/help"
 $BIN solve --help > $TMP/help; rc=$?
-for opt in -o -s --matrix-market --help; do
+for opt in -o -s --matrix-market --plot-files --help; do
   check "contactopt solve --help explains $opt" grep -q -- "$opt" $TMP/help
 done
 $BIN frobnicate $scene 2>$TMP/err; rc=$?
@@ -16,9 +16,18 @@ check "an unknown command exits 2" [ $rc -eq 2 ]
 out=$TMP/run
 $BIN solve $scene -o $out -s mesh.M=2 --matrix-market $TMP/A.mtx > $TMP/stdout; rc=$?
 check "solve exits 0" [ $rc -eq 0 ]
-for f in summary.dat shape.dat contact.dat nodes.dat triangles.dat solution.vtu; do
+for f in summary.dat shape.dat contact.dat solution.vtu; do
   check "solve writes $f" test -s $out/$f
 done
+check "solve writes no nodes.dat, no triangles.dat without --plot-files" \
+  test ! -e $out/nodes.dat -a ! -e $out/triangles.dat
+$BIN solve $scene -o $TMP/plot --plot-files > /dev/null
+check "solve --plot-files writes nodes.dat (a row per node) and triangles.dat (4 rows per triangle)" \
+  test "$(grep -vc '^#' $TMP/plot/nodes.dat)" -eq 85 -a "$(grep -v '^#' $TMP/plot/triangles.dat | grep -c .)" -eq 512
+$BIN optimize $scene -o $TMP/plot-opt --plot-files > /dev/null
+check "optimize --plot-files writes them in initial/ and final/, optimize alone does not" \
+  sh -c "test -s $TMP/plot-opt/initial/nodes.dat -a -s $TMP/plot-opt/final/triangles.dat &&
+         $BIN optimize $scene -o $TMP/opt > /dev/null && test ! -e $TMP/opt/final/nodes.dat"
 for k in energy kkt_residual iterations active_contact_nodes dofs seconds; do
   check "summary.dat has $k" grep -q "^$k " $out/summary.dat
 done

@@ -11,7 +11,7 @@ for model in plane_strain plane_stress; do
   for solver in pdas psor cgssor; do
     for N in 16 64; do
       out=$TMP/$model-$solver-$N
-      if ! $BIN solve $scene -o $out -s material.model=$model -s solver.state=$solver \
+      if ! $BIN solve $scene -o $out --plot-files -s material.model=$model -s solver.state=$solver \
            -s mesh.refine=$((N / 16)) -s solver.tol=1e-12 >/dev/null 2>$TMP/err; then
         fail "flat punch $model $solver N=$N: $(cat $TMP/err)"; continue
       fi

@@ -141,7 +141,8 @@ numbers() {
 # area S = gamma (b - a) - C2, b - a and h, as in_B takes them
 B_article="0.05 0.00625 0.09 4 0.25"
 # violation FILE C0 d S L h: the largest violation of B (4.4) by an iterate
-# of FILE (iterates.dat: one block per iteration, alpha in column 4),
+# of FILE (iterates.dat: one block per iteration, two blank lines apart,
+# alpha in column 4),
 # relative to C0 (to C0 L for the area); fails on no iterate or a value
 # that is not a finite number
 violation() { awk -v C0=$2 -v d=$3 -v S=$4 -v L=$5 -v h=$6 "$awk_lib"'

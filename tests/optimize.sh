@@ -48,6 +48,15 @@ for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat
   echo "# $name: newton $(value energy $c) ($(value iterations $c) it, $(value evaluations $c) solves)"
 done
 done
+# iterates.dat for gnuplot: its blocks are two blank lines apart, so that
+# gnuplot finds one data set per row of history.dat and index k is
+# iteration k, at the N+1 = 17 design nodes
+it=$TMP/example-5.1-plane_stress-newton
+rows=$(grep -vc '^#' $it/history.dat); last=$((rows - 1))
+set -- $(gnuplot -e "stats '$it/iterates.dat' using 1 nooutput; b = STATS_blocks;
+  stats '$it/iterates.dat' index $last using 1 nooutput; print b, STATS_min, STATS_max, STATS_records" 2>&1)
+check "iterates.dat: gnuplot finds $1 data sets for the $rows iterations of history.dat; index $last is iteration $last at 17 nodes" \
+  holds 'b == rows && lo == last && hi == last && n == 17' b="$1" rows="$rows" lo="$2" hi="$3" last="$last" n="$4"
 # SLSQP in the metric of the contact stiffness (optimizer.metric = schur,
 # the default) against the euclidean one, N = 16, 32, 64 (mesh.refine =
 # N/16): the same E* to 1e-9 and the same shape to 1e-4 C0; the

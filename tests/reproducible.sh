@@ -16,8 +16,8 @@
 runs() {
   d=$1
   for e in 5.1 5.2 5.2-flat; do
-    $BIN solve data/example-$e.scene -o $d/example-$e > /dev/null \
-      && $BIN optimize data/example-$e.scene -o $d/example-$e-optimize > /dev/null \
+    $BIN solve data/example-$e.scene -o $d/example-$e --plot-files > /dev/null \
+      && $BIN optimize data/example-$e.scene -o $d/example-$e-optimize --plot-files > /dev/null \
       && $BIN optimize data/example-$e.scene -o $d/example-$e-strain-optimize \
            -s material.model=plane_strain > /dev/null || return 1
   done

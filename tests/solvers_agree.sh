@@ -10,7 +10,7 @@ for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat
       tag="$name $model N=$N"
       for solver in pdas psor cgssor; do
         out=$TMP/$name-$model-$N-$solver
-        if $BIN solve $scene -o $out -s material.model=$model -s solver.state=$solver \
+        if $BIN solve $scene -o $out --plot-files -s material.model=$model -s solver.state=$solver \
              -s mesh.refine=$((N / 16)) -s solver.tol=$tol >/dev/null 2>$TMP/err; then
           kkt=$(value kkt_residual $out)
           check "$tag $solver: KKT residual $kkt <= $tol" le "$kkt" $tol

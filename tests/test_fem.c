@@ -3,7 +3,8 @@
    assembled operator applied to it vanishes at interior nodes and equals
    the consistent nodal forces of the boundary tractions sigma.n elsewhere;
    rigid motions have zero stiffness; the article's mesh has the sizes of
-   Fig. 5.2a. */
+   Fig. 5.2a; the pattern of A is that of 36 triplets per element summed
+   by CHOLMOD, entry for entry. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -244,8 +245,56 @@ static void traction_load(void)
   mesh_free(m);
 }
 
+/* the pattern as it was made until issue 14: every element's 6 x 6
+   couplings as triplets, sorted and summed by CHOLMOD */
+static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_common *cm)
+{
+  cholmod_triplet *T = cholmod_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri, 0,
+                                                CHOLMOD_REAL, cm);
+  for (int t = 0; t < m->ntri; t++)
+    for (int r = 0; r < 6; r++)
+      for (int c = 0; c < 6; c++) {
+        int gr = d->unknown[2 * m->tri[3 * t + r / 2] + r % 2];
+        int gc = d->unknown[2 * m->tri[3 * t + c / 2] + c % 2];
+        if (gr < 0 || gc < 0) continue;
+        ((int *) T->i)[T->nnz] = gr, ((int *) T->j)[T->nnz] = gc;
+        ((double *) T->x)[T->nnz++] = 0;
+      }
+  cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
+  cholmod_free_triplet(&T, cm);
+  return A;
+}
+
+/* fem_stiffness_new's pattern is the triplets', on a free body and with
+   clamped, roller and free sides, on several meshes */
+static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind top)
+{
+  Problem s = free_body(N, M, R, MODEL_PLANE_STRESS);
+  Status st = { 0, "" };
+  cholmod_common cm;
+  cholmod_start(&cm);
+  s.side[SIDE_LEFT].kind = left, s.side[SIDE_RIGHT].kind = right, s.side[SIDE_TOP].kind = top;
+  Mesh *m = mesh_new(&s, &st);
+  Dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
+  cholmod_sparse *A = d ? fem_stiffness_new(m, d, &cm, &st) : NULL;
+  cholmod_sparse *B = d ? triplet_pattern(m, d, &cm) : NULL;
+  int same = A && B && A->nrow == B->nrow && A->ncol == B->ncol && A->sorted && A->packed
+             && A->stype == 0 && !memcmp(A->p, B->p, (A->ncol + 1) * sizeof(int))
+             && !memcmp(A->i, B->i, ((int *) B->p)[B->ncol] * sizeof(int));
+  check(same, "N = %d, M = %d, R = %d, sides %d %d %d: the pattern of A is the triplets' "
+        "(%d unknowns, %d entries)", N, M, R, left, right, top, d ? d->n : -1,
+        B ? ((int *) B->p)[B->ncol] : -1);
+  cholmod_free_sparse(&A, &cm), cholmod_free_sparse(&B, &cm);
+  fem_dofs_free(d), mesh_free(m);
+  cholmod_finish(&cm);
+}
+
 int main(void)
 {
+  pattern(16, 1, 3, BC_FREE, BC_FREE, BC_FREE);
+  pattern(16, 1, 3, BC_CLAMPED, BC_ROLLER, BC_FREE);
+  pattern(7, 3, 2, BC_ROLLER, BC_CLAMPED, BC_CLAMPED);
+  pattern(64, 4, 12, BC_CLAMPED, BC_ROLLER, BC_ROLLER);
   patch_test(MODEL_PLANE_STRESS);
   patch_test(MODEL_PLANE_STRAIN);
   article_mesh();
