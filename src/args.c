@@ -1,4 +1,4 @@
-#line 169 "paper/main.nw"
+#line 170 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

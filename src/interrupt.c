@@ -1,4 +1,4 @@
-#line 359 "paper/main.nw"
+#line 380 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

@@ -1,4 +1,4 @@
-#line 144 "paper/model.nw"
+#line 147 "paper/model.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,7 +7,7 @@
 #include <sys/resource.h>
 #include "model.h"
 
-#line 156 "paper/model.nw"
+#line 159 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -22,7 +22,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 176 "paper/model.nw"
+#line 179 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -35,19 +35,19 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 170 "paper/model.nw"
+#line 173 "paper/model.nw"
   
-#line 191 "paper/model.nw"
+#line 194 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 171 "paper/model.nw"
+#line 174 "paper/model.nw"
   return md;
 }
-#line 205 "paper/model.nw"
+#line 208 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -55,7 +55,7 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-#line 242 "paper/model.nw"
+#line 245 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
@@ -63,7 +63,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 290 "paper/model.nw"
+#line 293 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -72,7 +72,7 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 258 "paper/model.nw"
+#line 261 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   int nc = md->dofs->nc, rc, steps = 0;
@@ -101,7 +101,7 @@ static int model_coulomb(Model *md, Status *st)
       md->fixed_point_tol, md->problem->friction);
   return rc;
 }
-#line 218 "paper/model.nw"
+#line 221 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -124,13 +124,13 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 312 "paper/model.nw"
+#line 315 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 320 "paper/model.nw"
+#line 323 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -145,7 +145,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 336 "paper/model.nw"
+#line 339 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -156,7 +156,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 416 "paper/model.nw"
+#line 433 "paper/model.nw"
 double model_memory(const Problem *p)
 {
   double nodes = (p->N + 1.0) * (p->M + p->R + 1.0), n = 2 * nodes;
@@ -164,7 +164,7 @@ double model_memory(const Problem *p)
   double factor = 5.1 * n * log2(n > 2 ? n : 2);
   return 3 * 8 * nk * nk + 12 * factor + 400 * n;
 }
-#line 427 "paper/model.nw"
+#line 444 "paper/model.nw"
 int model_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
   double need = model_memory(p) + extra;
@@ -177,7 +177,14 @@ int model_fits(const Problem *p, double extra, const char *origin, Status *st)
                     "about %.3g GB, more than the %.3g GB this process may use",
                     origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
 }
-#line 373 "paper/model.nw"
+#line 408 "paper/model.nw"
+double model_displacement_max(const Model *md)
+{
+  double u = 0;
+  for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
+  return u;
+}
+#line 376 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -190,13 +197,13 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 392 "paper/model.nw"
+#line 395 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 385 "paper/model.nw"
+#line 388 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

@@ -47,6 +47,8 @@ double model_pressure(const Model *md, int c);
 double model_pressure_cv(const Model *md);
 /* seconds on a monotonic clock: the one clock of the package's timings */
 double model_clock(void);
+/* max |Q_i| over the unknowns of the last state solved, m */
+double model_displacement_max(const Model *md);
 /* bytes a model of p and its state solve need, estimated before any is
    allocated (see below) */
 double model_memory(const Problem *p);

@@ -1,6 +1,6 @@
-#line 58 "paper/main.nw"
+#line 59 "paper/main.nw"
 #include "usage.h"
-#line 63 "paper/main.nw"
+#line 64 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"

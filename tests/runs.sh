@@ -60,6 +60,15 @@ check "a dead run's staging folder is removed by the next run; a live one's is n
   test ! -e $d.partial-$dead -a -d $d.partial-$$
 rmdir $d.partial-$$
 
+# ---- a displacement that is not small -------------------------------------------
+$BIN solve $ex -o $TMP/gpa -s material.E=215 >/dev/null 2>$TMP/err; rc=$?
+check "E = 215 (GPa meant): one warning line on the largest displacement, exit 0, the files written" \
+  holds 'rc == 0 && lines == 1 && warned && written' rc=$rc lines="$(wc -l < $TMP/err)" \
+    warned=$(grep -c 'warning: .*largest displacement.*exceeds 0.1 of the body' $TMP/err) \
+    written=$([ -s $TMP/gpa/summary.dat ] && echo 1 || echo 0)
+$BIN solve $ex -o $TMP/steel >/dev/null 2>$TMP/err
+check "Example 5.1 as given: no warning" test ! -s $TMP/err
+
 # ---- effective.scene: the run's scene, every default written ------------------
 tr=data/example-5.1-tresca.scene
 for cmd in solve gradcheck optimize; do
