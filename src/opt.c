@@ -1,4 +1,4 @@
-#line 260 "paper/opt.nw"
+#line 265 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +9,7 @@
 #include "grad.h"
 #include "newton.h"
 
-#line 276 "paper/opt.nw"
+#line 281 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -29,7 +29,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 304 "paper/opt.nw"
+#line 309 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -48,14 +48,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 495 "paper/opt.nw"
+#line 503 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 593 "paper/opt.nw"
+#line 601 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -66,7 +66,7 @@ typedef struct {
   int stalled;            /* evaluations since the last accepted one */
 } Slsqp;
 enum { STALL = 10 };
-#line 326 "paper/opt.nw"
+#line 331 "paper/opt.nw"
 static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -83,7 +83,7 @@ static int evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 345 "paper/opt.nw"
+#line 350 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -92,22 +92,25 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 356 "paper/opt.nw"
-/* 1 if the monitor asks to stop here */
+#line 361 "paper/opt.nw"
+/* 1 if the monitor asks to stop here; its time is the caller's */
 static int report_iterate(Evaluator *ev, int iteration, double pg)
 {
+  double start = model_clock();
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
-                     ev->md->report.iterations, model_clock() - ev->start };
-  return ev->monitor && ev->monitor(&p, ev->X, ev->data);
+                     ev->md->report.iterations, start - ev->start };
+  int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
+  ev->rep->monitor_seconds += model_clock() - start;
+  return stop;
 }
-#line 380 "paper/opt.nw"
+#line 388 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_work;
 
-#line 390 "paper/opt.nw"
+#line 398 "paper/opt.nw"
 static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
@@ -118,7 +121,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 409 "paper/opt.nw"
+#line 417 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -126,13 +129,13 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = evaluate(ev, Xn))) return rc;
 *accepted = ev->E <= E0 + 1e-4 * descent;
-#line 400 "paper/opt.nw"
+#line 408 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 421 "paper/opt.nw"
+#line 429 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -145,7 +148,7 @@ static int projgrad(Evaluator *ev, double *X)
     int stop = report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 443 "paper/opt.nw"
+#line 451 "paper/opt.nw"
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
                 : !accepted ? "no_progress"
@@ -154,7 +157,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 433 "paper/opt.nw"
+#line 441 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -162,7 +165,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 504 "paper/opt.nw"
+#line 512 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -174,7 +177,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 519 "paper/opt.nw"
+#line 527 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -184,7 +187,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   double X[n], d = B->delta / B->C0;
   metric_design(&q->metric, B->C0, y, X);
   
-#line 539 "paper/opt.nw"
+#line 547 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
   c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
@@ -194,11 +197,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
   c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
 }
-#line 528 "paper/opt.nw"
+#line 536 "paper/opt.nw"
   if (grad)
     for (unsigned j = 0; j < n; j++) {
       
-#line 552 "paper/opt.nw"
+#line 560 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   grad[2 * i * n + j] = -R[i * n + j];
   grad[(2 * i + 1) * n + j] = R[i * n + j];
@@ -208,11 +211,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   grad[(2 * n + 2 * i) * n + j] = rise;
   grad[(2 * n + 2 * i + 1) * n + j] = -rise;
 }
-#line 531 "paper/opt.nw"
+#line 539 "paper/opt.nw"
     }
   (void) m;
 }
-#line 565 "paper/opt.nw"
+#line 573 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -230,13 +233,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 607 "paper/opt.nw"
+#line 615 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 616 "paper/opt.nw"
+#line 624 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
@@ -250,18 +253,18 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 637 "paper/opt.nw"
+#line 645 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 629 "paper/opt.nw"
+#line 637 "paper/opt.nw"
   if (ev->E < q->best) slsqp_accept(q);
   else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
   return ev->E / q->metric.scale;
 }
-#line 646 "paper/opt.nw"
+#line 654 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -281,7 +284,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 671 "paper/opt.nw"
+#line 679 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -296,7 +299,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 691 "paper/opt.nw"
+#line 699 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -318,11 +321,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 685 "paper/opt.nw"
+#line 693 "paper/opt.nw"
   ev->rep->metric_seconds = model_clock() - start;
   return rc;
 }
-#line 721 "paper/opt.nw"
+#line 729 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -337,7 +340,7 @@ static int slsqp(Evaluator *ev, double *X)
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
     else {
       
-#line 743 "paper/opt.nw"
+#line 751 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -346,7 +349,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1));
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 759 "paper/opt.nw"
+#line 767 "paper/opt.nw"
 if (!(rc = ev->failed)) {
   if (!ev->rep->stop_reason[0])
     snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -354,13 +357,13 @@ if (!(rc = ev->failed)) {
   rc = evaluate(ev, X);
 }
 (void) f;
-#line 735 "paper/opt.nw"
+#line 743 "paper/opt.nw"
     }
   }
   free(work);
   return rc;
 }
-#line 792 "paper/opt.nw"
+#line 800 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -372,7 +375,7 @@ typedef struct {
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
 static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
-#line 811 "paper/opt.nw"
+#line 819 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -397,7 +400,7 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   return STATUS_OK;
 }
-#line 840 "paper/opt.nw"
+#line 848 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -423,7 +426,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && nrep.pred > noise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 871 "paper/opt.nw"
+#line 879 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -442,7 +445,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 914 "paper/opt.nw"
+#line 922 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -450,7 +453,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 889 "paper/opt.nw"
+#line 897 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -470,7 +473,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 930 "paper/opt.nw"
+#line 938 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -483,11 +486,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 954 "paper/opt.nw"
+#line 962 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 942 "paper/opt.nw"
+#line 950 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -496,7 +499,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 970 "paper/opt.nw"
+#line 978 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;

@@ -728,6 +728,7 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "seconds %.6f\nmetric_seconds %.6f\nstate_seconds %.6f\n",
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
+  fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",

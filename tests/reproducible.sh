@@ -4,7 +4,7 @@
 # the C2 of its arc) are made twice, into two fresh folders, and every data
 # file of the first is compared with its twin by cmp.  Wall-clock times
 # differ by nature and are stripped first: the lines "seconds",
-# "metric_seconds", "state_seconds" and "model_seconds" of
+# "metric_seconds", "state_seconds", "model_seconds" and "monitor_seconds" of
 # summary.dat and the column "seconds" of history.dat (found by the name in
 # the header of any .dat file).  The second set runs with OpenMP and
 # OpenBLAS on one thread, the first with their defaults (one thread per
@@ -28,7 +28,7 @@ runs() {
 # strip FILE: the file without its wall-clock times
 strip_times() {
   awk 'NR == 1 && /^#/ { for (i = 2; i <= NF; i++) if ($i == "seconds") col = i - 1 }
-       ($1 == "seconds" || $1 == "metric_seconds" || $1 == "state_seconds" || $1 == "model_seconds") && NF == 2 { next }
+       ($1 == "seconds" || $1 ~ /^(metric|state|model|monitor)_seconds$/) && NF == 2 { next }
        col && !/^#/ { $col = ""; print; next }
        { print }' "$1"
 }

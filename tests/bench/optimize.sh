@@ -25,7 +25,7 @@ for p in "$bin" "$bb/bench_cholmod" "$bb/walltime"; do
 done
 raw=build/bench/optimize.dat
 mkdir -p build/bench
-echo "# N method wall[s] iterations evaluations seconds[s] state_seconds[s] stop_reason cholmod[s]" > $raw
+echo "# N method wall[s] iterations evaluations seconds[s] state_seconds[s] stop_reason cholmod[s] monitor_seconds[s]" > $raw
 for N in 64 256 512 1024; do
   [ $N -le "$nmax" ] || break
   "$bb/bench_cholmod" $scene mesh.refine=$((N / 16)) > "$tmp/ref" 2> "$tmp/err" \
@@ -39,27 +39,28 @@ for N in 64 256 512 1024; do
       || fail "optimize $method at N = $N, exit status $?: $(tail -n 2 "$tmp/log")"
     awk -v N=$N -v m=$method -v t="$(cut -d' ' -f1 "$tmp/t")" -v ref=$ref '{ v[$1] = $2 } END {
         if (!("iterations" in v && "state_seconds" in v && "seconds" in v)) exit 1
-        print N, m, t, v["iterations"], v["evaluations"], v["seconds"], v["state_seconds"], v["stop_reason"], ref }' \
+        print N, m, t, v["iterations"], v["evaluations"], v["seconds"], v["state_seconds"], v["stop_reason"], ref,
+              v["monitor_seconds"] + 0 }' \
       "$d/summary.dat" >> $raw || fail "optimize $method at N = $N: no summary"
     tail -n 1 $raw
   done
 done
 awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" '
   !/^#/ { n++; N[n] = $1; m[n] = $2; wall[n] = $3; it[n] = $4; ev[n] = $5
-          sec[n] = $6; st[n] = $7; stop[n] = $8; ref[n] = $9
-          if ($2 == "newton") { itn[$1] = $4; if ($1 >= 256) out = out "," ($6 - $7) / $6 } }
+          sec[n] = $6 - $10; st[n] = $7; stop[n] = $8; ref[n] = $9; mon[n] = $10 }
   END {
-    print "\\begin{center}\\small"
-    print "\\begin{tabular}{@{}rlrrrrrrl@{}}\\toprule"
-    print "$N$ & method & iterations & solves & whole [s] & state [s] & outside [\\%] & CHOLMOD [s] & ratio\\\\\\midrule"
+    print "\\begin{center}\\small\\setlength{\\tabcolsep}{4pt}"
+    print "\\begin{tabular}{@{}rlrrrrrrrl@{}}\\toprule"
+    print "$N$ & method & iterations & solves & whole [s] & state [s] & outside [\\%] & monitor [s] & CHOLMOD [s] & ratio\\\\\\midrule"
     for (i = 1; i <= n; i++)
-      printf "%d & %s & %d & %d & %.3g & %.3g & %.1f & %.3g & %.1f%s\\\\\n", N[i], m[i], it[i], ev[i],
-        wall[i], st[i], 100 * (sec[i] - st[i]) / sec[i], ref[i], wall[i] / ref[i],
+      printf "%d & %s & %d & %d & %.3g & %.3g & %.1f & %.2g & %.3g & %.1f%s\\\\\n", N[i], m[i], it[i], ev[i],
+        wall[i], st[i], 100 * (sec[i] - st[i]) / sec[i], mon[i], ref[i], wall[i] / ref[i],
         stop[i] == "converged" ? "" : " (" stop[i] ")"
     print "\\bottomrule\\end{tabular}\\\\[2pt]"
     printf "{\\footnotesize Measured by \\texttt{make bench} on %s, %d cores. ", date, cores
     print "\\emph{whole}: the process, files included; \\emph{state}: its state solves and gradients;"
-    print "\\emph{outside}: the share of the optimisation (\\texttt{seconds}) not in them;"
+    print "\\emph{outside}: the share of the optimisation (\\texttt{seconds} less the monitor) not in them;"
+    print "\\emph{monitor}: the output of the command line at each iterate (its line, \\texttt{iterates/*.vtu});"
     print "\\emph{ratio}: whole over one CHOLMOD analyse, factorise and solve of the same $N$.}"
     print "\\end{center}"
   }' $raw > "$tmp/bench-optimize.tex" || fail "the table"
