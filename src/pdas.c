@@ -21,7 +21,7 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
 #line 330 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 714 "paper/pdas.nw"
+#line 711 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -279,11 +279,8 @@ for (int c = 0; c < w->nk; c++) {
     if (gap < 0) inf += gap * gap;
     comp += fabs(T) * fabs(gap);
     ll += w->pos[c] * w->pos[c];
-  } else {                              /* as in qp_kkt_eval */
-    double excess = fabs(T) - w->fhi[c];
-    if (excess > 0) tn += excess * excess;
-    comp += fabs(w->fhi[c] * fabs(pd->y[c]) + T * pd->y[c]);
-  }
+  } else
+    qp_slip_terms(w->fhi[c], T, pd->y[c], &tn, &comp);
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
@@ -295,7 +292,7 @@ for (int c = 0; c < w->nk; c++) {
   return isfinite(tn + inf + comp + sf + su) ? k : NAN;
 }
 
-#line 622 "paper/pdas.nw"
+#line 619 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -325,7 +322,7 @@ static int predict_active_set(Qp_workspace *w)
   return same;
 }
 
-#line 671 "paper/pdas.nw"
+#line 668 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -344,7 +341,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 696 "paper/pdas.nw"
+#line 693 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -399,7 +396,7 @@ return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
 #line 350 "paper/pdas.nw"
 }
 
-#line 734 "paper/pdas.nw"
+#line 731 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -416,7 +413,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 753 "paper/pdas.nw"
+#line 750 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -424,7 +421,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 772 "paper/pdas.nw"
+#line 769 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -436,7 +433,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 790 "paper/pdas.nw"
+#line 787 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -459,11 +456,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 783 "paper/pdas.nw"
+#line 780 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 823 "paper/pdas.nw"
+#line 820 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

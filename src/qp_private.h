@@ -74,6 +74,18 @@ struct Qp_workspace {
 };
 
 #line 435 "paper/qp.nw"
+/* a slipping unknown with bound s, force r, value x: the squared excess
+   |r| - s > 0 to tn (more than friction holds), the Fenchel-Young gap
+   s|x| + r x to comp (slip not against r); the whole state's residual and
+   the active set method's condensed one both add them */
+static inline void qp_slip_terms(double s, double r, double x, double *tn,
+                                 double *comp)
+{
+  double excess = fabs(r) - s;
+  if (excess > 0) *tn += excess * excess;
+  *comp += fabs(s * fabs(x) + r * x);
+}
+
 /* num/den, and 0 whenever num is 0 (den may then be 0 too) */
 static inline double qp_ratio(double num, double den)
 {
@@ -91,7 +103,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 528 "paper/qp.nw"
+#line 538 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -104,7 +116,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 548 "paper/qp.nw"
+#line 558 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
