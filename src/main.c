@@ -199,16 +199,17 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 528 "paper/main.nw"
+#line 530 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
+  int plot_files;                     /* honours --plot-files */
 } Command;
 
 static const Command commands[] = {
-  { "solve", usage_solve, "", command_solve },
-  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck },
-  { "optimize", usage_optimize, "-optimize", command_optimize },
+  { "solve", usage_solve, "", command_solve, 1 },
+  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0 },
+  { "optimize", usage_optimize, "-optimize", command_optimize, 1 },
 };
 
 int main(int argc, char **argv)
@@ -236,6 +237,9 @@ int main(int argc, char **argv)
   cm.print = 0;             /* the library reports through Status, not stderr */
   gsl_set_error_handler_off();  /* likewise GSL: its codes are checked */
   int rc = args_read(argc, argv, &a, &st);
+  if (!rc && a.plot_files && !c->plot_files)
+    rc = status_set(&st, STATUS_INPUT, "command line: --plot-files: %s "
+                    "writes no mesh files", c->name);
   if (!rc) rc = run_command(&a, c->suffix, c->run, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
   cholmod_finish(&cm);

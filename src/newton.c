@@ -138,7 +138,7 @@ static void constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 325 "paper/newton.nw"
+#line 338 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -166,6 +166,36 @@ static void factor_tridiagonal(Newton_workspace *w, const int *col)
   }
 }
 
+/* Y = T^-1 T~ P' (n x m, row-major) by the substitutions of
+   tridiagonal_solve, a row of all m columns at a time; off is T~'s
+   off-diagonal */
+static void contact_columns(Newton_workspace *w, const int *col,
+                            const double *off)
+{
+  int n = w->n, m = w->m;
+  double *Y = w->Y;
+  memset(Y, 0, (size_t) n * m * sizeof *Y);
+  for (int e = 0; e < m; e++) {            /* T~ e_{i(e)}: three entries */
+    int i = col[e];
+    Y[(size_t) i * m + e] = w->T0[i];
+    if (i > 0) Y[(size_t) (i - 1) * m + e] = off[i - 1];
+    if (i < n - 1) Y[(size_t) (i + 1) * m + e] = off[i];
+  }
+  for (int k = 1, live = 0; k < n; k++) {  /* L: columns with i(e) <= k */
+    double *y = Y + (size_t) k * m, l = w->Te[k - 1];
+    const double *above = y - m;
+    while (live < m && col[live] <= k) live++;
+    for (int e = 0; e < live; e++) y[e] -= l * above[e];
+  }
+  for (int k = n - 1; k >= 0; k--) {       /* D, then L' from below */
+    double *y = Y + (size_t) k * m, d = w->Td[k];
+    for (int e = 0; e < m; e++) y[e] /= d;
+    if (k == n - 1) continue;
+    const double *below = y + m, l = w->Te[k];
+    for (int e = 0; e < m; e++) y[e] -= l * below[e];
+  }
+}
+
 static int factor_newton_matrix(Newton_workspace *w, const int *col)
 {
   int n = w->n, m = w->m, N = n - 1;
@@ -174,24 +204,16 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   for (int i = 0; i < N; i++) off[i] = -(w->W[2 * n + i] + w->W[2 * n + N + i]);
   factor_tridiagonal(w, col);
   if (m == 0) return 0;
-  for (int e = 0; e < m; e++) {            /* column e of Y = T^-1 T~ e_{i(e)} */
-    double *x = w->t1;
-    int i = col[e];
-    memset(x, 0, n * sizeof *x);
-    x[i] = w->T0[i];
-    if (i > 0) x[i - 1] = off[i - 1];
-    if (i < N) x[i + 1] = off[i];
-    tridiagonal_solve(w, x);
-    for (int j = 0; j < n; j++) w->Y[(size_t) j * m + e] = x[j];
+  contact_columns(w, col, off);
+  for (int c = 0; c < m; c++) {            /* the lower triangle of Sigma */
+    double *sig = gsl_matrix_ptr(w->Sig, c, 0);
+    const double *hv = w->Hv + (size_t) c * m, *y = w->Y + (size_t) col[c] * m;
+    for (int e = 0; e <= c; e++) sig[e] = hv[e] + Wc[c] * y[e];
   }
-  for (int c = 0; c < m; c++)
-    for (int e = 0; e <= c; e++)
-      gsl_matrix_set(w->Sig, c, e, w->Hv[(size_t) c * m + e]
-                     + Wc[c] * w->Y[(size_t) col[c] * m + e]);
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 385 "paper/newton.nw"
+#line 420 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -220,7 +242,7 @@ static void bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 429 "paper/newton.nw"
+#line 464 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {
@@ -304,7 +326,7 @@ static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
   w->mu += a * dmu;
   return 0;
 }
-#line 519 "paper/newton.nw"
+#line 554 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_GAP = 1e-18, NEWTON_ACCEPT = 1e-9;
 
@@ -356,7 +378,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
     gap = residuals(w, mdl->col, &re, scale);
     
-#line 587 "paper/newton.nw"
+#line 622 "paper/newton.nw"
 double rdd = 0, rdv = 0, rpmax = 0, all = re + gap;   /* all: NaN if any is */
 for (int i = 0; i < n; i++) rdd = fmax(rdd, fabs(w->rd[i])), all += w->rd[i];
 for (int c = 0; c < m; c++) rdv = fmax(rdv, fabs(w->rd[n + c])), all += w->rd[n + c];
@@ -365,15 +387,15 @@ res = fmax(fmax(rdd / fmax(scale[0], DBL_MIN), rdv / fmax(scale[1], DBL_MIN)),
            fmax(rpmax / bmax, fabs(re)));
 res = fmax(res, gap / (fmax(scale[0], DBL_MIN) * NEWTON_GAP) * NEWTON_TOL);
 if (!isfinite(all)) break;                    /* rounding has broken it: the best */
-#line 570 "paper/newton.nw"
+#line 605 "paper/newton.nw"
     
-#line 607 "paper/newton.nw"
+#line 642 "paper/newton.nw"
 if (res < best) {
   best = res, worse = 0;
   memcpy(w->zbest, w->z, (size_t) (n + m) * sizeof *w->z);
 } else worse++;
 if (best <= NEWTON_TOL || (worse >= 3 && best <= NEWTON_ACCEPT)) break;
-#line 571 "paper/newton.nw"
+#line 606 "paper/newton.nw"
     if ((singular = predictor_corrector(w, mdl->col, gap, re))) break;
   }
   if (rep) rep->iterations = k, rep->residual = best;

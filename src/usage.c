@@ -19,7 +19,7 @@ const char usage_main[] =
 
 const char usage_solve[] =
   "usage: contactopt solve SCENE [-o DIR] [-s section.key=value ...]\n"
-  "                  [--matrix-market FILE]\n"
+  "                  [--matrix-market FILE] [--plot-files]\n"
   "Solve the contact state problem (4.3) at the scene's initial design and\n"
   "write the results into DIR.\n\n"
   "  -o DIR                output folder (default: out/NAME for NAME.scene)\n"
@@ -55,7 +55,7 @@ const char usage_gradcheck[] =
 
 const char usage_optimize[] =
   "usage: contactopt optimize SCENE [-o DIR] [-s section.key=value ...]\n"
-  "                  [--matrix-market FILE]\n"
+  "                  [--matrix-market FILE] [--plot-files]\n"
   "Minimise the total potential energy E over the design set B (4.4) from\n"
   "the scene's initial design (projected onto B if outside), by\n"
   "optimizer.method = newton (default), slsqp or projgrad (Algorithm 4.1).\n"

@@ -96,6 +96,11 @@ bad "a shape on [0, 1] for a body on [0, 4]" design.file 'short.dat line 3' 'end
   -s design.initial=file -s design.file=$TMP/short.dat
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
+rm -rf $TMP/bad
+$BIN gradcheck $scene -o $TMP/bad --plot-files > /dev/null 2> $TMP/err; rc=$?
+if clean_failure $rc 2 $TMP/err $TMP/bad --plot-files gradcheck; then
+  ok "gradcheck refuses --plot-files (it writes no mesh): exit 2, $(cat $TMP/err)"
+else fail "gradcheck --plot-files: exit $rc: $(cat $TMP/err)"; fi
 printf '[geometry\na = 0\n' > $TMP/broken.scene
 bad "a syntax error" broken.scene line -- $TMP/broken.scene
 # found by make fuzz (tests/fuzz/): a NUL byte on the last line, which has

@@ -1,8 +1,8 @@
 # tests/fuzz/fuzz.mk: fuzzing the scene parser and validator (scene_load,
-# paper/setting.nw) with libFuzzer, under AddressSanitizer, UBSan and
+# paper/scene.nw) with libFuzzer, under AddressSanitizer, UBSan and
 # LeakSanitizer.  Included by the Makefile; it relies on nothing of it but
-# the tangled sources (src/scene.c, src/status.c and their headers, made by
-# the rule of src/.tangled) and the Makefile's recipe apt_install.
+# the tangled sources (made by the rule of src/.tangled, listed in TANGLED)
+# and the Makefile's recipe apt_install.
 #
 #   make fuzz [FUZZ_SECONDS=60] [FUZZ_JOBS=1]
 #       fuzz for FUZZ_SECONDS seconds; the corpus grows in build/fuzz/corpus
@@ -44,7 +44,7 @@ fuzz-replay: $(FUZZ_DIR)/fuzz_scene
 # The scene adapter reads the modules' defaults and samples the initial
 # shape with the design module, so the fuzzer links every module.
 $(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(MODULES:%=src/%.c) \
-                        $(MODULES:%=src/%.h) | fuzz-deps
+                        $(filter %.h,$(TANGLED)) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c \
 	  $(MODULES:%=src/%.c) $(LDLIBS)
