@@ -245,7 +245,7 @@ static int fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 520 "paper/fem.nw"
+#line 522 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -268,7 +268,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
   return 0;
 }
 
-#line 546 "paper/fem.nw"
+#line 548 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -280,17 +280,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 563 "paper/fem.nw"
+#line 565 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 557 "paper/fem.nw"
+#line 559 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 579 "paper/fem.nw"
+#line 581 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -304,7 +304,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 596 "paper/fem.nw"
+#line 598 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -312,7 +312,7 @@ static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
 
-#line 605 "paper/fem.nw"
+#line 607 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -320,7 +320,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 619 "paper/fem.nw"
+#line 621 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -339,14 +339,14 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 
-#line 668 "paper/fem.nw"
+#line 670 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 683 "paper/fem.nw"
+#line 685 "paper/fem.nw"
 double xy[6], q[6], gx[3], gy[3];
 long double e[3], De;
 fem_element_xy(m, t, xy);
@@ -360,7 +360,7 @@ for (int r = 0; r < 3; r++) {
   for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
   U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
 }
-#line 674 "paper/fem.nw"
+#line 676 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);
