@@ -138,7 +138,7 @@ static void constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 340 "paper/newton.nw"
+#line 342 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -213,7 +213,7 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 422 "paper/newton.nw"
+#line 424 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -242,7 +242,7 @@ static void bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 466 "paper/newton.nw"
+#line 468 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {
@@ -326,7 +326,7 @@ static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
   w->mu += a * dmu;
   return 0;
 }
-#line 556 "paper/newton.nw"
+#line 558 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_GAP = 1e-18, NEWTON_ACCEPT = 1e-9;
 
@@ -352,6 +352,10 @@ static int check_model(const Newton_workspace *w, const Newton_model *mdl, Statu
     if (!(mdl->r[i] > 0) || !isfinite(mdl->r[i]) || !isfinite(mdl->g[i]) || !isfinite(mdl->X[i]))
       return status_set(st, STATUS_INPUT, "newton: r, g or X at node %d is not "
                         "finite, or r <= 0", i);
+  for (int c = 0; c < mdl->m; c++)     /* one contact unknown a node, in order */
+    if (mdl->col[c] < (c ? mdl->col[c - 1] + 1 : 0) || mdl->col[c] >= mdl->n)
+      return status_set(st, STATUS_INPUT, "newton: the design nodes col of the "
+                        "contact unknowns are not increasing in [0, n) at %d", c);
   for (int c = 0; c < mdl->m; c++)
     if (!isfinite(mdl->f[c]) || !isfinite(mdl->v0[c]))
       return status_set(st, STATUS_INPUT, "newton: f or v0 at contact %d is not finite", c);
@@ -378,7 +382,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
     gap = residuals(w, mdl->col, &re, scale);
     
-#line 624 "paper/newton.nw"
+#line 630 "paper/newton.nw"
 double rdd = 0, rdv = 0, rpmax = 0, all = re + gap;   /* all: NaN if any is */
 for (int i = 0; i < n; i++) rdd = fmax(rdd, fabs(w->rd[i])), all += w->rd[i];
 for (int c = 0; c < m; c++) rdv = fmax(rdv, fabs(w->rd[n + c])), all += w->rd[n + c];
@@ -387,15 +391,15 @@ res = fmax(fmax(rdd / fmax(scale[0], DBL_MIN), rdv / fmax(scale[1], DBL_MIN)),
            fmax(rpmax / bmax, fabs(re)));
 res = fmax(res, gap / (fmax(scale[0], DBL_MIN) * NEWTON_GAP) * NEWTON_TOL);
 if (!isfinite(all)) break;                    /* rounding has broken it: the best */
-#line 607 "paper/newton.nw"
+#line 613 "paper/newton.nw"
     
-#line 644 "paper/newton.nw"
+#line 650 "paper/newton.nw"
 if (res < best) {
   best = res, worse = 0;
   memcpy(w->zbest, w->z, (size_t) (n + m) * sizeof *w->z);
 } else worse++;
 if (best <= NEWTON_TOL || (worse >= 3 && best <= NEWTON_ACCEPT)) break;
-#line 608 "paper/newton.nw"
+#line 614 "paper/newton.nw"
     if ((singular = predictor_corrector(w, mdl->col, gap, re))) break;
   }
   if (rep) rep->iterations = k, rep->residual = best;

@@ -334,6 +334,12 @@ static void test_errors(void)
   k.r[3] = 1, k.f[1] = NAN;
   check(newton_solve(w, &k.mdl, d, v, NULL, &st) == STATUS_INPUT && strstr(st.msg, "contact 1"),
         "a NaN in f: STATUS_INPUT \"%s\"", st.msg);
+  k.f[1] = 0, k.col[0] = 2, k.col[1] = 1;
+  check(newton_solve(w, &k.mdl, d, v, NULL, &st) == STATUS_INPUT && strstr(st.msg, "increasing"),
+        "contact unknowns out of order (col = 2, 1): STATUS_INPUT \"%s\"", st.msg);
+  k.col[0] = 1, k.col[1] = 5;
+  check(newton_solve(w, &k.mdl, d, v, NULL, &st) == STATUS_INPUT && strstr(st.msg, "increasing"),
+        "a contact unknown at node 5 of 5: STATUS_INPUT \"%s\"", st.msg);
   newton_free(w);
   check(newton_alloc(1, 0, &st) == NULL && st.code == STATUS_INPUT,
         "one design node: STATUS_INPUT \"%s\"", st.msg);
