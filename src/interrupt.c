@@ -1,4 +1,4 @@
-#line 381 "paper/main.nw"
+#line 382 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

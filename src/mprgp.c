@@ -10,7 +10,7 @@
 #line 134 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 355 "paper/mprgp.nw"
+#line 356 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
 
 #line 140 "paper/mprgp.nw"
@@ -38,6 +38,7 @@ void mprgp_set(Qp_workspace *w)
 {
   w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
   w->mprgp.restart = 1, w->mprgp.factored = 0;
+  w->pdas.condensed = 0;         /* S, if any, is the last values' */
 }
 
 void mprgp_free(Qp_workspace *w)
@@ -45,7 +46,7 @@ void mprgp_free(Qp_workspace *w)
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
 
-#line 191 "paper/mprgp.nw"
+#line 192 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -65,7 +66,7 @@ static void ssor_free(Qp_workspace *w)
   }
 }
 
-#line 233 "paper/mprgp.nw"
+#line 234 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -80,7 +81,7 @@ static int proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 254 "paper/mprgp.nw"
+#line 255 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -99,7 +100,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 311 "paper/mprgp.nw"
+#line 312 "paper/mprgp.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -110,7 +111,7 @@ static double feasible_step(const Qp_workspace *w)
   return af;
 }
 
-#line 328 "paper/mprgp.nw"
+#line 329 "paper/mprgp.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -124,7 +125,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
 
-#line 359 "paper/mprgp.nw"
+#line 360 "paper/mprgp.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
@@ -140,7 +141,7 @@ static void expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 286 "paper/mprgp.nw"
+#line 287 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -164,7 +165,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 495 "paper/mprgp.nw"
+#line 496 "paper/mprgp.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -192,7 +193,7 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
 
-#line 525 "paper/mprgp.nw"
+#line 526 "paper/mprgp.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
@@ -211,11 +212,11 @@ static void dual_state(Qp_workspace *w)
   dual_hessian(w, r, w->pdas.y);
 }
 
-#line 489 "paper/mprgp.nw"
+#line 490 "paper/mprgp.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 547 "paper/mprgp.nw"
+#line 548 "paper/mprgp.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
@@ -248,7 +249,7 @@ static double norm_inverse(Qp_workspace *w)
   return rho + res;
 }
 
-#line 582 "paper/mprgp.nw"
+#line 583 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
   int code = pdas_condense(w, st);
@@ -261,7 +262,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 597 "paper/mprgp.nw"
+#line 598 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -276,7 +277,7 @@ static int dual_proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 613 "paper/mprgp.nw"
+#line 614 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -287,7 +288,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
   return af;
 }
 
-#line 627 "paper/mprgp.nw"
+#line 628 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -304,7 +305,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   mp->restart = 1;
 }
 
-#line 647 "paper/mprgp.nw"
+#line 648 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -319,7 +320,7 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 681 "paper/mprgp.nw"
+#line 682 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
@@ -333,7 +334,7 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 699 "paper/mprgp.nw"
+#line 700 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -350,7 +351,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 665 "paper/mprgp.nw"
+#line 666 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -365,7 +366,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   else dual_expansion_step(w, af);
 }
 
-#line 723 "paper/mprgp.nw"
+#line 724 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -395,7 +396,7 @@ static double dual_snapped_kkt(Qp_workspace *w)
   return kkt;
 }
 
-#line 756 "paper/mprgp.nw"
+#line 757 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
@@ -405,7 +406,7 @@ static int dual_finish(Qp_workspace *w, Status *st)
     "ill-conditioned for this tolerance", w->iter + 1, w->kkt, w->opt.tol);
 }
 
-#line 771 "paper/mprgp.nw"
+#line 772 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
@@ -420,7 +421,7 @@ static int dual_iterate(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 220 "paper/mprgp.nw"
+#line 221 "paper/mprgp.nw"
 int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */

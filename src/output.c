@@ -1,4 +1,4 @@
-#line 221 "paper/output.nw"
+#line 223 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "output.h"
 
-#line 277 "paper/output.nw"
+#line 280 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -29,7 +29,7 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
-#line 308 "paper/output.nw"
+#line 311 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -41,8 +41,8 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 323 "paper/output.nw"
-static int output_check_dir(const char *dir, Status *st)
+#line 326 "paper/output.nw"
+int output_check(const char *dir, Status *st)
 {
   struct stat sb;
   char path[1200];
@@ -60,7 +60,7 @@ static int output_check_dir(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 345 "paper/output.nw"
+#line 348 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -81,17 +81,17 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 296 "paper/output.nw"
+#line 299 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
   snprintf(o->dir, sizeof o->dir, "%s", dir);
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
-  int rc = output_check_dir(dir, st);
+  int rc = output_check(dir, st);
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 369 "paper/output.nw"
+#line 372 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -101,7 +101,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 382 "paper/output.nw"
+#line 385 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -135,7 +135,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 420 "paper/output.nw"
+#line 423 "paper/output.nw"
 static int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -157,7 +157,7 @@ static FILE *output_open_in_folder(Output *o, const char *folder,
                      strerror(errno));
   return f;
 }
-#line 447 "paper/output.nw"
+#line 450 "paper/output.nw"
 int output_commit(Output *o, Status *st)
 {
   char old[1200];
@@ -182,19 +182,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_tree(o->stage); }
-#line 475 "paper/output.nw"
+#line 478 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 488 "paper/output.nw"
+#line 491 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 497 "paper/output.nw"
+#line 500 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -202,7 +202,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 507 "paper/output.nw"
+#line 510 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -213,7 +213,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 520 "paper/output.nw"
+#line 523 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -229,19 +229,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 544 "paper/output.nw"
+#line 547 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 535 "paper/output.nw"
+#line 538 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 553 "paper/output.nw"
+#line 556 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -255,7 +255,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 569 "paper/output.nw"
+#line 572 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -273,7 +273,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 607 "paper/output.nw"
+#line 610 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -297,7 +297,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 666 "paper/output.nw"
+#line 669 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -339,7 +339,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 726 "paper/output.nw"
+#line 729 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -363,7 +363,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 756 "paper/output.nw"
+#line 759 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -388,7 +388,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 635 "paper/output.nw"
+#line 638 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -411,7 +411,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 785 "paper/output.nw"
+#line 788 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -438,7 +438,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 816 "paper/output.nw"
+#line 819 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -450,7 +450,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 832 "paper/output.nw"
+#line 835 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -461,7 +461,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   void *values = malloc(most);
   if (!s.stress || !values) {
     free(s.stress), free(values);
-    return status_set(st, STATUS_SYSTEM, "solution.vtu: out of memory");
+    return status_set(st, STATUS_MEMORY, "solution.vtu: out of memory");
   }
   for (size_t t = 0; t < nt; t++) vtu_triangle_stress(md, (int) t, s.stress + 5 * t);
   vtu_header(f, md->mesh, a, n);
@@ -469,7 +469,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 853 "paper/output.nw"
+#line 856 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -479,7 +479,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 866 "paper/output.nw"
+#line 869 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -492,7 +492,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 910 "paper/output.nw"
+#line 913 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -505,7 +505,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 886 "paper/output.nw"
+#line 889 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -525,7 +525,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 926 "paper/output.nw"
+#line 929 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -540,7 +540,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 949 "paper/output.nw"
+#line 952 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -567,7 +567,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1153 "paper/output.nw"
+#line 1157 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -578,7 +578,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1043 "paper/output.nw"
+#line 1047 "paper/output.nw"
 #define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
 
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -600,11 +600,11 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 985 "paper/output.nw"
+#line 988 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
-  if (!h) status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  if (!h) status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else h->ndesign = ndesign;
   return h;
 }
@@ -645,7 +645,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1108 "paper/output.nw"
+#line 1112 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -658,7 +658,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1072 "paper/output.nw"
+#line 1076 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -678,7 +678,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
                    Status *st)
 {
   int rc;
-  if (h->failed) return status_set(st, STATUS_SYSTEM, "optimize: out of memory");
+  if (h->failed) return status_set(st, STATUS_MEMORY, "optimize: out of memory");
   if (h->vtu.code) return status_set(st, h->vtu.code, "%s", h->vtu.msg);
   FILE *f = output_open(o, "history.dat", st);
   if (!f) return st->code;
@@ -690,7 +690,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1131 "paper/output.nw"
+#line 1135 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -709,7 +709,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1169 "paper/output.nw"
+#line 1173 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

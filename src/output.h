@@ -16,6 +16,8 @@ typedef struct {
   char file[OUTPUT_MAX_FILES][128];   /* their names relative to dir */
 } Output;
 
+/* STATUS_INPUT if dir is there and not a run's folder (nor empty) */
+int output_check(const char *dir, Status *st);
 int output_begin(Output *o, const char *dir, Status *st);
 FILE *output_open(Output *o, const char *name, Status *st);
 int output_close(Output *o, FILE *f, Status *st);
@@ -29,7 +31,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 150 "paper/output.nw"
+#line 152 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -45,7 +47,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 172 "paper/output.nw"
+#line 174 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -73,7 +75,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 203 "paper/output.nw"
+#line 205 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
@@ -87,5 +89,5 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 144 "paper/output.nw"
+#line 146 "paper/output.nw"
 #endif

@@ -1,11 +1,11 @@
-#line 392 "paper/qp.nw"
+#line 394 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 470 "paper/qp.nw"
+#line 472 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -20,42 +20,42 @@ double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 496 "paper/qp.nw"
+#line 498 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 484 "paper/qp.nw"
+#line 486 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 509 "paper/qp.nw"
+#line 511 "paper/qp.nw"
 qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
 if (T) T[qp->nc + k] = r;
-#line 487 "paper/qp.nw"
+#line 489 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 516 "paper/qp.nw"
+#line 518 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
                 fmax(qp_ratio(sqrt(inf), su),
                      qp_ratio(qp_ratio(comp, sf), su)));
 return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 492 "paper/qp.nw"
+#line 494 "paper/qp.nw"
 }
 
-#line 524 "paper/qp.nw"
+#line 526 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, x, NULL, T);
 }
 
-#line 576 "paper/qp.nw"
+#line 578 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -70,13 +70,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
 }
 
-#line 643 "paper/qp.nw"
+#line 645 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 652 "paper/qp.nw"
+#line 654 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -92,7 +92,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 616 "paper/qp.nw"
+#line 618 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -115,7 +115,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 747 "paper/qp.nw"
+#line 749 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -127,11 +127,11 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 638 "paper/qp.nw"
+#line 640 "paper/qp.nw"
   return check_options(opt, st);
 }
 
-#line 673 "paper/qp.nw"
+#line 675 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -156,7 +156,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 704 "paper/qp.nw"
+#line 706 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -176,7 +176,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 596 "paper/qp.nw"
+#line 598 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -194,7 +194,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 726 "paper/qp.nw"
+#line 728 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -206,7 +206,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 769 "paper/qp.nw"
+#line 771 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -231,7 +231,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 799 "paper/qp.nw"
+#line 801 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -255,7 +255,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 825 "paper/qp.nw"
+#line 827 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -264,7 +264,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 837 "paper/qp.nw"
+#line 839 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -279,14 +279,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 876 "paper/qp.nw"
+#line 878 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 858 "paper/qp.nw"
+#line 860 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -303,7 +303,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 923 "paper/qp.nw"
+#line 932 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -319,7 +319,7 @@ const char *qp_hint(const Qp_workspace *w)
     "if only the contact holds the body, the load lifts it off";
 }
 
-#line 942 "paper/qp.nw"
+#line 951 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -330,7 +330,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 914 "paper/qp.nw"
+#line 923 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -338,7 +338,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
 }
 
-#line 892 "paper/qp.nw"
+#line 899 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -353,19 +353,21 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     rep->iterations = w->iter, rep->kkt = w->kkt;
     rep->active = qp_count_active(w), rep->converged = qp_test(w);
   }
+  if (!code && w->opt.method == QP_CGSSOR && w->nk > w->nc && !w->pdas.condensed)
+    code = pdas_condense_states(w, st);         /* for qp_schur; after the copies */
   return code;
 }
 
-#line 967 "paper/qp.nw"
+#line 983 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;
   Qp bounded = *w->qp;           /* the problem without its friction */
   int code = STATUS_OK;
   bounded.nt = 0, bounded.it = NULL, bounded.slip = NULL;
-  if (w->opt.method == QP_PDAS && w->pdas.condensed && w->nk > w->nc)
+  if (w->pdas.condensed && w->nk > w->nc)
     return pdas_schur_friction(w, shift, S, st);
-  if (w->opt.method != QP_PDAS || !w->pdas.condensed)
+  if (!w->pdas.condensed)
     code = pdas_condense_apart(w, &bounded, &c, st);
   if (!code) pdas_schur(c ? c : w, shift, S);
   qp_free(c);

@@ -31,12 +31,13 @@ typedef struct {
   cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
   cholmod_dense *Lb;     /* n x 1: z = L \ P b */
   char *act;             /* nk: each one's state in the next Newton step */
-  int condensed;         /* S, f belong to the current values of A and b */
+  int condensed;         /* S, f belong to the current values of A and b
+                            (pdas, or cgssor's dual) */
   int warm;              /* the first active set is to be guessed from x0 */
   int stepped;           /* y, T come from a Newton step (not a guess) */
 } Pdas_workspace;
 
-#line 273 "paper/qp.nw"
+#line 274 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -73,7 +74,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 435 "paper/qp.nw"
+#line 437 "paper/qp.nw"
 /* a slipping unknown with bound s, force r, value x: the squared excess
    |r| - s > 0 to tn (more than friction holds), the Fenchel-Young gap
    s|x| + r x to comp (slip not against r); the whole state's residual and
@@ -103,7 +104,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 538 "paper/qp.nw"
+#line 540 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -116,7 +117,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 558 "paper/qp.nw"
+#line 560 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -132,7 +133,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 289 "paper/qp.nw"
+#line 290 "paper/qp.nw"
 /* the relative KKT residual of x; g = Ax - b if known, else NULL;
    T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
@@ -149,7 +150,7 @@ const char *qp_hint(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 314 "paper/qp.nw"
+#line 315 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -162,6 +163,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st);
 /* pdas.c, for MPRGP with friction: S and f, the residual of (y, T), x */
 int pdas_condense(Qp_workspace *w, Status *st);
+int pdas_condense_states(Qp_workspace *w, Status *st);
 double pdas_condensed_kkt(const Qp_workspace *w);
 int pdas_expand(Qp_workspace *w, Status *st);
 /* mprgp.c: MPRGP, CG-SSOR with projection */

@@ -540,7 +540,7 @@ if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
-  L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory",
+  L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
 #line 1070 "paper/scene.nw"
   L->line = 0;
@@ -579,7 +579,7 @@ static int apply_override(Loader *L, const char *o)
   Entry e, *old;
   L->override = o;
   if (!(copy = malloc(strlen(o) + 1)))
-    return L->failed = status_set(L->st, STATUS_SYSTEM, "out of memory");
+    return L->failed = status_set(L->st, STATUS_MEMORY, "out of memory");
   strcpy(copy, o);
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
@@ -959,7 +959,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
     return blame(L, "%s line %d: %d number%s: a row of a shape file is x1 "
                  "alpha", path, lineno, k, k == 1 ? "" : "s");
   if (rows_add(r, v[0], v[1], lineno))
-    return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
+    return L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory "
                                   "for the rows of %s", L->path, path);
   return 0;
 }
@@ -1079,7 +1079,7 @@ static int read_initial(Loader *L, Scene *s)
   if ((rc = refuse_unused(L, "design", "initial", initial_names[k])))
     return rc;
   if (!(s->alpha0 = malloc(((size_t)s->problem.N + 1) * sizeof *s->alpha0)))
-    return L->failed = status_set(L->st, STATUS_SYSTEM, "%s: out of memory "
+    return L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory "
                                   "for %d nodes", L->path, s->problem.N + 1);
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
@@ -1413,7 +1413,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2290 "paper/scene.nw"
+#line 2292 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];
@@ -1433,6 +1433,12 @@ int scene_write(const Scene *s, FILE *f, Status *st)
       return status_set(st, STATUS_INPUT, "%s: %s.%s: %d characters, more "
                         "than a line of a scene holds (%d)", s->path, k->sec,
                         k->key, (int)strlen(v), INI_MAX_LINE - 2);
+    if (in_comment(v, 0) || (*v && (isspace((unsigned char)v[0])
+                                    || isspace((unsigned char)v[strlen(v) - 1]))))
+      return status_set(st, STATUS_INPUT, "%s: %s.%s: \"%s\" would not read "
+                        "back from a scene (a ';' after a blank begins a "
+                        "comment, blanks at the ends are trimmed)", s->path, k->sec,
+                        k->key, v);
     fprintf(f, "%s = %s\n", k->key, v);
   }
   if (fflush(f) || ferror(f))

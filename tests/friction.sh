@@ -50,6 +50,15 @@ for m in newton slsqp projgrad; do
     kkt_point "tresca $m" $TMP/opt-$m 0.05 0.00625 0.25
   else fail "tresca optimize $m: $(cat $TMP/err)"; fi
 done
+# cgssor hands the Newton method the stiffness at the current stick and
+# slip, as pdas does: the same iterations (9 when it handed over the
+# frictionless one) and the same optimum
+if $BIN optimize $tr -o $TMP/opt-cg -s solver.state=cgssor >/dev/null 2>$TMP/err; then
+  check "tresca optimize with cgssor: $(value iterations $TMP/opt-cg) Newton iterations as with pdas ($(value iterations $TMP/opt-newton))" \
+    test "$(value iterations $TMP/opt-cg)" -eq "$(value iterations $TMP/opt-newton)"
+  check "tresca optimize with cgssor: E* agrees with pdas's to 1e-9" \
+    near_ref "$(value energy $TMP/opt-newton)" "$(value energy $TMP/opt-cg)" 1e-9
+else fail "tresca optimize with cgssor: $(cat $TMP/err)"; fi
 for m in slsqp projgrad; do
   check "tresca: $m's E* agrees with the Newton method's to 1e-9" \
     near_ref "$(value energy $TMP/opt-newton)" "$(value energy $TMP/opt-$m)" 1e-9

@@ -53,6 +53,9 @@ $BIN solve $ex -o $TMP/mine >/dev/null 2>$TMP/err; rc=$?
 check "a folder that is not a run's is refused (exit 2, one line) and left alone" \
   holds 'rc == 2 && lines == 1 && kept' rc=$rc lines="$(wc -l < $TMP/err)" \
     kept=$(grep -q precious $TMP/mine/notes.txt && echo 1 || echo 0)
+$BIN gradcheck $ex -o $TMP/mine -s mesh.refine=4 > $TMP/out 2>$TMP/err; rc=$?
+check "... and refused before any work: gradcheck at N = 64 (seconds of work) prints no progress line" \
+  holds 'rc == 2 && out == 0' rc=$rc out="$(wc -l < $TMP/out)"
 dead=999999; while kill -0 $dead 2>/dev/null; do dead=$((dead - 1)); done
 mkdir -p $d.partial-$dead/final $d.partial-$$ && touch $d.partial-$dead/final/x
 $BIN solve $ex -o $d >/dev/null 2>&1

@@ -143,7 +143,8 @@ static void relative_file(void)
   rmdir(path);
 }
 
-/* the refusals: a path too long for a scene line, a file not writable */
+/* the refusals: a path too long for a scene line or with " ;" in it, a
+   file not writable */
 static void refusals(void)
 {
   char dir[512], path[768], text[4096], over[800], *ov[] = {
@@ -166,6 +167,22 @@ static void refusals(void)
     check(scene_write(&s, f, &st) == STATUS_INPUT && strstr(st.msg, "design.file")
           && strstr(st.msg, "more than a line"),
           "its effective scene is refused, the path too long: %s", st.msg);
+    fclose(f);
+    scene_free(&s);
+  }
+  unlink(path);
+  rmdir(dir);
+  snprintf(dir, sizeof dir, "%s/a ;b", tmpdir);       /* inih: "a" and a comment */
+  mkdir(dir, 0700);
+  snprintf(path, sizeof path, "%s/shape.dat", dir);
+  put(path, text);
+  snprintf(over, sizeof over, "design.file=%s", path);
+  st.msg[0] = 0;
+  if (check(scene_load(&s, "data/example-5.1.scene", 5, ov, &st) == 0,
+            "a shape file in a folder \"a ;b\" loads from -s: %s", st.msg)) {
+    f = tmpfile();
+    check(scene_write(&s, f, &st) == STATUS_INPUT && strstr(st.msg, "would not read back"),
+          "its effective scene is refused, the path would read as a comment: %s", st.msg);
     fclose(f);
     scene_free(&s);
   }

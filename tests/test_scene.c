@@ -360,8 +360,11 @@ static void test_shape_file(void)
   write_file("file.scene", text, scene, sizeof scene);
   if (check(scene_load(&s, scene, 0, NULL, &st) == 0,
             "initial = file loads relative to the scene: %s", st.msg)) {
-    for (i = 0; i <= 16; i++) ok &= s.alpha0[i] == strtod("0.001", NULL) * i
-                                     || fabs(s.alpha0[i] - 0.001 * i) < 1e-17;
+    for (i = 0; i <= 16; i++) {          /* the number of the file's text */
+      char row[32];
+      snprintf(row, sizeof row, "%g", 0.001 * i);
+      ok &= s.alpha0[i] == strtod(row, NULL);
+    }
     check(ok && !s.note[0], "initial = file: rows at the 17 nodes give alpha0 "
           "as they are, without a note");
     scene_free(&s);
