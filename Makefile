@@ -53,7 +53,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -108,6 +108,21 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 
 check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
+
+# make check-kernels: the numerical tests (the test programs and the scripts
+# that solve and optimise) again under each setting of KERNEL_SETTINGS:
+# OpenBLAS kernel families older than any x86-64 machine's own (Prescott is
+# the generic one every x86-64 runs, Sandybridge the first with AVX), and one
+# thread. A verdict that changes with the kernel then fails here, on the
+# developer's machine, before it fails on a user's. CI runs it.
+KERNEL_SETTINGS ?= OPENBLAS_CORETYPE=Prescott OPENBLAS_CORETYPE=Sandybridge OPENBLAS_NUM_THREADS=1
+NUMERIC_SCRIPTS := $(patsubst %,tests/%.sh,optimize suite friction hard_cases solvers_agree \
+                     reference gradcheck convergence flat_punch magnitudes reproducible)
+check-kernels: $(PROGRAM) $(TEST_PROGS)
+	@for k in $(KERNEL_SETTINGS); do echo "check-kernels: $$k"; \
+	  env $$k BIN=$(PROGRAM) TESTS=$(B)/tests SCRIPTS="$(NUMERIC_SCRIPTS)" \
+	    LOG=build/tests-$$k.log sh tests/run | tail -n 1 | sed "s/^/check-kernels: $$k: /"; \
+	done; ! grep -l '^FAIL - ' $(KERNEL_SETTINGS:%=build/tests-%.log)
 
 # make bench: the state-solver table, then the performance tables (issue 5;
 # BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve
