@@ -1,4 +1,4 @@
-#line 176 "paper/qp.nw"
+#line 179 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
@@ -7,7 +7,7 @@
 #include <math.h>
 #include "qp.h"
 
-#line 240 "paper/qp.nw"
+#line 243 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -35,9 +35,12 @@ typedef struct {
                             (pdas, or cgssor's dual) */
   int warm;              /* the first active set is to be guessed from x0 */
   int stepped;           /* y, T come from a Newton step (not a guess) */
+  int met;               /* the last Newton step's kkt met the tolerance */
+  int pending;           /* x is not yet the state of the last Newton
+                            step: qp_test fails */
 } Pdas_workspace;
 
-#line 274 "paper/qp.nw"
+#line 280 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -49,7 +52,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 210 "paper/qp.nw"
+#line 213 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -74,7 +77,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 437 "paper/qp.nw"
+#line 473 "paper/qp.nw"
 /* a slipping unknown with bound s, force r, value x: the squared excess
    |r| - s > 0 to tn (more than friction holds), the Fenchel-Young gap
    s|x| + r x to comp (slip not against r); the whole state's residual and
@@ -104,7 +107,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 540 "paper/qp.nw"
+#line 592 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -117,7 +120,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 560 "paper/qp.nw"
+#line 612 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -133,24 +136,22 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 290 "paper/qp.nw"
-/* the relative KKT residual of x; g = Ax - b if known, else NULL;
-   T (nc, may be NULL) receives the contact forces */
-double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
-                   double *T);
+#line 296 "paper/qp.nw"
+/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
+   if known, else NULL; T (nc, may be NULL) receives the contact forces */
+double qp_kkt_eval(const Qp *qp, double normA, const double *x,
+                   const double *g, double *T);
 /* g = A x - b, then kkt and T at x */
 void qp_refresh(Qp_workspace *w);
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st);
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w);
-/* "" or why nothing may hold the body, for a message */
-const char *qp_hint(const Qp_workspace *w);
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 315 "paper/qp.nw"
+#line 319 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -173,5 +174,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 199 "paper/qp.nw"
+#line 202 "paper/qp.nw"
 #endif

@@ -1,17 +1,23 @@
 /* test_friction_cgssor: MPRGP on the dual (solver.state = cgssor with
    friction, paper/mprgp.nw) against the active set method on Example 5.1:
    - given friction at g = 1e7, 2.5e8, 1e9 Pa on N = 16 and 64, and Coulomb
-     friction F = 0.2: E to 1e-10 relative, the normal and tangential
-     forces to 1e-8 of max|T|, the same nodes in contact and sticking, and
-     the KKT residual recomputed by qp_kkt <= tol;
+     friction F = 0.2, both solved to tol = 1e-13: E to 1e-10 relative,
+     the normal and tangential forces to 1e-8 of max|T|, the same nodes in
+     contact and sticking, and the KKT residual recomputed by qp_kkt <= tol
+     (the residual is relative to ||A|| ||y||, a backward error: at the
+     default 1e-10 the forces of the two differ by up to 2e-7 of max|T|,
+     at 1e-12 by 2e-8);
    - g = 0 is the frictionless state;
-   - Young's modulus, the load and g scaled by 1e7 change no step count on
-     N = 16, and by at most 2 % on N = 64 (rounding);
+   - Young's modulus, the load and g scaled by 2^24 change no step count
+     (every rounding scales exactly, the square roots of the Cholesky
+     factors by 2^12), on N = 16 and 64; scaled by 1e7, the same energy;
    - a warm start from the solution takes no step;
    - a body that its contact alone holds (both sides on rollers) makes S
      singular: refused with one line naming pdas, which solves it;
-   - max_iter = 1 fails with the state it reached, and a tolerance below
-     the rounding of the whole state with a message that says so;
+   - max_iter = 1 fails with the state it reached; a tolerance below what
+     rounding leaves of the dual's residual is refused up front, in one
+     line that names the smallest one accepted, and at that one both
+     methods converge;
    - psor, which cannot take friction, is refused by qp_alloc. */
 #include <math.h>
 #include <stdlib.h>
@@ -20,16 +26,17 @@
 #include "case.h"
 
 
-/* the case solved by pdas (k = 0) and by cgssor (k = 1): the overrides
-   ov and the method's */
+/* the case solved by pdas (k = 0) and by cgssor (k = 1), to tol 1e-13:
+   the overrides ov and the method's */
 static void open_pair(Case c[2], int n, char **ov)
 {
   char *all[8];
   static char *method[] = { "solver.state=pdas", "solver.state=cgssor" };
   memcpy(all, ov, n * sizeof *ov);
+  all[n] = "solver.tol=1e-13";
   for (int k = 0; k < 2; k++) {
-    all[n] = method[k];
-    open_case(&c[k], n + 1, all);
+    all[n + 1] = method[k];
+    open_case(&c[k], n + 2, all);
   }
 }
 
@@ -102,11 +109,11 @@ static void test_coulomb(const char *refine)
 /* g = 0: every tangential force fixed at 0, the frictionless state */
 static void test_g_zero(void)
 {
-  char *ov0[] = { "mesh.refine=4" },
+  char *ov0[] = { "mesh.refine=4", "solver.tol=1e-13" },
        *ov1[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=0",
-                  "solver.state=cgssor" };
+                  "solver.state=cgssor", "solver.tol=1e-13" };
   Case f, c;
-  open_case(&f, 1, ov0), open_case(&c, 4, ov1);
+  open_case(&f, 2, ov0), open_case(&c, 5, ov1);
   if (check(!f.rc && !c.rc, "g = 0: solved: %s%s", f.st.msg, c.st.msg)) {
     int nc = f.md->dofs->nc;
     double E = fabs(c.md->energy - f.md->energy) / fabs(f.md->energy);
@@ -119,31 +126,41 @@ static void test_g_zero(void)
   close_case(&f), close_case(&c);
 }
 
-/* E, the load and g scaled by 1e7: the same steps on N = 16; on N = 64,
-   where the scaled matrix's rounding moves the step at which the residual
-   crosses tol, within 2 % */
+/* E, the load and g times f: overrides into ov (4 strings of 48) */
+static void scaled(char ov[4][48], const char *g, const char *refine, double f)
+{
+  snprintf(ov[0], 48, "mesh.refine=%s", refine);
+  snprintf(ov[1], 48, "contact.g=%.17g", atof(g) * f);
+  snprintf(ov[2], 48, "material.E=%.17g", 2.15e11 * f);
+  snprintf(ov[3], 48, "top.P2=%.17g", -5.75e8 * f);
+}
+
+/* E, the load and g times 2^24: every rounding scales exactly (an even
+   power, so that the Cholesky factors scale by 2^12), so the same steps
+   and E exactly 2^24 times; times 1e7, which is not exact in
+   binary, the same energy (the step at which the residual crosses the
+   tolerance may move by one, so the counts are not compared) */
 static void test_scale(const char *g, const char *refine)
 {
-  char pr[32], pg1[48], pg2[48];
-  char *ov1[] = { pr, "contact.model=tresca", pg1, "solver.state=cgssor" };
-  char *ov2[] = { pr, "contact.model=tresca", pg2, "solver.state=cgssor",
-                  "material.E=2.15e18", "top.P2=-5.75e15" };
-  int exact = !strcmp(refine, "1");
-  snprintf(pr, sizeof pr, "mesh.refine=%s", refine);
-  snprintf(pg1, sizeof pg1, "contact.g=%s", g);
-  snprintf(pg2, sizeof pg2, "contact.g=%.17g", atof(g) * 1e7);
-  Case a, b;
-  open_case(&a, 4, ov1), open_case(&b, 6, ov2);
-  if (check(!a.rc && !b.rc, "g = %s, refine %s, scaled by 1e7: both solved: "
-            "%s%s", g, refine, a.st.msg, b.st.msg)) {
+  char s1[4][48], s2[4][48], s3[4][48];
+  char *ov1[] = { s1[0], s1[1], s1[2], s1[3], "contact.model=tresca", "solver.state=cgssor" };
+  char *ov2[] = { s2[0], s2[1], s2[2], s2[3], "contact.model=tresca", "solver.state=cgssor" };
+  char *ov3[] = { s3[0], s3[1], s3[2], s3[3], "contact.model=tresca", "solver.state=cgssor" };
+  const double two24 = 16777216;
+  scaled(s1, g, refine, 1), scaled(s2, g, refine, two24), scaled(s3, g, refine, 1e7);
+  Case a, b, c;
+  open_case(&a, 6, ov1), open_case(&b, 6, ov2), open_case(&c, 6, ov3);
+  if (check(!a.rc && !b.rc && !c.rc, "g = %s, refine %s, scaled by 2^24 and "
+            "1e7: solved: %s%s%s", g, refine, a.st.msg, b.st.msg, c.st.msg)) {
     int na = a.md->report.iterations, nb = b.md->report.iterations;
-    double dE = fabs(b.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
-    check((exact ? na == nb : abs(na - nb) <= 0.02 * na) && dE <= 1e-10,
-          "g = %s, refine %s, scaled by 1e7: %d and %d cgssor steps (%s), "
-          "E / 1e7 to %.1e", g, refine, na, nb, exact ? "the same" : "within 2 %",
-          dE);
+    check(na == nb && b.md->energy == two24 * a.md->energy,
+          "g = %s, refine %s, scaled by 2^24: %d and %d cgssor steps, E "
+          "exactly 2^24 times (%.17g)", g, refine, na, nb, b.md->energy / two24);
+    double dE = fabs(c.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
+    check(dE <= 1e-10, "g = %s, refine %s, scaled by 1e7: E / 1e7 to %.1e "
+          "(%d and %d steps)", g, refine, dE, na, c.md->report.iterations);
   }
-  close_case(&a), close_case(&b);
+  close_case(&a), close_case(&b), close_case(&c);
 }
 
 /* solved again at the same design, from its own state: no step */
@@ -204,16 +221,37 @@ static void test_max_iter(void)
   close_case(&c);
 }
 
-/* tol = 1e-15, below the rounding of the back substitution: the dual
-   meets it, the whole state cannot, and the solve says so */
+/* tol = 1e-15, below what rounding leaves of the dual's residual (its
+   T = S y - f sums 128 terms: gamma_129 = 1.4e-14): refused before any
+   step, in one line that gives the smallest tolerance accepted; at that
+   one, qp_tol_floor's, cgssor and pdas both converge */
 static void test_tol_below_rounding(void)
 {
   char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
-                 "solver.state=cgssor", "solver.tol=1e-15", "solver.max_iter=2000" };
+                 "solver.state=cgssor", "solver.tol=1e-15" };
   Case c;
-  open_case(&c, 6, ov);
-  check(c.rc == STATUS_NUMERIC && strstr(c.st.msg, "too ill-conditioned"),
-        "tol = 1e-15: %s", c.st.msg);
+  open_case(&c, 5, ov);
+  check(c.rc == STATUS_INPUT && !c.md && strstr(c.st.msg, "tol = 1e-15")
+        && strstr(c.st.msg, "tol >= ") && !strchr(c.st.msg, '\n'),
+        "tol = 1e-15: refused up front: %s", c.st.msg);
+  close_case(&c);
+  ov[4] = "solver.tol=1e-10";
+  if (!check(open_case(&c, 5, ov) == 0, "the floor: solved at 1e-10: %s",
+             c.st.msg)) { close_case(&c); return; }
+  static const Qp_method m[2] = { QP_CGSSOR, QP_PDAS };
+  for (int k = 0; k < 2; k++) {
+    char pt[48], pm[32], *ov2[] = { ov[0], ov[1], ov[2], pm, pt };
+    double floor_tol = qp_tol_floor(&c.md->qp, m[k]);
+    Case f;
+    snprintf(pt, sizeof pt, "solver.tol=%.17g", floor_tol);
+    snprintf(pm, sizeof pm, "solver.state=%s", qp_method_name(m[k]));
+    open_case(&f, 5, ov2);
+    check(f.rc == 0 && f.md->report.kkt <= floor_tol, "tol = %.3g, the "
+          "floor of %s: converged in %d steps, kkt %.2g%s", floor_tol,
+          qp_method_name(m[k]), f.md ? f.md->report.iterations : -1,
+          f.md ? f.md->report.kkt : NAN, f.st.msg);
+    close_case(&f);
+  }
   close_case(&c);
 }
 
@@ -245,7 +283,7 @@ int main(void)
   test_coulomb("4");
   test_g_zero();
   for (int k = 0; k < 3; k++) test_scale(g[k], "1");
-  test_scale("2.5e8", "4");
+  for (int k = 0; k < 3; k++) test_scale(g[k], "4");
   test_warm();
   test_singular();
   test_max_iter();

@@ -6,6 +6,7 @@
    elastic body of Example 5.1 (not an M-matrix).  The reference
    for the tiny ones enumerates every active set and solves each linear
    system with GSL's Cholesky factorisation: independent of the solvers. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -403,7 +404,7 @@ static int all_finite(int n, const double *x)
   return 1;
 }
 
-/* max_iter = 1 on a problem that needs more, and tol beyond rounding */
+/* max_iter = 1 on a problem that needs more */
 static void check_not_converged(Problem *P)
 {
   double *x = malloc(P->n * sizeof *x);
@@ -412,14 +413,38 @@ static void check_not_converged(Problem *P)
     o.max_iter = 1;
     Run r = run(P, o, NULL, x, NULL);
     check(r.code == STATUS_NUMERIC && has(r.st.msg, "not converged")
-          && has(r.st.msg, names[m]) && r.rep.iterations == 1,
+          && has(r.st.msg, names[m]) && has(r.st.msg, "bounds active")
+          && r.rep.iterations == 1,
           "%s %s, max_iter 1: STATUS_NUMERIC \"%s\"", P->name, names[m], r.st.msg);
   }
-  Qp_options o = options(QP_PDAS);
-  o.tol = 1e-300;
-  Run r = run(P, o, NULL, x, NULL);
-  check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated"),
-        "%s pdas, tol 1e-300: STATUS_NUMERIC \"%s\"", P->name, r.st.msg);
+  free(x);
+}
+
+/* a tolerance below what rounding leaves of the residual is refused by
+   qp_alloc, in one line, for every method; at the smallest one accepted
+   (qp_tol_floor, gamma_{m+1} of the longest sum m of the residual),
+   every method converges */
+static void check_floor(const Problem *P)
+{
+  double *x = malloc(P->n * sizeof *x);
+  for (int m = 0; m < 3; m++) {
+    Qp_options o = options(methods[m]);
+    double floor_tol = qp_tol_floor(&P->qp, methods[m]);
+    Status st = { STATUS_OK, "" };
+    o.tol = floor_tol * (1 - DBL_EPSILON);
+    Qp_workspace *w = qp_alloc(&P->qp, &o, &cm, &st);
+    check(!w && st.code == STATUS_INPUT && has(st.msg, "tol >= ")
+          && !has(st.msg, "\n") && floor_tol > 0 && floor_tol < 1e-14,
+          "%s %s, tol just below the floor %.3g: refused \"%s\"", P->name,
+          names[m], floor_tol, st.msg);
+    qp_free(w);
+    o.tol = floor_tol;
+    Run r = run(P, o, NULL, x, NULL);
+    check(r.code == STATUS_OK && r.rep.kkt <= floor_tol
+          && qp_kkt(&P->qp, x, NULL) <= floor_tol,
+          "%s %s, tol = the floor %.3g: converged in %d iterations, kkt %.2g%s",
+          P->name, names[m], floor_tol, r.rep.iterations, r.rep.kkt, r.st.msg);
+  }
   free(x);
 }
 
@@ -435,7 +460,13 @@ static void check_not_held(void)
       Qp_options o = options(methods[m]);
       o.max_iter = 2000;
       Run r = run(P[k], o, NULL, x, NULL);
-      check(r.code == STATUS_NUMERIC && has(r.st.msg, "lifts it off")
+      /* pdas and cgssor find it (a singular Newton matrix, a direction
+         that nothing resists); psor runs out of sweeps and says what it
+         measured: none of the bounds is active */
+      int said = methods[m] == QP_PSOR
+               ? has(r.st.msg, "not converged") && has(r.st.msg, ", 0 of ")
+               : has(r.st.msg, "lifts it off");
+      check(r.code == STATUS_NUMERIC && said
             && !has(r.st.msg, "nan") && all_finite(P[k]->n, x),
             "%s %s: STATUS_NUMERIC \"%s\"", P[k]->name, names[m], r.st.msg);
     }
@@ -533,6 +564,7 @@ int main(void)
   check_warm_pdas(P[5]);
   check_warm_floating(P[2]);
   check_not_converged(P[1]);
+  for (int k = 0; k < 6; k++) check_floor(P[k]);
   check_not_held();
   check_input_errors(P[0]);
   check_bad_matrices();
