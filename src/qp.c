@@ -1,55 +1,57 @@
-#line 402 "paper/qp.nw"
-#include <float.h>
+#line 396 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 508 "paper/qp.nw"
+#line 550 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
                    const double *g, double *T)
 {
   const double *b = qp->b;
-  double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, xx = 0, ll = 0;
+  const int *Ap = qp->A->p;
+  double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
+  int m = 0;                               /* the longest column of A */
   for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
-    double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j];
+    double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
+    if (Ap[j + 1] - Ap[j] > m) m = Ap[j + 1] - Ap[j];
     bb += b[j] * b[j];
+    axax += axj * axj;
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 533 "paper/qp.nw"
+#line 579 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 521 "paper/qp.nw"
+#line 567 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 546 "paper/qp.nw"
+#line 592 "paper/qp.nw"
 qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
 if (T) T[qp->nc + k] = r;
-#line 524 "paper/qp.nw"
+#line 570 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 553 "paper/qp.nw"
-double sf = normA * sqrt(xx) + sqrt(bb), su = sqrt(xx) + sqrt(ll);
-double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
-                fmax(qp_ratio(sqrt(inf), su),
-                     qp_ratio(qp_ratio(comp, sf), su)));
-return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 529 "paper/qp.nw"
+#line 600 "paper/qp.nw"
+double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
+double gm = qp_gamma(m + 2);             /* m + 1 terms, and x rounded */
+double rho = gm * (normA * sqrt(xx) + sqrt(bb));
+return qp_kkt_combine(sqrt(rf), sqrt(tn), sqrt(inf), comp, sf, su, rho, gm);
+#line 575 "paper/qp.nw"
 }
 
-#line 569 "paper/qp.nw"
+#line 615 "paper/qp.nw"
 /* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
 static double qp_norm_bound(const cholmod_sparse *A)
 {
@@ -64,13 +66,13 @@ static double qp_norm_bound(const cholmod_sparse *A)
   return m;
 }
 
-#line 561 "paper/qp.nw"
+#line 607 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, qp_norm_bound(qp->A), x, NULL, T);
 }
 
-#line 630 "paper/qp.nw"
+#line 676 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -85,33 +87,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
 }
 
-#line 756 "paper/qp.nw"
+#line 743 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 721 "paper/qp.nw"
-/* the most terms in one sum of the residual that method m stops on */
-static int longest_sum(const Qp *qp, Qp_method m)
-{
-  const int *Ap = qp->A->p;
-  int longest = 0;
-  for (int j = 0; j < (int) qp->A->ncol; j++)
-    if (Ap[j + 1] - Ap[j] > longest) longest = Ap[j + 1] - Ap[j];
-  longest += 1;                                  /* and b_j */
-  if (m == QP_CGSSOR && qp->nt > 0 && qp->nc + qp->nt + 1 > longest)
-    longest = qp->nc + qp->nt + 1;               /* T = S y - f, dense */
-  return longest;
-}
-
-double qp_tol_floor(const Qp *qp, Qp_method method)
-{
-  double mu = (longest_sum(qp, method) + 1) * (DBL_EPSILON / 2);
-  return mu / (1 - mu);
-}
-
-#line 765 "paper/qp.nw"
+#line 752 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -127,7 +109,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 670 "paper/qp.nw"
+#line 716 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -150,7 +132,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 860 "paper/qp.nw"
+#line 853 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -162,23 +144,11 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 692 "paper/qp.nw"
-  if (check_options(opt, st)) return st->code;
-  
-#line 745 "paper/qp.nw"
-double floor_tol = qp_tol_floor(qp, opt->method);
-if (opt->tol < floor_tol) {
-  double unit = pow(10, floor(log10(floor_tol)) - 2);
-  return status_set(st, STATUS_INPUT, "qp_alloc: tol = %.3g is below what "
-    "rounding leaves of the KKT residual, whose sums have up to %d terms: "
-    "no state can be shown to meet it (tol >= %.3g)", opt->tol,
-    longest_sum(qp, opt->method), ceil(floor_tol / unit) * unit);
-}
-#line 694 "paper/qp.nw"
-  return STATUS_OK;
+#line 738 "paper/qp.nw"
+  return check_options(opt, st);
 }
 
-#line 786 "paper/qp.nw"
+#line 773 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -192,7 +162,13 @@ static int alloc_common(Qp_workspace *w, Status *st)
       || !w->pos || !w->flo || !w->fhi)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)",
                       w->n);
-  for (int i = 0; i < w->n; i++) w->bnd[i] = -1;
+  int m = 0;
+  for (int i = 0; i < w->n; i++) {
+    const int *Ap = w->qp->A->p;
+    w->bnd[i] = -1;
+    if (Ap[i + 1] - Ap[i] > m) m = Ap[i + 1] - Ap[i];
+  }
+  w->gamma = qp_gamma(m + 2);    /* as qp_kkt_eval finds it */
   for (int k = 0; k < w->nk; k++) {
     int i = w->ik[k] = k < w->nc ? w->qp->ic[k] : w->qp->it[k - w->nc];
     if (w->bnd[i] >= 0)
@@ -203,7 +179,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 817 "paper/qp.nw"
+#line 810 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -223,7 +199,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 650 "paper/qp.nw"
+#line 696 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -241,7 +217,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 839 "paper/qp.nw"
+#line 832 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -253,7 +229,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 882 "paper/qp.nw"
+#line 875 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -278,7 +254,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 912 "paper/qp.nw"
+#line 905 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -302,7 +278,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 938 "paper/qp.nw"
+#line 931 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -311,7 +287,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 950 "paper/qp.nw"
+#line 943 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -326,14 +302,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 994 "paper/qp.nw"
+#line 982 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 973 "paper/qp.nw"
+#line 964 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -346,14 +322,11 @@ int qp_iterate(Qp_workspace *w, Status *st)
   return code;
 }
 
-int qp_test(const Qp_workspace *w)
-{
-  return w->kkt <= w->opt.tol && !w->pdas.pending;
-}
+int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 1055 "paper/qp.nw"
+#line 1044 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -362,7 +335,7 @@ int qp_count_active(const Qp_workspace *w)
   return m;
 }
 
-#line 1067 "paper/qp.nw"
+#line 1056 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -373,7 +346,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 1045 "paper/qp.nw"
+#line 1034 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -382,13 +355,13 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
 
-#line 1016 "paper/qp.nw"
+#line 1003 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
   int code = qp_set(w, x0, st);
   if (code) return code;
-  while (!code && !qp_test(w))
+  while (!code && (!qp_test(w) || (w->iter == 0 && w->opt.method == QP_PDAS)))
     code = w->iter >= w->opt.max_iter ? not_converged(w, st)
                                       : qp_iterate(w, st);
   memcpy(x, w->x, (size_t) w->n * sizeof *x);
@@ -402,7 +375,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 1099 "paper/qp.nw"
+#line 1088 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;

@@ -31,12 +31,9 @@ typedef struct {
 
 /* the defaults: tol 1e-10, max_iter 100 (pdas) or 100000, omega 1.5 */
 Qp_options qp_options_default(Qp_method method);
-/* the smallest tol that qp_alloc accepts for qp (checked as by qp_alloc)
-   and the method: what rounding leaves of the residual the method stops on */
-double qp_tol_floor(const Qp *qp, Qp_method method);
 /* "pdas", "psor", "cgssor", or "?" */
 const char *qp_method_name(Qp_method method);
-#line 108 "paper/qp.nw"
+#line 105 "paper/qp.nw"
 typedef struct {
   int iterations;          /* sweeps, CG steps or Newton steps used */
   double kkt;              /* qp_kkt at the returned x */
@@ -45,16 +42,16 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-#line 123 "paper/qp.nw"
+#line 120 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
 int qp_set(Qp_workspace *w, const double *x0, Status *st); /* x0 NULL: cold */
 int qp_iterate(Qp_workspace *w, Status *st);
-int qp_test(const Qp_workspace *w);   /* 1 when x is formed, kkt <= tol */
+int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
 void qp_free(Qp_workspace *w);
-#line 134 "paper/qp.nw"
+#line 131 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
    STATUS_NUMERIC when not converged. */
