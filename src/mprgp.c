@@ -401,9 +401,9 @@ static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
   if ((code = pdas_expand(w, st)) || !met || w->kkt <= w->opt.tol) return code;
-  return status_set(st, STATUS_NUMERIC, "cgssor: the dual met the tolerance "
-    "at step %d but the whole state has kkt = %.3g > tol = %.3g: S is too "
-    "ill-conditioned for this tolerance", w->iter + 1, w->kkt, w->opt.tol);
+  return status_set(st, STATUS_NUMERIC, "cgssor: the dual's pair met the "
+    "tolerance at step %d, and the whole state formed from it, refined once, "
+    "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
 
 #line 772 "paper/mprgp.nw"
@@ -428,7 +428,7 @@ int mprgp_iterate(Qp_workspace *w, Status *st)
   int code = proportional(w) ? cg_or_expansion_step(w, st)
                              : proportioning_step(w, st);
   if (code) return code;
-  w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
+  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
   if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }

@@ -21,7 +21,7 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
 #line 333 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 734 "paper/pdas.nw"
+#line 747 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -118,7 +118,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 427 "paper/pdas.nw"
+#line 430 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -132,7 +132,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 447 "paper/pdas.nw"
+#line 450 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -143,7 +143,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 467 "paper/pdas.nw"
+#line 470 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -152,7 +152,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 457 "paper/pdas.nw"
+#line 460 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -161,7 +161,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 480 "paper/pdas.nw"
+#line 483 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -178,7 +178,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 500 "paper/pdas.nw"
+#line 503 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -199,7 +199,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 403 "paper/pdas.nw"
+#line 406 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -222,7 +222,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 539 "paper/pdas.nw"
+#line 542 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -230,7 +230,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 562 "paper/pdas.nw"
+#line 565 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -242,7 +242,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 546 "paper/pdas.nw"
+#line 549 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -253,7 +253,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 580 "paper/pdas.nw"
+#line 595 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -265,13 +265,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 594 "paper/pdas.nw"
+#line 609 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 608 "paper/pdas.nw"
+#line 621 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -285,15 +285,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 599 "paper/pdas.nw"
+#line 614 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
-  double k = fmax(qp_ratio(sqrt(tn), sf),
-                  fmax(qp_ratio(sqrt(inf), su),
-                       qp_ratio(qp_ratio(comp, sf), su)));
-  return isfinite(tn + inf + comp + sf + su) ? k : NAN;
+  double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
+  return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 630 "paper/pdas.nw"
+#line 643 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -335,7 +333,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 691 "paper/pdas.nw"
+#line 704 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -354,7 +352,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 716 "paper/pdas.nw"
+#line 729 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -391,19 +389,19 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 370 "paper/pdas.nw"
+#line 373 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
 if (w->kkt > w->opt.tol && (same || solved) && (code = refine(w, st))) return code;
 if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
-  "Newton step %d but kkt = %.3g > tol = %.3g: A is too ill-conditioned "
-  "for this tolerance%s", w->iter + 1, w->kkt, w->opt.tol, qp_hint(w));
+  "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
+  "%.3g", w->iter + 1, w->kkt, w->opt.tol);
 #line 353 "paper/pdas.nw"
 }
 
-#line 754 "paper/pdas.nw"
+#line 767 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -420,7 +418,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 773 "paper/pdas.nw"
+#line 786 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -428,7 +426,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 792 "paper/pdas.nw"
+#line 805 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -440,7 +438,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 810 "paper/pdas.nw"
+#line 823 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -463,11 +461,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 803 "paper/pdas.nw"
+#line 816 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 843 "paper/pdas.nw"
+#line 856 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

@@ -1,61 +1,78 @@
-#line 394 "paper/qp.nw"
+#line 397 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 
-#line 472 "paper/qp.nw"
-/* the relative KKT residual of x; g = Ax - b if known, else NULL;
-   T (nc, may be NULL) receives the contact forces */
-double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
-                   double *T)
+#line 584 "paper/qp.nw"
+/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
+   if known, else NULL; T (nc, may be NULL) receives the contact forces */
+double qp_kkt_eval(const Qp *qp, double normA, const double *x,
+                   const double *g, double *T)
 {
   const double *b = qp->b;
+  const int *Ap = qp->A->p;
   double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
+  int m = 0;                               /* the longest column of A */
   for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
     double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
+    if (Ap[j + 1] - Ap[j] > m) m = Ap[j + 1] - Ap[j];
     bb += b[j] * b[j];
     axax += axj * axj;
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 498 "paper/qp.nw"
+#line 613 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 486 "paper/qp.nw"
+#line 601 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 511 "paper/qp.nw"
+#line 626 "paper/qp.nw"
 qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
 if (T) T[qp->nc + k] = r;
-#line 489 "paper/qp.nw"
+#line 604 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 518 "paper/qp.nw"
+#line 634 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
-double k = fmax(fmax(qp_ratio(sqrt(rf), sf), qp_ratio(sqrt(tn), sf)),
-                fmax(qp_ratio(sqrt(inf), su),
-                     qp_ratio(qp_ratio(comp, sf), su)));
-return isfinite(rf + tn + inf + comp + sf + su) ? k : NAN;
-#line 494 "paper/qp.nw"
+double gm = qp_gamma(m + 2);             /* m + 1 terms, and x rounded */
+double rho = gm * (normA * sqrt(xx) + sqrt(bb));
+return qp_kkt_combine(sqrt(rf), sqrt(tn), sqrt(inf), comp, sf, su, rho, gm);
+#line 609 "paper/qp.nw"
 }
 
-#line 526 "paper/qp.nw"
+#line 649 "paper/qp.nw"
+/* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
+static double qp_norm_bound(const cholmod_sparse *A)
+{
+  const int *Ap = A->p;
+  const double *Ax = A->x;
+  double m = 0;
+  for (int j = 0; j < (int) A->ncol; j++) {
+    double sum = 0;
+    for (int k = Ap[j]; k < Ap[j + 1]; k++) sum += fabs(Ax[k]);
+    m = fmax(m, sum);
+  }
+  return m;
+}
+
+#line 641 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
-  return qp_kkt_eval(qp, x, NULL, T);
+  return qp_kkt_eval(qp, qp_norm_bound(qp->A), x, NULL, T);
 }
 
-#line 578 "paper/qp.nw"
+#line 710 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -67,16 +84,16 @@ void qp_refresh(Qp_workspace *w)
 {
   qp_matvec(w->qp->A, w->x, w->g);
   for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
-  w->kkt = qp_kkt_eval(w->qp, w->x, w->g, w->T);
+  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
 }
 
-#line 645 "paper/qp.nw"
+#line 777 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 654 "paper/qp.nw"
+#line 786 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -92,7 +109,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 618 "paper/qp.nw"
+#line 750 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -115,7 +132,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 749 "paper/qp.nw"
+#line 887 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -127,11 +144,11 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 640 "paper/qp.nw"
+#line 772 "paper/qp.nw"
   return check_options(opt, st);
 }
 
-#line 675 "paper/qp.nw"
+#line 807 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -145,7 +162,13 @@ static int alloc_common(Qp_workspace *w, Status *st)
       || !w->pos || !w->flo || !w->fhi)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)",
                       w->n);
-  for (int i = 0; i < w->n; i++) w->bnd[i] = -1;
+  int m = 0;
+  for (int i = 0; i < w->n; i++) {
+    const int *Ap = w->qp->A->p;
+    w->bnd[i] = -1;
+    if (Ap[i + 1] - Ap[i] > m) m = Ap[i + 1] - Ap[i];
+  }
+  w->gamma = qp_gamma(m + 2);    /* as qp_kkt_eval finds it */
   for (int k = 0; k < w->nk; k++) {
     int i = w->ik[k] = k < w->nc ? w->qp->ic[k] : w->qp->it[k - w->nc];
     if (w->bnd[i] >= 0)
@@ -156,7 +179,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 706 "paper/qp.nw"
+#line 844 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -176,7 +199,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 598 "paper/qp.nw"
+#line 730 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -194,7 +217,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 728 "paper/qp.nw"
+#line 866 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -206,7 +229,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 771 "paper/qp.nw"
+#line 909 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -231,7 +254,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 801 "paper/qp.nw"
+#line 939 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -255,7 +278,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 827 "paper/qp.nw"
+#line 965 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -264,7 +287,7 @@ int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 839 "paper/qp.nw"
+#line 977 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -279,14 +302,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 878 "paper/qp.nw"
+#line 1016 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 860 "paper/qp.nw"
+#line 998 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -303,7 +326,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 932 "paper/qp.nw"
+#line 1078 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -312,14 +335,7 @@ int qp_count_active(const Qp_workspace *w)
   return m;
 }
 
-/* "" or why nothing may hold the body, for a message */
-const char *qp_hint(const Qp_workspace *w)
-{
-  return qp_count_active(w) ? "" : "; no bounded unknown touches its bound: "
-    "if only the contact holds the body, the load lifts it off";
-}
-
-#line 951 "paper/qp.nw"
+#line 1090 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -330,15 +346,16 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     active, w->nc, w->iter + 1);
 }
 
-#line 923 "paper/qp.nw"
+#line 1068 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
-    "iteration%s (kkt = %.3g > tol = %.3g)%s", qp_method_name(w->opt.method),
-    w->iter, w->iter == 1 ? "" : "s", w->kkt, w->opt.tol, qp_hint(w));
+    "iteration%s (kkt = %.3g > tol = %.3g), %d of %d bounds active",
+    qp_method_name(w->opt.method), w->iter, w->iter == 1 ? "" : "s",
+    w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
 
-#line 899 "paper/qp.nw"
+#line 1037 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -358,7 +375,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 983 "paper/qp.nw"
+#line 1122 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;

@@ -58,7 +58,8 @@ void qp_free(Qp_workspace *w);
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st);
 
-/* The relative KKT residual of x (scale-free); T (nc + nt, may be NULL)
+/* The relative KKT residual of x (scale-free; what the rounding of its
+   terms may explain is not counted); T (nc + nt, may be NULL)
    receives the contact forces, normal then tangential. */
 double qp_kkt(const Qp *qp, const double *x, double *T);
 

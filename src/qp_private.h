@@ -1,4 +1,4 @@
-#line 176 "paper/qp.nw"
+#line 177 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
@@ -7,7 +7,7 @@
 #include <math.h>
 #include "qp.h"
 
-#line 240 "paper/qp.nw"
+#line 243 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -37,7 +37,7 @@ typedef struct {
   int stepped;           /* y, T come from a Newton step (not a guess) */
 } Pdas_workspace;
 
-#line 274 "paper/qp.nw"
+#line 277 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -49,7 +49,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 210 "paper/qp.nw"
+#line 211 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -65,6 +65,8 @@ struct Qp_workspace {
   double *lo;            /* n: the lower bound of each unknown, -INFINITY if none */
   double *d;             /* n: the diagonal A_ii > 0 */
   double normA;          /* max row sum of |A|: an upper bound of ||A||_2 */
+  double gamma;          /* gamma_{m+2}, m the longest column of A: the
+                            relative rounding of a residual (qp_kkt_eval) */
   double *x;             /* n: the iterate */
   double *g;             /* n: the gradient A x - b at x */
   double *T;             /* nk: the contact forces g[ik[k]] (4.6) */
@@ -74,7 +76,20 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 437 "paper/qp.nw"
+#line 520 "paper/qp.nw"
+/* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
+static inline double qp_gamma(int m)
+{
+  double mu = m * (DBL_EPSILON / 2);
+  return mu / (1 - mu);
+}
+
+/* v less the allowance a for rounding, and 0 if no more */
+static inline double qp_excess(double v, double a)
+{
+  return v > a ? v - a : 0;
+}
+
 /* a slipping unknown with bound s, force r, value x: the squared excess
    |r| - s > 0 to tn (more than friction holds), the Fenchel-Young gap
    s|x| + r x to comp (slip not against r); the whole state's residual and
@@ -93,6 +108,22 @@ static inline double qp_ratio(double num, double den)
   return num == 0 ? 0 : num / den;
 }
 
+/* the relative KKT residual from the norms of its four terms (rf, tn,
+   inf; comp a sum), each less what rounding may explain: rho_f of a force,
+   g of a displacement, relative; over the scales sf and su.  A NaN
+   anywhere gives NaN, which fmax would drop. */
+static inline double qp_kkt_combine(double rf, double tn, double inf,
+                                    double comp, double sf, double su,
+                                    double rho_f, double g)
+{
+  double k = fmax(fmax(qp_ratio(qp_excess(rf, rho_f), sf),
+                       qp_ratio(qp_excess(tn, rho_f), sf)),
+                  fmax(qp_ratio(qp_excess(inf, g * su), su),
+                       qp_ratio(qp_ratio(qp_excess(comp, (rho_f + g * sf) * su),
+                                         sf), su)));
+  return isfinite(rf + tn + inf + comp + sf + su + rho_f) ? k : NAN;
+}
+
 /* (Ax)_j: column j of A, which is also its row j */
 static inline double qp_row_dot(const cholmod_sparse *A, int j,
                                 const double *x)
@@ -104,7 +135,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 540 "paper/qp.nw"
+#line 672 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -117,7 +148,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 560 "paper/qp.nw"
+#line 692 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -133,24 +164,22 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 290 "paper/qp.nw"
-/* the relative KKT residual of x; g = Ax - b if known, else NULL;
-   T (nc, may be NULL) receives the contact forces */
-double qp_kkt_eval(const Qp *qp, const double *x, const double *g,
-                   double *T);
+#line 293 "paper/qp.nw"
+/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
+   if known, else NULL; T (nc, may be NULL) receives the contact forces */
+double qp_kkt_eval(const Qp *qp, double normA, const double *x,
+                   const double *g, double *T);
 /* g = A x - b, then kkt and T at x */
 void qp_refresh(Qp_workspace *w);
 /* the current values of A, b and lo, read and checked */
 int qp_read_values(Qp_workspace *w, Status *st);
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w);
-/* "" or why nothing may hold the body, for a message */
-const char *qp_hint(const Qp_workspace *w);
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 315 "paper/qp.nw"
+#line 316 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -173,5 +202,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 199 "paper/qp.nw"
+#line 200 "paper/qp.nw"
 #endif

@@ -3,8 +3,9 @@
    - no friction (g = 0, F = 0) is the frictionless state, to 1e-12;
    - on meshes of N <= 4 intervals, every combination of contact/free and
      stick/slip-left/slip-right per node is solved as a linear system with
-     GSL; the one that satisfies every condition is the state (energy and
-     forces to 1e-10);
+     GSL, unless its system is singular (reciprocal condition number from
+     the singular values below RCOND_MIN); the one that satisfies every
+     condition is the state (energy and forces to 1e-10);
    - E is nondecreasing in g (J grows with g pointwise), and for a large g
      every node in contact sticks;
    - the KKT residual with stick and slip, recomputed by qp_kkt;
@@ -57,6 +58,22 @@ static void test_no_friction(const char *refine)
 
 /* ---- enumeration of every state on a tiny mesh ------------------------ */
 
+/* A combination whose system has a reciprocal condition number below
+   RCOND_MIN is refused: its solution cannot be trusted to the 1e-9 of the
+   largest force and displacement that the sign tests allow.  LU with
+   partial pivoting leaves a backward error of about n u (n <= 24
+   unknowns here, u = 1.1e-16), and the forward error is at most the
+   condition number times that: 1e5 keeps it below 2.7e-10.  With the left
+   side on rollers, a combination that holds no normal unknown leaves the
+   body free to move vertically: its matrix is singular, and rounding
+   makes its zero pivot exactly zero (one BLAS kernel) or a tiny number
+   (another), whose solution, with displacements of 1e13, passed every
+   sign test.  Measured, under the nine OpenBLAS kernels this x86-64 runs: such combinations
+   have rcond 1.1e-16 or less (an SVD, which does not depend on where the
+   LU meets its zero), every other combination 4.6e-4 or more, and the
+   valid ones 7.6e-4 or more. */
+#define RCOND_MIN 1e-5
+
 typedef struct {
   int n, nc, nt;
   gsl_matrix *A;     /* dense A */
@@ -65,15 +82,36 @@ typedef struct {
   double *x, *T;     /* the solution found, its forces (nc + nt) */
   int found;         /* valid combinations */
   double J;          /* its energy with friction */
+  int refused;       /* combinations refused as ill-conditioned */
+  double rc_kept;    /* the smallest rcond of a combination not refused */
+  double rc_valid;   /* the smallest of a combination that was valid */
+  double rc_refused; /* the largest of a combination that was refused */
 } Enum;
+
+/* the reciprocal condition number sigma_min / sigma_max of M (n x n),
+   from its singular values (M is overwritten) */
+static double rcond(gsl_matrix *M)
+{
+  size_t n = M->size1;
+  gsl_matrix *V = gsl_matrix_alloc(n, n);
+  gsl_vector *sv = gsl_vector_alloc(n), *work = gsl_vector_alloc(n);
+  int bad = gsl_linalg_SV_decomp(M, V, sv, work);
+  double rc = bad ? 0 : gsl_vector_get(sv, n - 1) / gsl_vector_get(sv, 0);
+  gsl_matrix_free(V), gsl_vector_free(sv), gsl_vector_free(work);
+  return rc == rc ? rc : 0;                      /* NaN: singular */
+}
 
 /* solve the linear system of one combination: state[c] 0 free / 1 contact
    for the normal unknowns, then 0 stick / 1 slip with T = -s / 2 slip with
-   T = +s for the tangential ones; 1 if it satisfies every condition */
+   T = +s for the tangential ones; 1 if it is well conditioned (RCOND_MIN,
+   above) and its solution satisfies every condition.  The rows of the
+   free equations are divided by A_ii, so that every row has a unit
+   diagonal, like the rows x_i = lo_i of the held unknowns: the condition
+   number is then that of the mechanics, not of the units. */
 static int try_states(Enum *e, const int *state, double *x, double *T,
                       double tf, double tu)
 {
-  gsl_matrix *M = gsl_matrix_alloc(e->n, e->n);
+  gsl_matrix *M = gsl_matrix_alloc(e->n, e->n), *C = gsl_matrix_alloc(e->n, e->n);
   gsl_vector *r = gsl_vector_alloc(e->n), *sol = gsl_vector_alloc(e->n);
   gsl_permutation *p = gsl_permutation_alloc(e->n);
   gsl_matrix_memcpy(M, e->A);
@@ -87,7 +125,18 @@ static int try_states(Enum *e, const int *state, double *x, double *T,
     } else if (c >= e->nc)
       gsl_vector_set(r, i, e->b[i] + (s == 1 ? -1 : 1) * e->slip[c - e->nc]);
   }
-  int sign, ok = !gsl_linalg_LU_decomp(M, p, &sign) && !gsl_linalg_LU_solve(M, p, r, sol);
+  for (int i = 0; i < e->n; i++) {               /* unit diagonal */
+    gsl_vector_view row = gsl_matrix_row(M, i);
+    double d = gsl_matrix_get(M, i, i);
+    gsl_vector_scale(&row.vector, 1 / d);
+    gsl_vector_set(r, i, gsl_vector_get(r, i) / d);
+  }
+  gsl_matrix_memcpy(C, M);
+  double rc = rcond(C);
+  if (rc >= RCOND_MIN) e->rc_kept = fmin(e->rc_kept, rc);
+  int sign, ok = rc >= RCOND_MIN && !gsl_linalg_LU_decomp(M, p, &sign)
+                 && !gsl_linalg_LU_solve(M, p, r, sol);
+  if (!(rc >= RCOND_MIN)) e->refused++, e->rc_refused = fmax(e->rc_refused, rc);
   for (int i = 0; ok && i < e->n; i++) x[i] = gsl_vector_get(sol, i);
   for (int c = 0; ok && c < e->nc + e->nt; c++) {
     int i = c < e->nc ? e->ic[c] : e->it[c - e->nc], s = state[c];
@@ -100,7 +149,9 @@ static int try_states(Enum *e, const int *state, double *x, double *T,
       ok = s == 0 ? fabs(T[c]) <= sl + tf : s == 1 ? x[i] >= -tu : x[i] <= tu;
     }
   }
-  gsl_matrix_free(M), gsl_vector_free(r), gsl_vector_free(sol), gsl_permutation_free(p);
+  if (ok) e->rc_valid = fmin(e->rc_valid, rc);
+  gsl_matrix_free(M), gsl_matrix_free(C), gsl_vector_free(r), gsl_vector_free(sol);
+  gsl_permutation_free(p);
   return ok;
 }
 
@@ -137,7 +188,8 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
   Enum e = { md->dofs->n, md->dofs->nc, md->dofs->nt, gsl_matrix_calloc(md->dofs->n, md->dofs->n),
              md->b, md->lo, md->slip, md->dofs->contact, md->dofs->tangent,
              malloc(md->dofs->n * sizeof(double)),
-             malloc((md->dofs->nc + md->dofs->nt) * sizeof(double)), 0, 0 };
+             malloc((md->dofs->nc + md->dofs->nt) * sizeof(double)), 0, 0,
+             0, INFINITY, INFINITY, 0 };
   const int *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int j = 0; j < e.n; j++)
@@ -145,6 +197,11 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
   int m = e.nc + e.nt;
   double Tmax = max_abs(md->T, m), umax = max_abs(md->Q, e.n);
   enumerate(&e, 1e-9 * Tmax, 1e-9 * umax);
+  check(e.rc_refused < 1e-12 && e.rc_kept >= 10 * RCOND_MIN, "N = 4, %s, "
+        "P1 = %s, g = %s: the %d combinations refused as singular have rcond "
+        "<= %.1e, the others >= %.1e (the valid ones >= %.1e): a decade or "
+        "more from RCOND_MIN = %.0e", bcs, P1, g, e.refused, e.rc_refused,
+        e.rc_kept, e.rc_valid, RCOND_MIN);
   if (check(e.found >= 1, "N = 4, %s, P1 = %s, g = %s: one state among the %d "
             "combinations satisfies every condition (%d found)", bcs, P1, g,
             (1 << e.nc) * (int) pow(3, e.nt), e.found)) {

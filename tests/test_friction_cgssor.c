@@ -5,13 +5,15 @@
      forces to 1e-8 of max|T|, the same nodes in contact and sticking, and
      the KKT residual recomputed by qp_kkt <= tol;
    - g = 0 is the frictionless state;
-   - Young's modulus, the load and g scaled by 1e7 change no step count on
-     N = 16, and by at most 2 % on N = 64 (rounding);
+   - Young's modulus, the load and g scaled by 2^24 change no step count
+     (every rounding scales exactly, the square roots of the Cholesky
+     factors by 2^12), on N = 16 and 64; scaled by 1e7, the same energy;
    - a warm start from the solution takes no step;
    - a body that its contact alone holds (both sides on rollers) makes S
      singular: refused with one line naming pdas, which solves it;
-   - max_iter = 1 fails with the state it reached, and a tolerance below
-     the rounding of the whole state with a message that says so;
+   - max_iter = 1 fails with the state it reached; a tolerance below the
+     rounding of the whole state (1e-15, 1e-300) converges to pdas's state,
+     exact to rounding (the residual counts only what exceeds rounding);
    - psor, which cannot take friction, is refused by qp_alloc. */
 #include <math.h>
 #include <stdlib.h>
@@ -119,31 +121,41 @@ static void test_g_zero(void)
   close_case(&f), close_case(&c);
 }
 
-/* E, the load and g scaled by 1e7: the same steps on N = 16; on N = 64,
-   where the scaled matrix's rounding moves the step at which the residual
-   crosses tol, within 2 % */
+/* E, the load and g times f: overrides into ov (4 strings of 48) */
+static void scaled(char ov[4][48], const char *g, const char *refine, double f)
+{
+  snprintf(ov[0], 48, "mesh.refine=%s", refine);
+  snprintf(ov[1], 48, "contact.g=%.17g", atof(g) * f);
+  snprintf(ov[2], 48, "material.E=%.17g", 2.15e11 * f);
+  snprintf(ov[3], 48, "top.P2=%.17g", -5.75e8 * f);
+}
+
+/* E, the load and g times 2^24: every rounding scales exactly (an even
+   power, so that the Cholesky factors scale by 2^12), so the same steps
+   and E exactly 2^24 times; times 1e7, which is not exact in
+   binary, the same energy (the step at which the residual crosses the
+   tolerance may move by one, so the counts are not compared) */
 static void test_scale(const char *g, const char *refine)
 {
-  char pr[32], pg1[48], pg2[48];
-  char *ov1[] = { pr, "contact.model=tresca", pg1, "solver.state=cgssor" };
-  char *ov2[] = { pr, "contact.model=tresca", pg2, "solver.state=cgssor",
-                  "material.E=2.15e18", "top.P2=-5.75e15" };
-  int exact = !strcmp(refine, "1");
-  snprintf(pr, sizeof pr, "mesh.refine=%s", refine);
-  snprintf(pg1, sizeof pg1, "contact.g=%s", g);
-  snprintf(pg2, sizeof pg2, "contact.g=%.17g", atof(g) * 1e7);
-  Case a, b;
-  open_case(&a, 4, ov1), open_case(&b, 6, ov2);
-  if (check(!a.rc && !b.rc, "g = %s, refine %s, scaled by 1e7: both solved: "
-            "%s%s", g, refine, a.st.msg, b.st.msg)) {
+  char s1[4][48], s2[4][48], s3[4][48];
+  char *ov1[] = { s1[0], s1[1], s1[2], s1[3], "contact.model=tresca", "solver.state=cgssor" };
+  char *ov2[] = { s2[0], s2[1], s2[2], s2[3], "contact.model=tresca", "solver.state=cgssor" };
+  char *ov3[] = { s3[0], s3[1], s3[2], s3[3], "contact.model=tresca", "solver.state=cgssor" };
+  const double two24 = 16777216;
+  scaled(s1, g, refine, 1), scaled(s2, g, refine, two24), scaled(s3, g, refine, 1e7);
+  Case a, b, c;
+  open_case(&a, 6, ov1), open_case(&b, 6, ov2), open_case(&c, 6, ov3);
+  if (check(!a.rc && !b.rc && !c.rc, "g = %s, refine %s, scaled by 2^24 and "
+            "1e7: solved: %s%s%s", g, refine, a.st.msg, b.st.msg, c.st.msg)) {
     int na = a.md->report.iterations, nb = b.md->report.iterations;
-    double dE = fabs(b.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
-    check((exact ? na == nb : abs(na - nb) <= 0.02 * na) && dE <= 1e-10,
-          "g = %s, refine %s, scaled by 1e7: %d and %d cgssor steps (%s), "
-          "E / 1e7 to %.1e", g, refine, na, nb, exact ? "the same" : "within 2 %",
-          dE);
+    check(na == nb && b.md->energy == two24 * a.md->energy,
+          "g = %s, refine %s, scaled by 2^24: %d and %d cgssor steps, E "
+          "exactly 2^24 times (%.17g)", g, refine, na, nb, b.md->energy / two24);
+    double dE = fabs(c.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
+    check(dE <= 1e-10, "g = %s, refine %s, scaled by 1e7: E / 1e7 to %.1e "
+          "(%d and %d steps)", g, refine, dE, na, c.md->report.iterations);
   }
-  close_case(&a), close_case(&b);
+  close_case(&a), close_case(&b), close_case(&c);
 }
 
 /* solved again at the same design, from its own state: no step */
@@ -204,17 +216,32 @@ static void test_max_iter(void)
   close_case(&c);
 }
 
-/* tol = 1e-15, below the rounding of the back substitution: the dual
-   meets it, the whole state cannot, and the solve says so */
-static void test_tol_below_rounding(void)
+/* tol = 1e-15 and 1e-300, below the rounding of the whole state (its
+   residual without the allowance for rounding is 2e-14): the residual
+   counts only what exceeds that rounding, so the solve converges, on
+   every BLAS kernel, when its pair and its state are exact to rounding
+   (kkt 0), to pdas's state */
+static void test_tol_below_rounding(const char *tol)
 {
-  char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
-                 "solver.state=cgssor", "solver.tol=1e-15", "solver.max_iter=2000" };
-  Case c;
+  char pt[32], *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=2.5e8",
+                         "solver.state=cgssor", pt, "solver.max_iter=2000" };
+  Case c, p;
+  snprintf(pt, sizeof pt, "solver.tol=%s", tol);
   open_case(&c, 6, ov);
-  check(c.rc == STATUS_NUMERIC && strstr(c.st.msg, "too ill-conditioned"),
-        "tol = 1e-15: %s", c.st.msg);
-  close_case(&c);
+  ov[3] = "solver.state=pdas";
+  open_case(&p, 6, ov);
+  if (check(!c.rc && !p.rc, "tol = %s: cgssor converges (%d steps, kkt %.1e) "
+            "and pdas (%d, kkt %.1e)%s%s", tol, c.md ? c.md->report.iterations : -1,
+            c.md ? c.md->report.kkt : NAN, p.md ? p.md->report.iterations : -1,
+            p.md ? p.md->report.kkt : NAN, c.st.msg, p.st.msg)) {
+    int nk = c.md->dofs->nc + c.md->dofs->nt;
+    double E = fabs(c.md->energy - p.md->energy) / fabs(p.md->energy);
+    double T = max_diff(c.md->T, p.md->T, nk) / max_abs(p.md->T, nk);
+    check(c.md->report.kkt == 0 && E <= 1e-14 && T <= 1e-10, "tol = %s: "
+          "cgssor's state exact to rounding (kkt 0), E to %.1e and the forces "
+          "to %.1e of pdas's", tol, E, T);
+  }
+  close_case(&c), close_case(&p);
 }
 
 /* psor with friction: qp_alloc refuses it, naming the two that take it */
@@ -245,11 +272,12 @@ int main(void)
   test_coulomb("4");
   test_g_zero();
   for (int k = 0; k < 3; k++) test_scale(g[k], "1");
-  test_scale("2.5e8", "4");
+  for (int k = 0; k < 3; k++) test_scale(g[k], "4");
   test_warm();
   test_singular();
   test_max_iter();
-  test_tol_below_rounding();
+  test_tol_below_rounding("1e-15");
+  test_tol_below_rounding("1e-300");
   test_psor_refused();
   return check_done();
 }

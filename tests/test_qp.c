@@ -403,7 +403,8 @@ static int all_finite(int n, const double *x)
   return 1;
 }
 
-/* max_iter = 1 on a problem that needs more, and tol beyond rounding */
+/* max_iter = 1 on a problem that needs more: not converged, with what was
+   measured (the residual, the bounds active) */
 static void check_not_converged(Problem *P)
 {
   double *x = malloc(P->n * sizeof *x);
@@ -412,15 +413,49 @@ static void check_not_converged(Problem *P)
     o.max_iter = 1;
     Run r = run(P, o, NULL, x, NULL);
     check(r.code == STATUS_NUMERIC && has(r.st.msg, "not converged")
-          && has(r.st.msg, names[m]) && r.rep.iterations == 1,
+          && has(r.st.msg, names[m]) && has(r.st.msg, "bounds active")
+          && r.rep.iterations == 1,
           "%s %s, max_iter 1: STATUS_NUMERIC \"%s\"", P->name, names[m], r.st.msg);
   }
-  Qp_options o = options(QP_PDAS);
-  o.tol = 1e-300;
-  Run r = run(P, o, NULL, x, NULL);
-  check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated"),
-        "%s pdas, tol 1e-300: STATUS_NUMERIC \"%s\"", P->name, r.st.msg);
   free(x);
+}
+
+/* tol = 1e-300, below any rounding: the residual counts only what exceeds
+   the rounding of its terms, so every method converges when its state is
+   exact to rounding (kkt 0), and agrees with its solution at TOL */
+static void check_below_rounding(const Problem *P)
+{
+  double *x = malloc(P->n * sizeof *x), *x0 = malloc(P->n * sizeof *x0);
+  for (int m = 0; m < 3; m++) {
+    Qp_options o = options(methods[m]);
+    Run r0 = run(P, o, NULL, x0, NULL);
+    o.tol = 1e-300;
+    Run r = run(P, o, NULL, x, NULL);
+    check(r.code == STATUS_OK && r0.code == STATUS_OK && r.rep.kkt == 0
+          && qp_kkt(&P->qp, x, NULL) == 0 && max_diff(P->n, x, x0) < 1e-7,
+          "%s %s, tol 1e-300: converged in %d iterations (%d at tol %g), kkt "
+          "0, x the same to %.2g%s", P->name, names[m], r.rep.iterations,
+          r0.rep.iterations, TOL, max_diff(P->n, x, x0), r.st.msg);
+  }
+  free(x), free(x0);
+}
+
+/* values of A that are not symmetric (outside the contract: pdas reads the
+   lower triangle, the residual the columns): pdas's state, refined once,
+   misses the tolerance with its active set repeated, and says what it
+   measured */
+static void check_repeated(void)
+{
+  Problem *P = obstacle_1d("unsymmetric values", 30, 3);
+  double *Ax = P->A->x, x[30];
+  const int *Ap = P->A->p, *Ai = P->A->i;
+  for (int k = Ap[1]; k < Ap[2]; k++)  /* A(0,1), not A(1,0): unknown 1 is free */
+    if (Ai[k] == 0) Ax[k] *= 1.5;
+  Run r = run(P, options(QP_PDAS), NULL, x, NULL);
+  check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated")
+        && has(r.st.msg, "kkt = ") && !has(r.st.msg, "\n"),
+        "unsymmetric values, pdas: STATUS_NUMERIC \"%s\"", r.st.msg);
+  problem_free(P);
 }
 
 /* a body held only by the bounds, under a load that lifts it off */
@@ -435,7 +470,13 @@ static void check_not_held(void)
       Qp_options o = options(methods[m]);
       o.max_iter = 2000;
       Run r = run(P[k], o, NULL, x, NULL);
-      check(r.code == STATUS_NUMERIC && has(r.st.msg, "lifts it off")
+      /* pdas and cgssor find it (a singular Newton matrix, a direction
+         that nothing resists); psor runs out of sweeps and says what it
+         measured: none of the bounds is active */
+      int said = methods[m] == QP_PSOR
+               ? has(r.st.msg, "not converged") && has(r.st.msg, ", 0 of ")
+               : has(r.st.msg, "lifts it off");
+      check(r.code == STATUS_NUMERIC && said
             && !has(r.st.msg, "nan") && all_finite(P[k]->n, x),
             "%s %s: STATUS_NUMERIC \"%s\"", P[k]->name, names[m], r.st.msg);
     }
@@ -533,6 +574,8 @@ int main(void)
   check_warm_pdas(P[5]);
   check_warm_floating(P[2]);
   check_not_converged(P[1]);
+  for (int k = 0; k < 6; k++) check_below_rounding(P[k]);
+  check_repeated();
   check_not_held();
   check_input_errors(P[0]);
   check_bad_matrices();
