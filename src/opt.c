@@ -1,4 +1,4 @@
-#line 267 "paper/opt.nw"
+#line 269 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -10,7 +10,7 @@
 #include "grad.h"
 #include "newton.h"
 
-#line 284 "paper/opt.nw"
+#line 286 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -30,7 +30,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 312 "paper/opt.nw"
+#line 314 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -50,14 +50,14 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 551 "paper/opt.nw"
+#line 553 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 672 "paper/opt.nw"
+#line 674 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -70,7 +70,7 @@ typedef struct {
   int fresh;              /* iterates accepted since SLSQP (re)started */
 } Slsqp;
 enum { STALL = 10 };
-#line 384 "paper/opt.nw"
+#line 386 "paper/opt.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 static double energy_rounding(const Model *md)
 {
@@ -82,7 +82,7 @@ static double energy_rounding(const Model *md)
   long double U = md->energy - md->friction_energy + W;
   return DBL_EPSILON * (double) (fabsl(U) + Wabs + fabs(md->friction_energy));
 }
-#line 336 "paper/opt.nw"
+#line 338 "paper/opt.nw"
 static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -100,7 +100,7 @@ static int evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 398 "paper/opt.nw"
+#line 400 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -109,7 +109,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 409 "paper/opt.nw"
+#line 411 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 static int report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -120,14 +120,14 @@ static int report_iterate(Evaluator *ev, int iteration, double pg)
   ev->rep->monitor_seconds += model_clock() - start;
   return stop;
 }
-#line 436 "paper/opt.nw"
+#line 438 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_work;
 
-#line 446 "paper/opt.nw"
+#line 448 "paper/opt.nw"
 static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
@@ -138,7 +138,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 465 "paper/opt.nw"
+#line 467 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -146,13 +146,13 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = evaluate(ev, Xn))) return rc;
 *accepted = ev->E <= E0 + 1e-4 * descent;
-#line 456 "paper/opt.nw"
+#line 458 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 477 "paper/opt.nw"
+#line 479 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -165,7 +165,7 @@ static int projgrad(Evaluator *ev, double *X)
     int stop = report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 499 "paper/opt.nw"
+#line 501 "paper/opt.nw"
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
                 : !accepted ? "no_progress"
@@ -174,7 +174,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 489 "paper/opt.nw"
+#line 491 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -182,7 +182,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 560 "paper/opt.nw"
+#line 562 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -194,7 +194,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 575 "paper/opt.nw"
+#line 577 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -204,7 +204,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   double X[n], d = B->delta / B->C0;
   metric_design(&q->metric, B->C0, y, X);
   
-#line 595 "paper/opt.nw"
+#line 597 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
   c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
@@ -214,11 +214,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
   c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
 }
-#line 584 "paper/opt.nw"
+#line 586 "paper/opt.nw"
   if (grad)
     for (unsigned j = 0; j < n; j++) {
       
-#line 608 "paper/opt.nw"
+#line 610 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   grad[2 * i * n + j] = -R[i * n + j];
   grad[(2 * i + 1) * n + j] = R[i * n + j];
@@ -228,11 +228,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   grad[(2 * n + 2 * i) * n + j] = rise;
   grad[(2 * n + 2 * i + 1) * n + j] = -rise;
 }
-#line 587 "paper/opt.nw"
+#line 589 "paper/opt.nw"
     }
   (void) m;
 }
-#line 621 "paper/opt.nw"
+#line 623 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -250,13 +250,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 688 "paper/opt.nw"
+#line 690 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 697 "paper/opt.nw"
+#line 699 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
@@ -270,19 +270,19 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 719 "paper/opt.nw"
+#line 721 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 710 "paper/opt.nw"
+#line 712 "paper/opt.nw"
   if (ev->E <= q->best + q->best_noise + ev->noise
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->E / q->metric.scale;
 }
-#line 728 "paper/opt.nw"
+#line 730 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -303,7 +303,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 754 "paper/opt.nw"
+#line 756 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -318,7 +318,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 774 "paper/opt.nw"
+#line 776 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -340,11 +340,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 768 "paper/opt.nw"
+#line 770 "paper/opt.nw"
   ev->rep->metric_seconds += model_clock() - start;
   return rc;
 }
-#line 804 "paper/opt.nw"
+#line 806 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -361,7 +361,7 @@ static int slsqp(Evaluator *ev, double *X)
       break;
     }
     
-#line 827 "paper/opt.nw"
+#line 829 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -370,7 +370,7 @@ nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 843 "paper/opt.nw"
+#line 845 "paper/opt.nw"
 more = !(rc = ev->failed) && !ev->rep->stop_reason[0]
        && r != NLOPT_MAXEVAL_REACHED && q.fresh > 0;
 if (!rc && !more && !ev->rep->stop_reason[0])
@@ -379,12 +379,12 @@ if (!rc && !more && !ev->rep->stop_reason[0])
 if (!rc) rc = evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 820 "paper/opt.nw"
+#line 822 "paper/opt.nw"
   }
   free(work);
   return rc;
 }
-#line 880 "paper/opt.nw"
+#line 882 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -396,7 +396,7 @@ typedef struct {
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
 static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
-#line 899 "paper/opt.nw"
+#line 901 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -421,7 +421,7 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   return STATUS_OK;
 }
-#line 984 "paper/opt.nw"
+#line 986 "paper/opt.nw"
 /* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
    with the curvature rho r the model was solved with */
 static double model_rounding(const Newton_run *nr)
@@ -440,7 +440,7 @@ static double model_rounding(const Newton_run *nr)
   }
   return DBL_EPSILON * sum;
 }
-#line 929 "paper/opt.nw"
+#line 931 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -466,7 +466,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 1008 "paper/opt.nw"
+#line 1010 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -485,7 +485,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 1051 "paper/opt.nw"
+#line 1053 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -493,7 +493,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 1026 "paper/opt.nw"
+#line 1028 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -513,7 +513,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 1067 "paper/opt.nw"
+#line 1069 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -526,11 +526,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 1091 "paper/opt.nw"
+#line 1093 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1079 "paper/opt.nw"
+#line 1081 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -539,7 +539,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1107 "paper/opt.nw"
+#line 1109 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
