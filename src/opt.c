@@ -1,4 +1,5 @@
-#line 265 "paper/opt.nw"
+#line 269 "paper/opt.nw"
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +10,7 @@
 #include "grad.h"
 #include "newton.h"
 
-#line 281 "paper/opt.nw"
+#line 286 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -29,7 +30,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 309 "paper/opt.nw"
+#line 314 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -38,6 +39,7 @@ typedef struct {
   double *X;              /* n: the last design evaluated */
   double *G;              /* n: grad E there */
   double E;               /* E there */
+  double noise;           /* the rounding of E there (below) */
   int have;               /* X, G, E are valid */
   int solves;             /* state solves so far */
   double tau;             /* the step of pi, fixed at the start */
@@ -48,25 +50,39 @@ typedef struct {
   Status *st;
   int failed;             /* a status to return after NLopt stops */
 } Evaluator;
-#line 503 "paper/opt.nw"
+#line 553 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 601 "paper/opt.nw"
+#line 674 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
   Metric metric;
   double best;            /* the lowest E evaluated */
+  double best_noise;      /* the rounding of E there */
   double *bestX;          /* n: where; the last accepted iterate */
   int k;                  /* accepted iterates so far */
   int stalled;            /* evaluations since the last accepted one */
+  int fresh;              /* iterates accepted since SLSQP (re)started */
 } Slsqp;
 enum { STALL = 10 };
-#line 331 "paper/opt.nw"
+#line 386 "paper/opt.nw"
+/* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
+static double energy_rounding(const Model *md)
+{
+  long double W = 0, Wabs = 0;
+  for (int i = 0; i < md->dofs->n; i++) {
+    long double bq = (long double) md->b[i] * md->Q[i];
+    W += bq, Wabs += fabsl(bq);
+  }
+  long double U = md->energy - md->friction_energy + W;
+  return DBL_EPSILON * (double) (fabsl(U) + Wabs + fabs(md->friction_energy));
+}
+#line 338 "paper/opt.nw"
 static int evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -80,10 +96,11 @@ static int evaluate(Evaluator *ev, const double *X)
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
   ev->E = ev->md->energy;
+  ev->noise = energy_rounding(ev->md);
   ev->have = 1;
   return STATUS_OK;
 }
-#line 350 "paper/opt.nw"
+#line 400 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -92,7 +109,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 361 "paper/opt.nw"
+#line 411 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 static int report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -103,14 +120,14 @@ static int report_iterate(Evaluator *ev, int iteration, double pg)
   ev->rep->monitor_seconds += model_clock() - start;
   return stop;
 }
-#line 388 "paper/opt.nw"
+#line 438 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_work;
 
-#line 398 "paper/opt.nw"
+#line 448 "paper/opt.nw"
 static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
@@ -121,7 +138,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 417 "paper/opt.nw"
+#line 467 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -129,13 +146,13 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = evaluate(ev, Xn))) return rc;
 *accepted = ev->E <= E0 + 1e-4 * descent;
-#line 408 "paper/opt.nw"
+#line 458 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 429 "paper/opt.nw"
+#line 479 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -148,7 +165,7 @@ static int projgrad(Evaluator *ev, double *X)
     int stop = report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 451 "paper/opt.nw"
+#line 501 "paper/opt.nw"
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
                 : !accepted ? "no_progress"
@@ -157,7 +174,7 @@ if (why) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s", why);
   break;
 }
-#line 441 "paper/opt.nw"
+#line 491 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -165,7 +182,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 512 "paper/opt.nw"
+#line 562 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -177,7 +194,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 527 "paper/opt.nw"
+#line 577 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -187,7 +204,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   double X[n], d = B->delta / B->C0;
   metric_design(&q->metric, B->C0, y, X);
   
-#line 547 "paper/opt.nw"
+#line 597 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
   c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
@@ -197,11 +214,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
   c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
 }
-#line 536 "paper/opt.nw"
+#line 586 "paper/opt.nw"
   if (grad)
     for (unsigned j = 0; j < n; j++) {
       
-#line 560 "paper/opt.nw"
+#line 610 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   grad[2 * i * n + j] = -R[i * n + j];
   grad[(2 * i + 1) * n + j] = R[i * n + j];
@@ -211,11 +228,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   grad[(2 * n + 2 * i) * n + j] = rise;
   grad[(2 * n + 2 * i + 1) * n + j] = -rise;
 }
-#line 539 "paper/opt.nw"
+#line 589 "paper/opt.nw"
     }
   (void) m;
 }
-#line 573 "paper/opt.nw"
+#line 623 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -233,13 +250,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 615 "paper/opt.nw"
+#line 690 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 624 "paper/opt.nw"
+#line 699 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
@@ -253,24 +270,26 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 645 "paper/opt.nw"
+#line 721 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 637 "paper/opt.nw"
-  if (ev->E < q->best) slsqp_accept(q);
-  else if (++q->stalled >= STALL) slsqp_stop(q, "no_progress");
+#line 712 "paper/opt.nw"
+  if (ev->E <= q->best + q->best_noise + ev->noise
+      && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
+  else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->E / q->metric.scale;
 }
-#line 654 "paper/opt.nw"
+#line 730 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
   double pg;
-  q->best = ev->E;
+  if (ev->E < q->best) q->best = ev->E, q->best_noise = ev->noise;
   q->stalled = 0;
+  q->fresh += q->k > 0;
   if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) {
     nlopt_force_stop(q->opt);
     return;
@@ -284,7 +303,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 679 "paper/opt.nw"
+#line 756 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -299,7 +318,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 699 "paper/opt.nw"
+#line 776 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -321,49 +340,51 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 693 "paper/opt.nw"
-  ev->rep->metric_seconds = model_clock() - start;
+#line 770 "paper/opt.nw"
+  ev->rep->metric_seconds += model_clock() - start;
   return rc;
 }
-#line 729 "paper/opt.nw"
+#line 806 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
   double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
-  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, X, 0, 0 };
+  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, 0, X, 0, 0, 0 };
   if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
   double *y = q.metric.X0 + n, *tol = y + n, f;
-  memcpy(q.metric.X0, X, n * sizeof *X);
-  if (!(rc = metric_setup(ev, &q.metric))) {
-    if (!(q.opt = nlopt_create(NLOPT_LD_SLSQP, n)))
+  for (int more = 1; more; ) {
+    memcpy(q.metric.X0, X, n * sizeof *X);
+    if ((rc = evaluate(ev, X)) || (rc = metric_setup(ev, &q.metric))) break;
+    if (!(q.opt = nlopt_create(NLOPT_LD_SLSQP, n))) {
       rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
-    else {
-      
-#line 751 "paper/opt.nw"
+      break;
+    }
+    
+#line 829 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
 nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
 nlopt_set_min_objective(q.opt, slsqp_objective, &q);
-nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1));
+nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
 nlopt_result r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 767 "paper/opt.nw"
-if (!(rc = ev->failed)) {
-  if (!ev->rep->stop_reason[0])
-    snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
-             r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
-  rc = evaluate(ev, X);
-}
+#line 845 "paper/opt.nw"
+more = !(rc = ev->failed) && !ev->rep->stop_reason[0]
+       && r != NLOPT_MAXEVAL_REACHED && q.fresh > 0;
+if (!rc && !more && !ev->rep->stop_reason[0])
+  snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
+           r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
+if (!rc) rc = evaluate(ev, X);
+q.fresh = q.stalled = 0;
 (void) f;
-#line 743 "paper/opt.nw"
-    }
+#line 822 "paper/opt.nw"
   }
   free(work);
   return rc;
 }
-#line 800 "paper/opt.nw"
+#line 882 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -375,7 +396,7 @@ typedef struct {
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
 static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
-#line 819 "paper/opt.nw"
+#line 901 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -400,13 +421,32 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   return STATUS_OK;
 }
-#line 848 "paper/opt.nw"
+#line 986 "paper/opt.nw"
+/* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
+   with the curvature rho r the model was solved with */
+static double model_rounding(const Newton_run *nr)
+{
+  double sum = 0;
+  for (int i = 0; i < nr->n; i++)
+    sum += fabs(nr->g[i] * nr->d[i]) + 0.5 * nr->rho * nr->r[i] * nr->d[i] * nr->d[i];
+  for (int c = 0; c < nr->m; c++) {
+    double s0 = 0, s1 = 0;
+    for (int e = 0; e < nr->m; e++) {
+      s0 += fabs(nr->S[(size_t) c * nr->m + e] * nr->v0[e]);
+      s1 += fabs(nr->S[(size_t) c * nr->m + e] * nr->v[e]);
+    }
+    sum += (0.5 * s0 + fabs(nr->f[c])) * fabs(nr->v0[c])
+         + (0.5 * s1 + fabs(nr->f[c])) * fabs(nr->v[c]);
+  }
+  return DBL_EPSILON * sum;
+}
+#line 931 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
   Newton_report nrep;
   int n = nr->n, rc;
-  double start = model_clock(), E0 = ev->E;
+  double start = model_clock(), E0 = ev->E, noise0 = ev->noise;
   for (int i = 0; i < n; i++) nr->r[i] *= nr->rho;
   rc = newton_solve(nr->qp, &nr->mdl, nr->d, nr->v, &nrep, ev->st);
   for (int i = 0; i < n; i++) nr->r[i] /= nr->rho;
@@ -419,14 +459,14 @@ static int newton_try(Newton_run *nr, int *accepted)
   if (!rc) rc = design_project(ev->B, nr->trial, nr->trial, NULL, ev->st);
   ev->rep->model_seconds += model_clock() - start;
   if (rc || (rc = evaluate(ev, nr->trial))) return rc;
-  double ared = E0 - ev->E, noise = 1e-13 * fabs(E0);
+  double ared = E0 - ev->E, Enoise = noise0 + ev->noise, noise = Enoise + model_rounding(nr);
   double ratio = nrep.pred > 0 ? ared / nrep.pred : 0;
-  *accepted = ratio >= 0.1 || (nrep.pred <= noise && ared >= -noise);
+  *accepted = nrep.pred > noise ? ratio >= 0.1 : ared >= -noise;
   if (!*accepted) nr->rho *= 4;
-  else if (ratio > 0.75 && nrep.pred > noise) nr->rho = fmax(nr->rho / 8, 1e-15);
+  else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 879 "paper/opt.nw"
+#line 1010 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -445,7 +485,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 922 "paper/opt.nw"
+#line 1053 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -453,7 +493,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 897 "paper/opt.nw"
+#line 1028 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -473,24 +513,24 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 938 "paper/opt.nw"
+#line 1069 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
 {
   int n = B->N + 1, rc;
-  Evaluator ev = { md, B, o, n, malloc(2 * n * sizeof(double)), NULL, 0, 0,
+  Evaluator ev = { md, B, o, n, malloc(2 * n * sizeof(double)), NULL, 0, 0, 0,
                    0, 0, model_clock(), monitor, data, rep, st, 0 };
   memset(rep, 0, sizeof *rep);
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 962 "paper/opt.nw"
+#line 1093 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 950 "paper/opt.nw"
+#line 1081 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -499,7 +539,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 978 "paper/opt.nw"
+#line 1109 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;

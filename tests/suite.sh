@@ -5,11 +5,25 @@
 # vertex of B, a load that lifts) and Example 5.1 at N = 512.  The Newton
 # method must converge within 100 iterations, keep every iterate in B to
 # 1e-12, and end at a KKT point of the programme; SLSQP, the reference,
-# runs too: where it converges, the two energies agree to 1e-9, and where
-# it does not, the Newton method's energy is not above its own.
+# runs too and must end as documented below: where it converges, the two
+# energies agree to 1e-9, and where it does not, the Newton method's
+# energy is not above its own.
 . tests/lib.sh
 # the value of KEY in a scene file (every suite scene gives its constants)
 key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
+# What SLSQP (schur metric, optimizer.max_iter = 200) does on each scene:
+# "STOP EXIT [ITERATIONS]", the same under the OpenBLAS kernels Haswell,
+# Sandybridge, Prescott, SkylakeX and with one thread (paper/opt.nw,
+# "SQP: NLopt's SLSQP").  On the cantilever and the clamped strip its
+# quasi-Newton model does not learn the flat directions of E (the nodes
+# out of contact) and it uses every iteration, restarted where it breaks
+# down; on the others it converges.
+slsqp_outcome() {
+  case $1 in
+    cantilever-gravity|clamped-strip) echo "max_iter 3 200" ;;
+    *) echo "converged 0" ;;
+  esac
+}
 for sc in data/suite/*.scene; do
   n=$(basename $sc .scene); c=$TMP/$n-newton; r=$TMP/$n-slsqp
   if ! $BIN optimize $sc -o $c -s optimizer.method=newton >/dev/null 2>$TMP/err; then
@@ -22,7 +36,12 @@ for sc in data/suite/*.scene; do
   S=$(calc 'g * L - C2' g="$(key gamma $sc)" L="$L" C2="$(key C2 $sc)")
   in_B "$n newton" $c 1e-12 $C0 $d $S $L $h
   kkt_point "$n newton" $c $C0 $d $h
-  $BIN optimize $sc -o $r >/dev/null 2>$TMP/err || { fail "$n: slsqp: $(cat $TMP/err)"; continue; }
+  $BIN optimize $sc -o $r -s optimizer.method=slsqp >/dev/null 2>$TMP/err; rc=$?
+  set -- $(slsqp_outcome $n)
+  if [ ! -f $r/summary.dat ]; then fail "$n: slsqp: exit $rc, $(cat $TMP/err)"; continue; fi
+  check "$n: SLSQP stops $1, exit $2${3:+, after $3 iterations} as documented (exit $rc, $(value stop_reason $r), $(value iterations $r) it, pi $(value projected_gradient $r))" \
+    holds "ok && rc == $2 && ($# < 3 || it == ${3:-0})" ok=$([ "$(value stop_reason $r)" = $1 ] && echo 1 || echo 0) \
+      rc=$rc it="$(value iterations $r)"
   if [ "$(value stop_reason $r)" = converged ]; then
     check "$n: Newton and SLSQP reach the same E* to 1e-9 ($(value energy $c), $(value energy $r))" \
       near_ref "$(value energy $r)" "$(value energy $c)" 1e-9
