@@ -53,7 +53,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -111,20 +111,27 @@ check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
 
 # make check-kernels: what a user's other machine would meet. The test
 # programs under every OpenBLAS kernel family this CPU can execute
-# (tests/kernels.sh lists them), and the test programs with the scripts that
+# (tests/kernels/programs.sh), the optimisation of every shipped and suite
+# scene at mesh.refine 1 and 4 under Haswell's, Sandybridge's and Prescott's
+# kernels (tests/kernels/optimize.sh; make check-kernels-full adds refine 8),
+# and the test programs with the scripts that
 # solve and optimise under KERNEL_SETTINGS: Prescott's kernels (the generic
 # ones, which every x86-64 runs) and one thread. A verdict that changes with
 # the kernel then fails here, on the developer's machine, before it fails on
 # a user's. CI runs it.
 KERNEL_SETTINGS ?= OPENBLAS_CORETYPE=Prescott OPENBLAS_NUM_THREADS=1
+KERNEL_REFINES ?= 1 4
 NUMERIC_SCRIPTS := $(patsubst %,tests/%.sh,optimize suite friction hard_cases solvers_agree \
                      gradcheck convergence flat_punch magnitudes reproducible)
 check-kernels: $(PROGRAM) $(TEST_PROGS)
 	@TESTS=$(B)/tests sh tests/kernels/programs.sh
+	@BIN=$(PROGRAM) REFINES="$(KERNEL_REFINES)" sh tests/kernels/optimize.sh
 	@for k in $(KERNEL_SETTINGS); do \
 	  env $$k BIN=$(PROGRAM) TESTS=$(B)/tests SCRIPTS="$(NUMERIC_SCRIPTS)" \
 	    LOG=build/tests-$$k.log sh tests/run | tail -n 1 | sed "s/^/check-kernels: $$k: /"; \
 	done; ! grep -l '^FAIL - ' $(KERNEL_SETTINGS:%=build/tests-%.log)
+check-kernels-full:
+	@$(MAKE) --no-print-directory check-kernels KERNEL_REFINES="1 4 8"
 
 # make bench: the state-solver table, then the performance tables (issue 5;
 # BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve

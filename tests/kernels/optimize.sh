@@ -1,22 +1,16 @@
-# kernels.sh: the optimisation of every shipped scene (data/*.scene) and
+# tests/kernels/optimize.sh: the optimisation of every shipped scene (data/*.scene) and
 # every scene of the robustness suite (data/suite/*.scene) at mesh.refine
 # 1, 4 and 8 must end the same way under every OpenBLAS kernel family:
 # the same exit status and the same stop reason (summary.dat's
 # stop_reason, or, for a run that wrote nothing, the solver its one line
 # of stderr names).  The rounding of the kernels differs in the last bits;
 # a result that depends on it is a defect (paper/opt.nw, "Rounding").
-# Long (see paper/opt.nw for its time): make check (tests/run runs every
-# tests/*.sh) only notes that it did not run; it runs when KERNELS is set
-# in the environment, or with the argument --run.  The environment chooses:
-#   KERNELS  OPENBLAS_CORETYPE values, default (empty or unset with --run)
-#            "Haswell Sandybridge Prescott"
+# Long (see paper/opt.nw for its time): make check-kernels runs it at
+# REFINES="1 4", make check-kernels-full at all three. The environment chooses:
+#   KERNELS  OPENBLAS_CORETYPE values, default "Haswell Sandybridge Prescott"
 #   REFINES  mesh.refine values, default "1 4 8"
 #   METHODS  optimizer.method values, default "newton" (the default method)
 #   SCENES   scene files, default data/*.scene data/suite/*.scene
-if [ -z "${KERNELS+set}" ] && [ "$1" != --run ]; then
-  echo "# kernels.sh: not run (long): KERNELS='Haswell Sandybridge Prescott' sh tests/kernels.sh"
-  exit 0
-fi
 . tests/lib.sh
 KERNELS=${KERNELS:-Haswell Sandybridge Prescott}
 REFINES=${REFINES:-1 4 8}
