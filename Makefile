@@ -53,7 +53,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full kernels-table bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -130,6 +130,11 @@ check-kernels: $(PROGRAM) $(TEST_PROGS)
 	  env $$k BIN=$(PROGRAM) TESTS=$(B)/tests SCRIPTS="$(NUMERIC_SCRIPTS)" \
 	    LOG=build/tests-$$k.log sh tests/run | tail -n 1 | sed "s/^/check-kernels: $$k: /"; \
 	done; ! grep -l '^FAIL - ' $(KERNEL_SETTINGS:%=build/tests-%.log)
+# The table of the paper's section "Every machine": the test programs under
+# each kernel family this CPU executes (written by the run, committed).
+kernels-table: $(TEST_PROGS)
+	TESTS=$(B)/tests TABLE=paper/bench-kernels.tex.partial sh tests/kernels/programs.sh; \
+	  mv paper/bench-kernels.tex.partial paper/bench-kernels.tex
 check-kernels-full:
 	@$(MAKE) --no-print-directory check-kernels KERNEL_REFINES="1 4 8"
 

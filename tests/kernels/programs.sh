@@ -6,15 +6,17 @@
 # family runs once, under the first name that selects it. A family whose
 # instructions this CPU lacks dies with SIGILL (exit 132) and is listed as
 # not run. One line a family, "ok - ..." or "FAIL - ..." with the failing
-# checks; with TABLE=FILE also the LaTeX rows "family & passed & failed \\".
+# checks; with TABLE=FILE also the macros \kernelsmachine and \kernelrows
+# (the rows "family & passed & failed \\") of the paper's table.
 . tests/lib.sh
 TESTS=${TESTS:-build/tests}
 NAMES="Prescott Core2 Penryn Dunnington Nehalem Atom Opteron Barcelona Bobcat
        Bulldozer Piledriver Steamroller Excavator Sandybridge Haswell Zen
        SkylakeX Cooperlake Athlon Katmai Northwood Banias"
 probe=$(ls $TESTS/test_* | grep -v '\.d$' | head -n 1)
-seen=" "; skipped=""
-[ -n "${TABLE:-}" ] && : > "$TABLE"
+seen=" "; skipped=""; rows=""
+[ -n "${TABLE:-}" ] && printf '%% written by tests/kernels/programs.sh (make kernels-table)\n\\newcommand{\\kernelsmachine}{%s, %s}\n' \
+  "$(sed -n 's/^model name[^:]*: *//p' /proc/cpuinfo | head -n 1)" "$(date +%Y-%m-%d)" > "$TABLE"
 for name in $NAMES; do
   core=$(OPENBLAS_VERBOSE=2 OPENBLAS_CORETYPE=$name $probe 2>&1 >/dev/null | sed -n 's/^Core: //p' | head -n 1)
   [ -n "$core" ] || core=$name
@@ -34,12 +36,13 @@ for name in $NAMES; do
   done
   if [ $passed -lt 0 ]; then
     skipped="$skipped $core"
-    [ -n "${TABLE:-}" ] && echo "$core & \\multicolumn{2}{l}{not executable on this CPU} \\\\" >> "$TABLE"
+    [ -n "${TABLE:-}" ] && rows="$rows$core & \\multicolumn{2}{l}{illegal instruction} \\\\ "
     continue
   fi
-  [ -n "${TABLE:-}" ] && echo "$core & $passed & $failed \\\\" >> "$TABLE"
+  rows="$rows$core & $passed & $failed \\\\ "
   check "the test programs under OpenBLAS's $core kernels: $passed passed, $failed failed$which" \
     test $failed -eq 0 -a $passed -gt 0
 done
+[ -n "${TABLE:-}" ] && printf '\\newcommand{\\kernelrows}{%s}\n' "$rows" >> "$TABLE"
 [ -n "$skipped" ] && echo "# not executable on this CPU (SIGILL):$skipped"
 finish
