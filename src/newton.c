@@ -1,4 +1,4 @@
-#line 135 "paper/newton.nw"
+#line 139 "paper/newton.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,7 +6,7 @@
 #include <gsl/gsl_linalg.h>
 #include "newton.h"
 
-#line 162 "paper/newton.nw"
+#line 166 "paper/newton.nw"
 struct Newton_workspace {
   int n, m, p;         /* design nodes, contact unknowns, inequalities */
   double *z, *s, *lam; /* n+m, p, p: the iterate, slacks, multipliers */
@@ -31,7 +31,7 @@ struct Newton_workspace {
   double *rdf, *rpf;   /* n+m, p: its residuals */
   unsigned char *act, *tried; /* p: the face now indicated, the last tried */
 };
-#line 189 "paper/newton.nw"
+#line 193 "paper/newton.nw"
 Newton_workspace *newton_alloc(int n, int m, Status *st)
 {
   Newton_workspace *w = calloc(1, sizeof *w);
@@ -79,7 +79,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 243 "paper/newton.nw"
+#line 247 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double model_scale(const Newton_model *mdl)
 {
@@ -114,7 +114,7 @@ static void scale_model(Newton_workspace *w, const Newton_model *mdl, double phi
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 281 "paper/newton.nw"
+#line 285 "paper/newton.nw"
 /* out = A z (p values) */
 static void constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out)
@@ -144,7 +144,7 @@ static void constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 374 "paper/newton.nw"
+#line 378 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -222,7 +222,7 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 459 "paper/newton.nw"
+#line 463 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -251,7 +251,7 @@ static void bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 503 "paper/newton.nw"
+#line 507 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {
@@ -347,8 +347,8 @@ static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
   w->mu += a * dmu;
   return 0;
 }
-#line 628 "paper/newton.nw"
-enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 4 };
+#line 654 "paper/newton.nw"
+enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 
 /* how far a point is from the KKT conditions, each relative to its scale:
    the rows of the design and their constraints (bounds, slopes) to the
@@ -469,9 +469,9 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 773 "paper/newton.nw"
+#line 832 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
-static const double NEWTON_FACE_MU = 1e-6, NEWTON_MU_ROUND = 4 * DBL_EPSILON;
+static const double NEWTON_FACE_MU = 1e-7, NEWTON_MU_ROUND = 4 * DBL_EPSILON;
 
 /* m(0) - m(d) = -(g'd + d'Rd/2) - (T'dv + dv'S dv/2), dv = v - v0 and
    T = S v0 - f: from the step, so that its rounding is the step's */
@@ -544,7 +544,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 874 "paper/newton.nw"
+#line 933 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -564,9 +564,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     }
   }
 }
-#line 847 "paper/newton.nw"
+#line 906 "paper/newton.nw"
     
-#line 864 "paper/newton.nw"
+#line 923 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -574,7 +574,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 848 "paper/newton.nw"
+#line 907 "paper/newton.nw"
     if (predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -583,7 +583,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 898 "paper/newton.nw"
+#line 957 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried has stationarity %.1e, violation %.1e on and %.1e "
@@ -594,7 +594,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 856 "paper/newton.nw"
+#line 915 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v);
