@@ -347,7 +347,7 @@ static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
   w->mu += a * dmu;
   return 0;
 }
-#line 654 "paper/newton.nw"
+#line 661 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 
 /* how far a point is from the KKT conditions, each relative to its scale:
@@ -428,7 +428,8 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
   int p = w->p, nm = w->n + w->m, strikes = 0;
   double om = face_weight(w, lscale, bmax), re, sc[2];
   double best[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-  for (int j = 0; j < p; j++) w->W[j] = w->act[j] ? om : 0;
+  for (int j = 0; j < p; j++)               /* off the face: a contact's proximal weight */
+    w->W[j] = w->act[j] ? om : j >= 2 * w->n + 2 * (w->n - 1) ? 1e-14 * om : 0;
   if (factor_with_area(w, col)) return -1;
   memcpy(w->zf, w->z, nm * sizeof *w->zf);
   for (int j = 0; j < p; j++) w->lf[j] = w->act[j] ? w->lam[j] : 0;
@@ -450,13 +451,14 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
 
 /* 1 if the point of the face passes; else the face takes the constraints
    its point violates and gives up those of negative multipliers, up to
-   NEWTON_FACE_ROUNDS times, while that changes it */
+   NEWTON_FACE_ROUNDS times, while that changes it; *singular counts the
+   faces whose Newton matrix was not positive definite */
 static int face_solve(Newton_workspace *w, const int *col, double bmax, double tol,
-                      Newton_quality *q, int *failed)
+                      Newton_quality *q, int *singular)
 {
   double lscale = fmax(q->scale[0], q->scale[1]);   /* the interior point's */
   for (int r = 0; r < NEWTON_FACE_ROUNDS; r++) {
-    if ((*failed = face_point(w, col, bmax, lscale, q))) return 0;
+    if (face_point(w, col, bmax, lscale, q)) return ++*singular, 0;
     if (!q->finite || !(fmax(fmax(q->dual, q->primal), q->area) <= tol)) return 0;
     if (q->outside <= tol && q->negative <= tol) return 1;
     int changed = 0;
@@ -469,9 +471,10 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 832 "paper/newton.nw"
+#line 844 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
-static const double NEWTON_FACE_MU = 1e-7, NEWTON_MU_ROUND = 4 * DBL_EPSILON;
+static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
+                    NEWTON_MU_ROUND = 4 * DBL_EPSILON;
 
 /* m(0) - m(d) = -(g'd + d'Rd/2) - (T'dv + dv'S dv/2), dv = v - v0 and
    T = S v0 - f: from the step, so that its rounding is the step's */
@@ -531,20 +534,20 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   int rc = check_model(w, mdl, st), n = w->n, m = w->m, p = w->p, k;
   if (rc) return rc;
   double phi = model_scale(mdl), C0 = mdl->B->C0, re;
-  double tol = fmax(1e-12, (n + m) * DBL_EPSILON), bmax = 1, scale[2];
+  double tol = fmax(NEWTON_TOL, (n + m) * DBL_EPSILON), bmax = 1, scale[2];
   if (!(phi > 0)) phi = 1;
   scale_model(w, mdl, phi);
   interior_start(w, mdl);
   for (int j = 0; j < p; j++) bmax = fmax(bmax, fabs(w->b[j]));
   Newton_quality q, fq = { 0 };
-  int found = 0, faces = 0;
+  int found = 0, faces = 0, singular = 0;
   const char *why = "reached its iteration limit";
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
     double gap = residuals(w, mdl->col, w->z, w->lam, w->s, w->mu, w->rd, w->rp, &re, scale);
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 933 "paper/newton.nw"
+#line 946 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -555,18 +558,13 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
   if (!same) {
     memcpy(w->tried, w->act, p);
     faces++;
-    int failed;
     fq = q;
-    if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &failed))) break;
-    if (failed) {
-      why = "met a Newton matrix of the face whose contact block is not positive definite";
-      break;
-    }
+    if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 906 "paper/newton.nw"
+#line 919 "paper/newton.nw"
     
-#line 923 "paper/newton.nw"
+#line 936 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -574,7 +572,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 907 "paper/newton.nw"
+#line 920 "paper/newton.nw"
     if (predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -583,18 +581,19 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 957 "paper/newton.nw"
+#line 965 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
-                          "faces tried has stationarity %.1e, violation %.1e on and %.1e "
-                          "off it, multiplier %.1e, area %.1e (relative; tolerance %.0e)",
-                          why, k, q.mu, faces, fq.dual, fq.primal, fq.outside,
+                          "faces tried (%d not positive definite) has stationarity %.1e, "
+                          "violation %.1e on and %.1e off it, multiplier %.1e, area %.1e "
+                          "(relative; tolerance %.0e)", why, k, q.mu, faces, singular,
+                          fq.dual, fq.primal, fq.outside,
                           fq.negative > 0 ? -fq.negative : 0.0, fq.area, tol)
   : status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d iterations "
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 915 "paper/newton.nw"
+#line 928 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v);

@@ -21,6 +21,7 @@
 #include "newton.h"
 
 static uint64_t seed = 0x9E3779B97F4A7C15ULL;
+enum { MSG = sizeof ((Status) { 0 }).msg };   /* the first failure's message */
 
 static double uniform(void)          /* xorshift64, in [0, 1) */
 {
@@ -200,7 +201,7 @@ static int solve(const Case *k, double *d, double *v, Newton_report *rep, char *
   Newton_workspace *w = newton_alloc(k->n, k->m, NULL);
   Status st = { STATUS_OK, "" };
   int rc = w ? newton_solve(w, &k->mdl, d, v, rep, &st) : STATUS_MEMORY;
-  if (rc && !*msg) snprintf(msg, 160, "%s", w ? st.msg : "out of memory");
+  if (rc && !*msg) snprintf(msg, MSG, "%s", w ? st.msg : "out of memory");
   newton_free(w);
   return rc;
 }
@@ -238,7 +239,7 @@ static void test_enumeration(void)
 {
   int found = 1, solved = 0, trials = 12;
   double worst = 0;
-  char msg[160] = "";
+  char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     int n = 3 + t % 2, m = t % 3 == 0 ? 1 : 2;
     Case k;
@@ -263,7 +264,7 @@ static void test_endgame(void)
 {
   int found = 1, solved = 0, trials = 24;
   double worst = 0, worst_rel = 0, smallest = HUGE_VAL, worst_pred = 0;
-  char msg[160] = "";
+  char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     int n = 4, m = 1 + t % 3;
     Case k;
@@ -366,7 +367,7 @@ static void test_slsqp(void)
 {
   double worst_obj = 0, worst_viol = 0;
   int refs = 0, solved = 0, trials = 5;
-  char msg[160] = "";
+  char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     Case k;
     make_case(&k, 13, 12, 1.0);
@@ -412,7 +413,7 @@ static void test_scale(void)
 {
   double worst = 0, worst_pred = 0;
   int rc = 0, most = 0, trials = 0;
-  char msg[160] = "";
+  char msg[MSG] = "";
   for (int t = 0; t < 6; t++) {
     double s = t % 2 ? 1e-7 : 1e7;
     Case a, b;
@@ -468,11 +469,44 @@ static void make_walk(Case *k, int n, int m, double tiny, double rho)
   }
 }
 
+/* S made singular, P S P with P = I - u u'/u'u and u the indicator of
+   the contact unknowns that do not touch and of the first that does (a
+   body held in that direction by one contact alone: T'u > 0, so that the
+   model has one minimiser; on a face without that contact its Newton
+   matrix is singular), the forces T = S v0 - f kept; 0 if all or none
+   touch */
+static int make_singular(Case *k)
+{
+  int m = k->m, nu = 0, holder = -1;
+  double T[16], u[16], Su[16], uSu = 0;
+  for (int c = 0; c < m; c++) {
+    int touches = k->v0[c] == -k->X[k->col[c]];
+    if (touches && holder < 0) holder = c;
+    u[c] = !touches || c == holder, nu += u[c] > 0;
+    T[c] = -k->f[c];
+    for (int e = 0; e < m; e++) T[c] += k->S[c * m + e] * k->v0[e];
+  }
+  if (holder < 0 || nu < 2) return 0;
+  for (int c = 0; c < m; c++) {
+    Su[c] = 0;
+    for (int e = 0; e < m; e++) Su[c] += k->S[c * m + e] * u[e] / nu;
+    uSu += u[c] * Su[c];
+  }
+  for (int c = 0; c < m; c++)            /* P S P = S - Su u' - u Su' + uSu u u' (u'u = nu) */
+    for (int e = 0; e < m; e++)
+      k->S[c * m + e] += -Su[c] * u[e] - u[c] * Su[e] + uSu * u[c] * u[e] / nu;
+  for (int c = 0; c < m; c++) {
+    k->f[c] = -T[c];
+    for (int e = 0; e < m; e++) k->f[c] += k->S[c * m + e] * k->v0[e];
+  }
+  return 1;
+}
+
 static void test_robust(void)
 {
-  int solved = 0, trials = 400;
+  int solved = 0, trials = 400, singular = 0;
   double worst_viol = 0, worst_pred = 0;
-  char msg[160] = "";
+  char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     int n = 3 + (int) (uniform() * 14), m = (int) (uniform() * n);
     Case k;
@@ -481,6 +515,7 @@ static void test_robust(void)
       make_case(&k, n, m, 1.0);
       for (int i = 0; i < n; i++) k.g[i] *= 40, k.r[i] *= pow(10, -10 + 10 * uniform());
     }
+    if (t % 4 == 2) singular += make_singular(&k);   /* a make_case: some not touching */
     double scale = pow(10, -8 + 16 * uniform()), d[16], v[16], zero[16] = { 0 }, terms = 0;
     for (int i = 0; i < n; i++) k.g[i] *= scale, k.r[i] *= scale, terms += fabs(k.g[i]) + k.r[i];
     for (int c = 0; c < m * m; c++) k.S[c] *= scale;
@@ -494,8 +529,8 @@ static void test_robust(void)
     worst_pred = fmax(worst_pred, -pred / terms);
   }
   check(solved == trials, "%d random problems (n = 3 .. 16, curvature 1e-10 .. 1 of the contact's, "
-        "data 1e-8 .. 1e8, half of them on bounds and slopes with tiny gradients): all solved "
-        "(%d) %s", trials, solved, msg);
+        "data 1e-8 .. 1e8, half of them on bounds and slopes with tiny gradients, %d with S "
+        "singular): all solved (%d) %s", trials, singular, solved, msg);
   check(solved > 0 && worst_viol <= 1e-12, "their steps are feasible to %.1e <= 1e-12 C0", worst_viol);
   check(solved > 0 && worst_pred <= 1e-14, "their predicted decreases are the model's own and "
         "not negative to %.1e <= 1e-14 of the model's terms", worst_pred);
