@@ -1,10 +1,10 @@
-#line 83 "paper/newton.nw"
+#line 84 "paper/newton.nw"
 #ifndef CONTACTOPT_NEWTON_H
 #define CONTACTOPT_NEWTON_H
 #include "status.h"
 #include "design.h"
 
-#line 101 "paper/newton.nw"
+#line 102 "paper/newton.nw"
 typedef struct {
   int n;               /* design nodes, N+1 */
   int m;               /* contact unknowns, nc (may be 0) */
@@ -17,14 +17,14 @@ typedef struct {
   const double *f;     /* m: its load, S Q_c - T */
   const double *v0;    /* m: the state's contact displacements Q_c */
 } Newton_model;
-#line 116 "paper/newton.nw"
+#line 117 "paper/newton.nw"
 typedef struct {
   double pred;         /* m(0) - m(d) >= 0, J/m */
   int iterations;      /* of the interior point */
   double residual;     /* its largest relative residual at the end */
 } Newton_report;
 
-#line 91 "paper/newton.nw"
+#line 92 "paper/newton.nw"
 typedef struct Newton_workspace Newton_workspace;
 Newton_workspace *newton_alloc(int n, int m, Status *st);
 void newton_free(Newton_workspace *w);
