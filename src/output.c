@@ -599,22 +599,30 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 1026 "paper/output.nw"
+#line 1027 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
   snprintf(tmp, sizeof tmp, "%s.partial", path);
   FILE *f = fopen(tmp, "w");
-  if (!f) return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
+  if (!f) return output_errno(st, errno, path, "cannot write");
   int ok = cholmod_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
+  int memory = !ok && md->cm->status == CHOLMOD_OUT_OF_MEMORY;
+  ok = !ferror(f) && ok;    /* CHOLMOD does not check every fprintf */
   ok = !fclose(f) && ok;
-  if (!ok || rename(tmp, path)) {
+  if (ok && rename(tmp, path)) {
+    int rc = output_errno(st, errno, path, "cannot move into place");
     remove(tmp);
-    return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
+    return rc;
+  }
+  if (!ok) {
+    remove(tmp);
+    return memory ? status_set(st, STATUS_MEMORY, "%s: out of memory", path)
+                  : status_set(st, STATUS_SYSTEM, "%s: write failed", path);
   }
   return STATUS_OK;
 }
-#line 1049 "paper/output.nw"
+#line 1058 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -641,7 +649,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1254 "paper/output.nw"
+#line 1263 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -652,7 +660,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1144 "paper/output.nw"
+#line 1153 "paper/output.nw"
 #define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
 
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -674,7 +682,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1085 "paper/output.nw"
+#line 1094 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -719,7 +727,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1209 "paper/output.nw"
+#line 1218 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -732,7 +740,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1173 "paper/output.nw"
+#line 1182 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -764,7 +772,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1232 "paper/output.nw"
+#line 1241 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -783,7 +791,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1270 "paper/output.nw"
+#line 1279 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

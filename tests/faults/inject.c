@@ -73,12 +73,22 @@ REAL(fopen); REAL(fopen64); REAL(vfprintf); REAL(fputs); REAL(fputc);
 REAL(putc); REAL(fwrite); REAL(fflush); REAL(fclose); REAL(mkdir); REAL(rename);
 static int (*real___vfprintf_chk)(FILE *, int, const char *, va_list);
 
+/* the next definition of a function: after this shim, or, where the
+   loader has put the shim after the C library (valgrind does), the C
+   library's */
+static void *next(const char *name)
+{
+  void *f = dlsym(RTLD_NEXT, name), *libc;
+  if (!f && (libc = dlopen("libc.so.6", RTLD_LAZY | RTLD_NOLOAD))) f = dlsym(libc, name);
+  return f;
+}
+
 static int resolving;
 static void resolve(void)
 {
   if (real_malloc || resolving) return;
   resolving = 1;
-#define GET(name) real_##name = (__typeof__(real_##name)) dlsym(RTLD_NEXT, #name)
+#define GET(name) real_##name = (__typeof__(real_##name)) next(#name)
   GET(calloc); GET(realloc); GET(free); GET(posix_memalign); GET(aligned_alloc);
   GET(memalign); GET(valloc); GET(pvalloc); GET(reallocarray);
   GET(fopen); GET(fopen64); GET(vfprintf); GET(fputs); GET(fputc); GET(putc);
@@ -135,6 +145,7 @@ void *realloc(void *p, size_t n)
                         ? n : (size_t) (arena + sizeof arena - (char *) p));
     return q;
   }
+  if (!real_realloc) return p ? NULL : arena_alloc(n);  /* while resolving */
   if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_realloc(p, n);
 }
@@ -142,6 +153,7 @@ void *realloc(void *p, size_t n)
 void *reallocarray(void *p, size_t m, size_t n)
 {
   resolve();
+  if (!real_reallocarray) return p || (n && m > (size_t) -1 / n) ? NULL : arena_alloc(m * n);
   if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_reallocarray(p, m, n);
 }
@@ -156,35 +168,35 @@ void free(void *p)
 int posix_memalign(void **p, size_t align, size_t n)
 {
   resolve();
-  if (ALLOC_FAILS()) return ENOMEM;
+  if (!real_posix_memalign || ALLOC_FAILS()) return ENOMEM;
   return real_posix_memalign(p, align, n);
 }
 
 void *aligned_alloc(size_t align, size_t n)
 {
   resolve();
-  if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
+  if (!real_aligned_alloc || ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_aligned_alloc(align, n);
 }
 
 void *memalign(size_t align, size_t n)
 {
   resolve();
-  if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
+  if (!real_memalign || ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_memalign(align, n);
 }
 
 void *valloc(size_t n)
 {
   resolve();
-  if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
+  if (!real_valloc || ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_valloc(n);
 }
 
 void *pvalloc(size_t n)
 {
   resolve();
-  if (ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
+  if (!real_pvalloc || ALLOC_FAILS()) { errno = ENOMEM; return NULL; }
   return real_pvalloc(n);
 }
 
@@ -218,23 +230,23 @@ static int write_fails(FILE *f)
   return 1;
 }
 
-static FILE *open_stream(FILE *(*real)(const char *, const char *),
+static FILE *open_stream(FILE *(**real)(const char *, const char *),
                          const char *path, const char *mode)
 {
-  resolve();
+  resolve();                    /* before *real is read */
   int w = writing_mode(mode);
   if (w && write_fails(NULL)) return NULL;
-  FILE *f = real(path, mode);
+  FILE *f = (*real)(path, mode);
   if (f && w) track(f, 1);
   return f;
 }
 FILE *fopen(const char *path, const char *mode)
 {
-  return open_stream(real_fopen, path, mode);
+  return open_stream(&real_fopen, path, mode);
 }
 FILE *fopen64(const char *path, const char *mode)
 {
-  return open_stream(real_fopen64, path, mode);
+  return open_stream(&real_fopen64, path, mode);
 }
 
 int vfprintf(FILE *f, const char *fmt, va_list ap)
@@ -395,7 +407,7 @@ int __libc_start_main(main_fn main, int argc, char **argv,
 {
   int (*real)(main_fn, int, char **, void (*)(void), void (*)(void),
               void (*)(void), void *) =
-    (__typeof__(real)) dlsym(RTLD_NEXT, "__libc_start_main");
+    (__typeof__(real)) next("__libc_start_main");
   real_main = main;
   return real(counted_main, argc, argv, init, fini, rtld_fini, stack_end);
 }
