@@ -112,5 +112,5 @@ leg() { name=$1; shift
 
 leg optimize optimize $ex -s mesh.refine=8
 window=1
-leg solve solve $ex -s mesh.refine=8 --plot-files
+leg solve solve $ex -s mesh.refine=16 --plot-files
 finish
