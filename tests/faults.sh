@@ -17,13 +17,17 @@
 # run, by LeakSanitizer) or any other exit fails the leg.  Each leg prints
 # the operations it made fail and their distinct call sites.
 #
+# A run that a failed write of the matrix file (--matrix-market, written
+# after the commit) ends may leave the new run's complete folder instead.
+#
 # make check runs the legs of a solve (FAULTS=quick); make faults runs
 # every leg (FAULTS=all): the solve, the Newton method's and SLSQP's
 # optimisations of Example 5.1 at N = 4, and the solve with
-# --matrix-market (FAULTS="newton slsqp" runs those legs only).  FAULTS_VALGRIND=n also runs every n-th k under
-# Memcheck (leaks and invalid accesses), which must end as the run did or
-# with exit 0 (Memcheck's own allocator takes the place of the C library's,
-# so the k-th allocation there is not always the same one).
+# --matrix-market (FAULTS="newton slsqp" runs those legs only).
+# FAULTS_VALGRIND=n also runs every n-th k under Memcheck (leaks and
+# invalid accesses), which must end as the run did or with exit 0
+# (Memcheck's allocator takes the place of the C library's, so the k-th
+# allocation there is not always the same one).
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 SHIM=${FAULT_SHIM:-build/faults/inject.so}
@@ -36,6 +40,7 @@ ex=data/example-5.1.scene
 if [ ! -f "$SHIM" ]; then
   fail "faults: the shim $SHIM is missing (make $SHIM)"; finish; exit 1
 fi
+case $SHIM in /*) ;; *) SHIM=$(pwd)/$SHIM ;; esac
 start=$(date +%s)
 
 # same_run A B: the folders hold the same files with the same contents,
@@ -57,7 +62,7 @@ same_run() {
 # (K = 0: none), its report in $TMP/report
 shim() { _kind=$1 _k=$2; shift 2; rm -f $TMP/report
   if [ "$_kind" = alloc ]; then set -- env FAULT_ALLOC=$_k "$@"; else set -- env FAULT_WRITE=$_k "$@"; fi
-  FAULT_REPORT=$TMP/report LD_PRELOAD=$(pwd)/$SHIM "$@"; }
+  FAULT_REPORT=$TMP/report LD_PRELOAD=$SHIM "$@"; }
 
 # as_it_was D: the folder D/out is D/before byte for byte, nothing is beside
 # it, and the matrix D/A.mtx (if any) is D/before.mtx; with a matrix, whose

@@ -73,22 +73,12 @@ REAL(fopen); REAL(fopen64); REAL(vfprintf); REAL(fputs); REAL(fputc);
 REAL(putc); REAL(fwrite); REAL(fflush); REAL(fclose); REAL(mkdir); REAL(rename);
 static int (*real___vfprintf_chk)(FILE *, int, const char *, va_list);
 
-/* the next definition of a function: after this shim, or, where the
-   loader has put the shim after the C library (valgrind does), the C
-   library's */
-static void *next(const char *name)
-{
-  void *f = dlsym(RTLD_NEXT, name), *libc;
-  if (!f && (libc = dlopen("libc.so.6", RTLD_LAZY | RTLD_NOLOAD))) f = dlsym(libc, name);
-  return f;
-}
-
 static int resolving;
 static void resolve(void)
 {
   if (real_malloc || resolving) return;
   resolving = 1;
-#define GET(name) real_##name = (__typeof__(real_##name)) next(#name)
+#define GET(name) real_##name = (__typeof__(real_##name)) dlsym(RTLD_NEXT, #name)
   GET(calloc); GET(realloc); GET(free); GET(posix_memalign); GET(aligned_alloc);
   GET(memalign); GET(valloc); GET(pvalloc); GET(reallocarray);
   GET(fopen); GET(fopen64); GET(vfprintf); GET(fputs); GET(fputc); GET(putc);
@@ -407,7 +397,7 @@ int __libc_start_main(main_fn main, int argc, char **argv,
 {
   int (*real)(main_fn, int, char **, void (*)(void), void (*)(void),
               void (*)(void), void *) =
-    (__typeof__(real)) next("__libc_start_main");
+    (__typeof__(real)) dlsym(RTLD_NEXT, "__libc_start_main");
   real_main = main;
   return real(counted_main, argc, argv, init, fini, rtld_fini, stack_end);
 }
