@@ -53,7 +53,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full kernels-table bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full kernels-table faults bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -106,7 +106,7 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: $(PROGRAM) $(TEST_PROGS) tangle-check $(RUNS)
+check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
 
 # make check-kernels: what a user's other machine would meet. The test
@@ -137,6 +137,16 @@ kernels-table: $(TEST_PROGS)
 	  mv paper/bench-kernels.tex.partial paper/bench-kernels.tex
 check-kernels-full:
 	@$(MAKE) --no-print-directory check-kernels KERNEL_REFINES="1 4 8"
+# Fault injection (tests/faults.sh): an LD_PRELOAD shim that makes the k-th
+# allocation or write of a run fail, built without the sanitizers, so that
+# one shim serves both builds. make check runs the solve's legs; make faults
+# every leg (a few minutes), make SAN=1 faults with LeakSanitizer on every run.
+FAULT_SHIM := build/faults/inject.so
+$(FAULT_SHIM): tests/faults/inject.c
+	@mkdir -p $(@D)
+	$(CC) -O2 -g -std=gnu11 -Wall -Wextra -fPIC -shared -o $@ $< -ldl
+faults: $(PROGRAM) $(FAULT_SHIM)
+	@BIN=$(PROGRAM) FAULTS=all sh tests/faults.sh
 
 # make bench: the state-solver table, then the performance tables (issue 5;
 # BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve

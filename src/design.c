@@ -417,7 +417,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
     return status_set(st, STATUS_INPUT, "design: multipliers made for N = %d "
                       "passed with a design set of N = %d", mult->N, B->N);
   Work *w = work_new(B, st);
-  if (!w) return STATUS_SYSTEM;
+  if (!w) return STATUS_MEMORY;
   memcpy(w->Y, Y, w->n * sizeof *Y);
   if (!(rc = find_multiplier(w, st))) {
     memcpy(X, w->X, w->n * sizeof *X);

@@ -56,6 +56,16 @@ static void warn_large(const Run *r)
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
 #line 282 "paper/main.nw"
+/* the staging folder of the command's files, signals caught while it is there */
+static int begin(Run *r, Output *o, Status *st)
+{
+  interrupt_catch(1);
+  int rc = output_begin(o, r->dir, st);
+  if (rc) interrupt_catch(0);
+  else o->plot_files = r->a->plot_files;
+  return rc;
+}
+
 /* after rc: effective.scene, the commit, then the stiffness matrix if
    asked (after: its file may lie in the folder the commit replaces) */
 static int finish(Run *r, Output *o, int rc, Status *st)
@@ -67,17 +77,18 @@ static int finish(Run *r, Output *o, int rc, Status *st)
     rc = wrc ? wrc : crc;
   }
   if (!rc) warn_large(r);
-  if ((rc = output_end(o, rc, st)) || !r->a->matrix_market) return rc;
+  rc = output_end(o, rc, st);
+  interrupt_catch(0);
+  if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 299 "paper/main.nw"
+#line 311 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
   Model *md = r->md;
   int rc = model_solve(md, r->s.alpha0, st);
-  if (rc || (rc = output_begin(&o, r->dir, st))) return rc;
-  o.plot_files = r->a->plot_files;
+  if (rc || (rc = begin(r, &o, st))) return rc;
   if ((rc = finish(r, &o, output_solve(&o, &r->run, md, r->s.alpha0, st), st)))
     return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
@@ -86,7 +97,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 323 "paper/main.nw"
+#line 334 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -97,7 +108,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 343 "paper/main.nw"
+#line 354 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -106,7 +117,7 @@ static int command_gradcheck(Run *r, Status *st)
   double last = model_clock();
   int rc = gc ? grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &last, st)
               : (int) st->code;
-  if (!rc && !(rc = output_begin(&o, r->dir, st)))
+  if (!rc && !(rc = begin(r, &o, st)))
     rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
   if (!rc)
     printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
@@ -114,7 +125,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 414 "paper/main.nw"
+#line 455 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -124,7 +135,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 430 "paper/main.nw"
+#line 471 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -137,7 +148,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 449 "paper/main.nw"
+#line 490 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -151,9 +162,7 @@ static int command_optimize(Run *r, Status *st)
   if (grad_available(&r->s.problem, r->s.path, "optimize", st)) rc = st->code;
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
-  else if (!(rc = output_begin(&o, r->dir, st))) {
-    interrupt_catch(1);
-    o.plot_files = r->a->plot_files;
+  else if (!(rc = begin(r, &o, st))) {
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved, &start, st))
@@ -164,7 +173,6 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
-    interrupt_catch(0);
     rc = finish(r, &o, rc, st);
   }
   if (!rc)
@@ -186,7 +194,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 508 "paper/main.nw"
+#line 546 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -200,7 +208,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 531 "paper/main.nw"
+#line 569 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

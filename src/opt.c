@@ -357,21 +357,23 @@ static int slsqp(Evaluator *ev, double *X)
     memcpy(q.metric.X0, X, n * sizeof *X);
     if ((rc = evaluate(ev, X)) || (rc = metric_setup(ev, &q.metric))) break;
     if (!(q.opt = nlopt_create(NLOPT_LD_SLSQP, n))) {
-      rc = status_set(ev->st, STATUS_SYSTEM, "optimiser: NLopt failed");
+      rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
       break;
     }
     
 #line 829 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
-nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
-nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
-nlopt_set_min_objective(q.opt, slsqp_objective, &q);
-nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
-nlopt_result r = nlopt_optimize(q.opt, y, &f);
+nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
+if (r > 0) r = nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
+if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
+if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
+if (r > 0) r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 845 "paper/opt.nw"
-more = !(rc = ev->failed) && !ev->rep->stop_reason[0]
+#line 846 "paper/opt.nw"
+if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
+  rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
+more = !rc && !ev->rep->stop_reason[0]
        && r != NLOPT_MAXEVAL_REACHED && q.fresh > 0;
 if (!rc && !more && !ev->rep->stop_reason[0])
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
@@ -384,7 +386,7 @@ q.fresh = q.stalled = 0;
   free(work);
   return rc;
 }
-#line 882 "paper/opt.nw"
+#line 885 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -396,7 +398,7 @@ typedef struct {
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
 static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
-#line 901 "paper/opt.nw"
+#line 904 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -421,7 +423,7 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   return STATUS_OK;
 }
-#line 986 "paper/opt.nw"
+#line 989 "paper/opt.nw"
 /* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
    with the curvature rho r the model was solved with */
 static double model_rounding(const Newton_run *nr)
@@ -440,7 +442,7 @@ static double model_rounding(const Newton_run *nr)
   }
   return DBL_EPSILON * sum;
 }
-#line 931 "paper/opt.nw"
+#line 934 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -466,7 +468,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 1010 "paper/opt.nw"
+#line 1013 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -485,7 +487,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 1053 "paper/opt.nw"
+#line 1056 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -493,7 +495,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 1028 "paper/opt.nw"
+#line 1031 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -513,7 +515,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 1069 "paper/opt.nw"
+#line 1072 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -526,11 +528,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 1093 "paper/opt.nw"
+#line 1096 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1081 "paper/opt.nw"
+#line 1084 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -539,7 +541,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1109 "paper/opt.nw"
+#line 1112 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;

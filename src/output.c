@@ -14,6 +14,13 @@
 #include "output.h"
 
 #line 280 "paper/output.nw"
+/* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
+static int output_errno(Status *st, int e, const char *path, const char *what)
+{
+  return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
+                    path, what, strerror(e));
+}
+#line 293 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -23,13 +30,12 @@ static int output_mkdirs(const char *path, Status *st)
       char c = *s;
       *s = '\0';
       if (mkdir(p, 0777) && errno != EEXIST)
-        return status_set(st, STATUS_SYSTEM, "%s: cannot create: %s", p,
-                          strerror(errno));
+        return output_errno(st, errno, p, "cannot create");
       if (!(*s = c)) return STATUS_OK;
     }
 }
 
-#line 311 "paper/output.nw"
+#line 323 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -41,7 +47,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 326 "paper/output.nw"
+#line 338 "paper/output.nw"
 int output_check(const char *dir, Status *st)
 {
   struct stat sb;
@@ -60,7 +66,7 @@ int output_check(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 348 "paper/output.nw"
+#line 360 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -81,7 +87,7 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 299 "paper/output.nw"
+#line 311 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
@@ -91,7 +97,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 372 "paper/output.nw"
+#line 384 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -101,7 +107,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 385 "paper/output.nw"
+#line 398 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -116,9 +122,11 @@ FILE *output_open(Output *o, const char *name, Status *st)
   if (output_mkdirs(path, st)) return NULL;
   *slash = '/';
   FILE *f = fopen(path, "w");
-  if (!f) status_set(st, STATUS_SYSTEM, "%s: cannot write: %s", path,
-                     strerror(errno));
-  else o->nfiles++;
+  if (!f) {
+    int e = errno;
+    snprintf(path, sizeof path, "%s/%s", o->dir, name);
+    output_errno(st, e, path, "cannot write");
+  } else o->nfiles++;
   return f;
 }
 
@@ -135,7 +143,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 423 "paper/output.nw"
+#line 438 "paper/output.nw"
 static int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -153,48 +161,114 @@ static FILE *output_open_in_folder(Output *o, const char *folder,
   char path[1300];
   snprintf(path, sizeof path, "%s/%s/%s", o->stage, folder, name);
   FILE *f = fopen(path, "w");
-  if (!f) status_set(st, STATUS_SYSTEM, "%s: cannot write: %s", path,
-                     strerror(errno));
+  if (!f) {
+    int e = errno;
+    snprintf(path, sizeof path, "%s/%s/%s", o->dir, folder, name);
+    output_errno(st, e, path, "cannot write");
+  }
   return f;
 }
-#line 450 "paper/output.nw"
+#line 510 "paper/output.nw"
+typedef struct {
+  char **path;              /* relative to the root; "" is the root */
+  int n, size;
+} Output_tree;
+
+/* buf = a/b, or a if b is "": -1 with ENAMETOOLONG if it does not fit */
+static int output_join(char *buf, size_t size, const char *a, const char *b)
+{
+  if ((size_t) snprintf(buf, size, "%s%s%s", a, *b ? "/" : "", b) < size) return 0;
+  errno = ENAMETOOLONG;
+  return -1;
+}
+
+static int output_tree_add(Output_tree *t, const char *rel)
+{
+  if (t->n == t->size) {
+    int size = 2 * t->size + 16;
+    char **p = realloc(t->path, size * sizeof *p);
+    if (!p) return -1;
+    t->path = p, t->size = size;
+  }
+  if (!(t->path[t->n] = malloc(strlen(rel) + 1))) return -1;
+  strcpy(t->path[t->n++], rel);
+  return 0;
+}
+
+/* t += the tree at root/rel (rel "" for root); -1 with errno on failure */
+static int output_tree_list(Output_tree *t, const char *root, const char *rel)
+{
+  char path[1400], sub[1400];
+  struct stat sb;
+  DIR *d = output_join(path, sizeof path, root, rel) ? NULL : opendir(path);
+  struct dirent *e;
+  int rc = d ? 0 : -1;
+  while (!rc) {
+    errno = 0;
+    if (!(e = readdir(d))) { rc = errno ? -1 : 0; break; }
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    if (output_join(sub, sizeof sub, rel, e->d_name)
+        || output_join(path, sizeof path, root, sub) || lstat(path, &sb)) rc = -1;
+    else if (S_ISDIR(sb.st_mode)) rc = output_tree_list(t, root, sub);
+    else rc = output_tree_add(t, sub);
+  }
+  if (d) { int saved = errno; closedir(d); errno = saved; }
+  return rc ? rc : output_tree_add(t, rel);
+}
+
+/* remove the listed tree, now at root: -1 with errno on failure */
+static int output_tree_remove(const Output_tree *t, const char *root)
+{
+  char path[1400];
+  for (int k = 0; k < t->n; k++)
+    if (output_join(path, sizeof path, root, t->path[k]) || remove(path)) return -1;
+  return 0;
+}
+
+static void output_tree_free(Output_tree *t)
+{
+  for (int k = 0; k < t->n; k++) free(t->path[k]);
+  free(t->path);
+}
+
+#line 479 "paper/output.nw"
 int output_commit(Output *o, Status *st)
 {
   char old[1200];
   struct stat sb;
-  int had = !stat(o->dir, &sb);
+  Output_tree t = { NULL, 0, 0 };
+  int had = !stat(o->dir, &sb), rc = STATUS_OK;
   snprintf(old, sizeof old, "%s.old-%ld", o->dir, (long) getpid());
-  if (had && rename(o->dir, old)) {
-    status_set(st, STATUS_SYSTEM, "%s: cannot move the old run aside: %s",
-               o->dir, strerror(errno));
-    output_abort(o);
-    return STATUS_SYSTEM;
-  }
-  if (rename(o->stage, o->dir)) {
-    status_set(st, STATUS_SYSTEM, "%s: cannot move into place: %s", o->dir,
-               strerror(errno));
+  if (had && output_tree_list(&t, o->dir, ""))
+    rc = output_errno(st, errno, o->dir, "cannot list the old run's files");
+  else if (had && rename(o->dir, old))
+    rc = output_errno(st, errno, o->dir, "cannot move the old run aside");
+  else if (rename(o->stage, o->dir)) {
+    rc = output_errno(st, errno, o->dir, "cannot move into place");
     if (had) rename(old, o->dir);
-    output_abort(o);
-    return STATUS_SYSTEM;
-  }
-  if (had) output_remove_tree(old);
-  return STATUS_OK;
+  } else if (had && output_tree_remove(&t, old))
+    rc = status_set(st, STATUS_SYSTEM, "%s: the run is in place, but the old "
+                    "run's files in %s cannot be removed: %s", o->dir, old,
+                    strerror(errno));
+  output_tree_free(&t);
+  if (rc && stat(o->stage, &sb) == 0) output_abort(o);
+  return rc;
 }
 
 void output_abort(Output *o) { output_remove_tree(o->stage); }
-#line 478 "paper/output.nw"
+#line 575 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 491 "paper/output.nw"
+#line 588 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 500 "paper/output.nw"
+#line 597 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -202,7 +276,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 510 "paper/output.nw"
+#line 607 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -213,7 +287,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 523 "paper/output.nw"
+#line 620 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -229,19 +303,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 547 "paper/output.nw"
+#line 644 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 538 "paper/output.nw"
+#line 635 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 556 "paper/output.nw"
+#line 653 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -255,7 +329,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 572 "paper/output.nw"
+#line 669 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -273,7 +347,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 610 "paper/output.nw"
+#line 707 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -297,7 +371,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 669 "paper/output.nw"
+#line 766 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -339,7 +413,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 729 "paper/output.nw"
+#line 826 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -363,7 +437,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 759 "paper/output.nw"
+#line 856 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -388,7 +462,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 638 "paper/output.nw"
+#line 735 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -411,7 +485,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 788 "paper/output.nw"
+#line 885 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -438,7 +512,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 819 "paper/output.nw"
+#line 916 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -450,7 +524,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 835 "paper/output.nw"
+#line 932 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -469,7 +543,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 856 "paper/output.nw"
+#line 953 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -479,7 +553,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 869 "paper/output.nw"
+#line 966 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -492,7 +566,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 913 "paper/output.nw"
+#line 1010 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -505,7 +579,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 889 "paper/output.nw"
+#line 986 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -525,22 +599,30 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   output_friction(f, md);
   return output_close(o, f, st);
 }
-#line 929 "paper/output.nw"
+#line 1027 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
   snprintf(tmp, sizeof tmp, "%s.partial", path);
   FILE *f = fopen(tmp, "w");
-  if (!f) return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
+  if (!f) return output_errno(st, errno, path, "cannot write");
   int ok = cholmod_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
+  int memory = !ok && md->cm->status == CHOLMOD_OUT_OF_MEMORY;
+  ok = !ferror(f) && ok;    /* CHOLMOD does not check every fprintf */
   ok = !fclose(f) && ok;
-  if (!ok || rename(tmp, path)) {
+  if (ok && rename(tmp, path)) {
+    int rc = output_errno(st, errno, path, "cannot move into place");
     remove(tmp);
-    return status_set(st, STATUS_SYSTEM, "%s: cannot write", path);
+    return rc;
+  }
+  if (!ok) {
+    remove(tmp);
+    return memory ? status_set(st, STATUS_MEMORY, "%s: out of memory", path)
+                  : status_set(st, STATUS_SYSTEM, "%s: write failed", path);
   }
   return STATUS_OK;
 }
-#line 952 "paper/output.nw"
+#line 1058 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -567,7 +649,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1157 "paper/output.nw"
+#line 1263 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -578,7 +660,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1047 "paper/output.nw"
+#line 1153 "paper/output.nw"
 #define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
 
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -600,7 +682,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 988 "paper/output.nw"
+#line 1094 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -645,7 +727,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1112 "paper/output.nw"
+#line 1218 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -658,7 +740,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1076 "paper/output.nw"
+#line 1182 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -690,7 +772,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1135 "paper/output.nw"
+#line 1241 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -709,7 +791,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1173 "paper/output.nw"
+#line 1279 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

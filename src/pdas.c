@@ -7,9 +7,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 325 "paper/pdas.nw"
+#line 329 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 313 "paper/pdas.nw"
+#line 317 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
@@ -18,10 +18,10 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 333 "paper/pdas.nw"
+#line 337 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 747 "paper/pdas.nw"
+#line 751 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -43,18 +43,22 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
   int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
   int postorder = cm->postorder, ok = last && perm;
-  for (int c = 0; ok && c < w->nk; c++) last[w->ik[c]] = 1;
+  if (!ok) {
+    free(last), free(perm);
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)", w->n);
+  }
+  for (int c = 0; c < w->nk; c++) last[w->ik[c]] = 1;
   cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
   ok = ok && cholmod_camd(&pd->K, NULL, 0, last, perm, cm)
           && (pd->Ls = cholmod_analyze_p(&pd->K, perm, NULL, 0, cm));
   cm->nmethods = nmethods, cm->method[0].ordering = ordering;
   cm->postorder = postorder;
   free(last), free(perm);
+  if (!ok) return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 277 "paper/pdas.nw"
-pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
-pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm);
-if (!ok || !pd->rhs || !pd->Lb)
+#line 282 "paper/pdas.nw"
+if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
+    || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
 const int *P = pd->Ls->Perm;
 for (int t = 0; t < w->nk; t++)
@@ -62,7 +66,7 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 273 "paper/pdas.nw"
+#line 278 "paper/pdas.nw"
 }
 
 #line 228 "paper/pdas.nw"
@@ -89,7 +93,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 290 "paper/pdas.nw"
+#line 294 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -118,7 +122,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 430 "paper/pdas.nw"
+#line 434 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -132,7 +136,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 450 "paper/pdas.nw"
+#line 454 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -143,7 +147,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 470 "paper/pdas.nw"
+#line 474 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -152,7 +156,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 460 "paper/pdas.nw"
+#line 464 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -161,7 +165,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 483 "paper/pdas.nw"
+#line 487 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -178,7 +182,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 503 "paper/pdas.nw"
+#line 507 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -199,7 +203,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 406 "paper/pdas.nw"
+#line 410 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -222,7 +226,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 542 "paper/pdas.nw"
+#line 546 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -230,7 +234,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 565 "paper/pdas.nw"
+#line 569 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -242,7 +246,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 549 "paper/pdas.nw"
+#line 553 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -253,7 +257,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 595 "paper/pdas.nw"
+#line 599 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -265,13 +269,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 609 "paper/pdas.nw"
+#line 613 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 621 "paper/pdas.nw"
+#line 625 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -285,13 +289,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 614 "paper/pdas.nw"
+#line 618 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 643 "paper/pdas.nw"
+#line 647 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -333,7 +337,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 704 "paper/pdas.nw"
+#line 708 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -352,7 +356,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 729 "paper/pdas.nw"
+#line 733 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -368,17 +372,17 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 337 "paper/pdas.nw"
+#line 341 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 357 "paper/pdas.nw"
+#line 361 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 343 "paper/pdas.nw"
+#line 347 "paper/pdas.nw"
   }
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
@@ -389,7 +393,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 373 "paper/pdas.nw"
+#line 377 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -398,10 +402,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 353 "paper/pdas.nw"
+#line 357 "paper/pdas.nw"
 }
 
-#line 767 "paper/pdas.nw"
+#line 771 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -418,7 +422,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 786 "paper/pdas.nw"
+#line 790 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -426,7 +430,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 805 "paper/pdas.nw"
+#line 809 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -438,7 +442,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 823 "paper/pdas.nw"
+#line 827 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -461,11 +465,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 816 "paper/pdas.nw"
+#line 820 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 856 "paper/pdas.nw"
+#line 860 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

@@ -520,33 +520,47 @@ if ((old = find(L, sec, key))) {
 #line 1027 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1056 "paper/scene.nw"
+#line 1085 "paper/scene.nw"
+/* the failure just told, as STATUS_MEMORY if errno e says memory */
+static int for_memory(Loader *L, int e)
+{
+  if (e != ENOMEM) return L->failed;
+  if (L->st) L->st->code = STATUS_MEMORY;
+  return L->failed = STATUS_MEMORY;
+}
+
+#line 1058 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
   int rc;
   errno = 0;
-  if (!(L->fp = fopen(L->path, "r")))
-    return fail(L, "%s: cannot read: %s", L->path, strerror(errno));
+  if (!(L->fp = fopen(L->path, "r"))) {
+    int e = errno;
+    fail(L, "%s: cannot read: %s", L->path, strerror(e));
+    return for_memory(L, e);
+  }
   rc = ini_parse_stream(read_line, L, on_key, L);
-  if (!L->failed && ferror(L->fp))
-    fail(L, "%s: cannot read: %s", L->path,
-         errno ? strerror(errno) : "read error");
+  if (!L->failed && ferror(L->fp)) {
+    int e = errno;
+    fail(L, "%s: cannot read: %s", L->path, e ? strerror(e) : "read error");
+    for_memory(L, e);
+  }
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1077 "paper/scene.nw"
+#line 1096 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1070 "paper/scene.nw"
+#line 1077 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1099 "paper/scene.nw"
+#line 1118 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -557,7 +571,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1116 "paper/scene.nw"
+#line 1135 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -571,7 +585,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1135 "paper/scene.nw"
+#line 1154 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -584,7 +598,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1160 "paper/scene.nw"
+#line 1179 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -596,7 +610,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1147 "paper/scene.nw"
+#line 1166 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -606,7 +620,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1189 "paper/scene.nw"
+#line 1208 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -646,7 +660,7 @@ static const char *to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1232 "paper/scene.nw"
+#line 1251 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -659,7 +673,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1248 "paper/scene.nw"
+#line 1267 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -670,7 +684,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1268 "paper/scene.nw"
+#line 1287 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -685,7 +699,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1285 "paper/scene.nw"
+#line 1304 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -704,7 +718,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1307 "paper/scene.nw"
+#line 1326 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -714,7 +728,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1319 "paper/scene.nw"
+#line 1338 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -724,7 +738,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1331 "paper/scene.nw"
+#line 1350 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -735,7 +749,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1347 "paper/scene.nw"
+#line 1366 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -749,7 +763,7 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1371 "paper/scene.nw"
+#line 1390 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -771,7 +785,7 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                "1e30] times E, where every product the solvers form is "
                "finite", what, fabs(x) * times / s->problem.E);
 }
-#line 1401 "paper/scene.nw"
+#line 1420 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -791,7 +805,7 @@ static int read_geometry(Loader *L, Scene *s)
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1430 "paper/scene.nw"
+#line 1449 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -806,7 +820,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1456 "paper/scene.nw"
+#line 1475 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -819,7 +833,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1490 "paper/scene.nw"
+#line 1509 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -827,7 +841,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1468 "paper/scene.nw"
+#line 1487 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -838,7 +852,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
   return 0;
 }
-#line 1521 "paper/scene.nw"
+#line 1540 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -849,7 +863,7 @@ static int check_admissible(Loader *L, Scene *s)
              "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
              "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
 }
-#line 1541 "paper/scene.nw"
+#line 1560 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -862,7 +876,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1557 "paper/scene.nw"
+#line 1576 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -872,14 +886,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1569 "paper/scene.nw"
+#line 1588 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1581 "paper/scene.nw"
+#line 1600 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -890,7 +904,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1596 "paper/scene.nw"
+#line 1615 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -901,7 +915,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1609 "paper/scene.nw"
+#line 1628 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -912,7 +926,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1626 "paper/scene.nw"
+#line 1645 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -940,7 +954,7 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1656 "paper/scene.nw"
+#line 1675 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -963,7 +977,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 1766 "paper/scene.nw"
+#line 1791 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -976,7 +990,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 1723 "paper/scene.nw"
+#line 1748 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Loader *L, Scene *s, const char *path,
@@ -994,14 +1008,14 @@ static int shape_from_rows(Loader *L, Scene *s, const char *path,
                    "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                    r->x[j - 1]);
   
-#line 1755 "paper/scene.nw"
+#line 1780 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 1740 "paper/scene.nw"
+#line 1765 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -1014,7 +1028,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 1685 "paper/scene.nw"
+#line 1704 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -1024,22 +1038,28 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   ssize_t len;
   Rows r = {0};
   int rc = 0, lineno = 0;
-  if (!(fp = fopen(path, "r")))
-    return blame(L, "cannot read %s: %s", path, strerror(errno));
+  if (!(fp = fopen(path, "r"))) {
+    int e = errno;
+    blame(L, "cannot read %s: %s", path, strerror(e));
+    return for_memory(L, e);
+  }
   while (!rc && (len = getline(&line, &cap, fp)) != -1)
     rc = strlen(line) < (size_t)len
       ? blame(L, "%s line %d: a NUL byte: a shape file is text", path,
               ++lineno)
       : read_row(L, path, ++lineno, line, &r);
-  if (!rc && ferror(fp))
-    rc = blame(L, "cannot read %s: %s", path, strerror(errno));
+  if (!rc && ferror(fp)) {
+    int e = errno;
+    blame(L, "cannot read %s: %s", path, strerror(e));
+    rc = for_memory(L, e);
+  }
   free(line);
   fclose(fp);
   if (!rc) rc = shape_from_rows(L, s, path, &r);
   rows_free(&r);
   return rc;
 }
-#line 1784 "paper/scene.nw"
+#line 1809 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -1053,7 +1073,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1801 "paper/scene.nw"
+#line 1826 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -1066,7 +1086,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  s->problem.C0prime);
   return 0;
 }
-#line 1819 "paper/scene.nw"
+#line 1844 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -1084,7 +1104,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1847 "paper/scene.nw"
+#line 1872 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -1104,7 +1124,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1876 "paper/scene.nw"
+#line 1901 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -1112,7 +1132,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   Side *d = &s->problem.side[id];
   int rc;
   
-#line 1897 "paper/scene.nw"
+#line 1922 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -1127,7 +1147,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
                lo, hi);
-#line 1883 "paper/scene.nw"
+#line 1908 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = real(L, sec, "P2", &d->P[1]))
@@ -1138,7 +1158,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1915 "paper/scene.nw"
+#line 1940 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -1150,7 +1170,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1936 "paper/scene.nw"
+#line 1961 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -1164,7 +1184,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1952 "paper/scene.nw"
+#line 1977 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1173,7 +1193,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 1991 "paper/scene.nw"
+#line 2016 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1195,7 +1215,7 @@ static int read_contact(Loader *L, Scene *s)
     return blame(L, "must be <= 1e30: it multiplies a contact force");
   return 0;
 }
-#line 1974 "paper/scene.nw"
+#line 1999 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1209,7 +1229,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 2021 "paper/scene.nw"
+#line 2046 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1231,7 +1251,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2054 "paper/scene.nw"
+#line 2079 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1256,7 +1276,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2088 "paper/scene.nw"
+#line 2113 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1269,7 +1289,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2105 "paper/scene.nw"
+#line 2130 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1289,14 +1309,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2128 "paper/scene.nw"
+#line 2153 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2145 "paper/scene.nw"
+#line 2170 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1325,7 +1345,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2177 "paper/scene.nw"
+#line 2202 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1349,7 +1369,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2205 "paper/scene.nw"
+#line 2230 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1362,7 +1382,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2223 "paper/scene.nw"
+#line 2248 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1386,18 +1406,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2252 "paper/scene.nw"
+#line 2277 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2246 "paper/scene.nw"
+#line 2271 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2269 "paper/scene.nw"
+#line 2294 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1413,7 +1433,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2292 "paper/scene.nw"
+#line 2317 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];
