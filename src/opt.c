@@ -57,7 +57,7 @@ typedef struct {
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 674 "paper/opt.nw"
+#line 675 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -250,13 +250,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 690 "paper/opt.nw"
+#line 691 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 699 "paper/opt.nw"
+#line 700 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
@@ -270,19 +270,19 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 721 "paper/opt.nw"
+#line 722 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 712 "paper/opt.nw"
+#line 713 "paper/opt.nw"
   if (ev->E <= q->best + q->best_noise + ev->noise
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->E / q->metric.scale;
 }
-#line 730 "paper/opt.nw"
+#line 731 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -303,7 +303,7 @@ static void slsqp_accept(Slsqp *q)
   else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
   q->k++;
 }
-#line 756 "paper/opt.nw"
+#line 757 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -318,7 +318,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 776 "paper/opt.nw"
+#line 777 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -340,11 +340,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 770 "paper/opt.nw"
+#line 771 "paper/opt.nw"
   ev->rep->metric_seconds += model_clock() - start;
   return rc;
 }
-#line 806 "paper/opt.nw"
+#line 807 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -361,7 +361,7 @@ static int slsqp(Evaluator *ev, double *X)
       break;
     }
     
-#line 829 "paper/opt.nw"
+#line 830 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -370,7 +370,7 @@ if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
 if (r > 0) r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 846 "paper/opt.nw"
+#line 847 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 more = !rc && !ev->rep->stop_reason[0]
@@ -381,12 +381,12 @@ if (!rc && !more && !ev->rep->stop_reason[0])
 if (!rc) rc = evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 822 "paper/opt.nw"
+#line 823 "paper/opt.nw"
   }
   free(work);
   return rc;
 }
-#line 885 "paper/opt.nw"
+#line 886 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -398,7 +398,7 @@ typedef struct {
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
 } Newton_run;
 static const double NEWTON_RHO_MAX = 1e12; /* beyond it the model steps no further */
-#line 904 "paper/opt.nw"
+#line 905 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -423,7 +423,7 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   return STATUS_OK;
 }
-#line 989 "paper/opt.nw"
+#line 990 "paper/opt.nw"
 /* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
    with the curvature rho r the model was solved with */
 static double model_rounding(const Newton_run *nr)
@@ -442,7 +442,7 @@ static double model_rounding(const Newton_run *nr)
   }
   return DBL_EPSILON * sum;
 }
-#line 934 "paper/opt.nw"
+#line 935 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -468,7 +468,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 1013 "paper/opt.nw"
+#line 1014 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -487,7 +487,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 1056 "paper/opt.nw"
+#line 1057 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -495,7 +495,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 1031 "paper/opt.nw"
+#line 1032 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -515,7 +515,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 1072 "paper/opt.nw"
+#line 1073 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -528,11 +528,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 1096 "paper/opt.nw"
+#line 1097 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1084 "paper/opt.nw"
+#line 1085 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -541,7 +541,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1112 "paper/opt.nw"
+#line 1113 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
