@@ -238,7 +238,7 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex \
-                      paper/bench-output.tex | deps
+                      paper/bench-output.tex paper/bench-kernels.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \
