@@ -43,20 +43,6 @@ fi
 case $SHIM in /*) ;; *) SHIM=$(pwd)/$SHIM ;; esac
 start=$(date +%s)
 
-# same_run A B: the folders hold the same files with the same contents,
-# the times of summary.dat and history.dat aside
-same_run() {
-  ( cd "$1" && find . -type f | sort ) > $TMP/same.a
-  ( cd "$2" && find . -type f | sort ) > $TMP/same.b
-  cmp -s $TMP/same.a $TMP/same.b || return 1
-  while read -r f; do
-    case $f in
-      */summary.dat) grep -v seconds "$1/$f" > $TMP/same.c; grep -v seconds "$2/$f" > $TMP/same.d ;;
-      */history.dat) cut -d' ' -f1-4 "$1/$f" > $TMP/same.c; cut -d' ' -f1-4 "$2/$f" > $TMP/same.d ;;
-      *) cmp -s "$1/$f" "$2/$f" || return 1; continue ;;
-    esac
-    cmp -s $TMP/same.c $TMP/same.d || return 1
-  done < $TMP/same.a; }
 
 # shim KIND K CMD...: CMD with the shim, the K-th operation of KIND failing
 # (K = 0: none), its report in $TMP/report

@@ -32,19 +32,6 @@ env --default-signal=INT true 2>/dev/null && dflt="env --default-signal=INT"
 [ -n "$dflt" ] || echo "# env --default-signal is missing: SIGINT stays ignored outside the program's window"
 
 now() { date +%s.%N; }
-# same_files A B: the same files with the same contents, times aside
-same_files() {
-  ( cd "$1" && find . -type f | sort ) > $TMP/list.a
-  ( cd "$2" && find . -type f | sort ) > $TMP/list.b
-  cmp -s $TMP/list.a $TMP/list.b || return 1
-  while read -r f; do
-    case $f in
-      */summary.dat) grep -v seconds "$1/$f" > $TMP/f.a; grep -v seconds "$2/$f" > $TMP/f.b ;;
-      */history.dat) cut -d' ' -f1-4 "$1/$f" > $TMP/f.a; cut -d' ' -f1-4 "$2/$f" > $TMP/f.b ;;
-      *) cmp -s "$1/$f" "$2/$f" || return 1; continue ;;
-    esac
-    cmp -s $TMP/f.a $TMP/f.b || return 1
-  done < $TMP/list.a; }
 # stopped D REF: D is a complete optimisation stopped at an accepted
 # iterate: the start as REF's, every file of REF's list but the iterates,
 # a row of history.dat per iteration from 0, as many data sets in
@@ -52,7 +39,7 @@ same_files() {
 # and the final design the last block of iterates.dat
 stopped() {
   [ -s $1/summary.dat ] && [ "$(value stop_reason $1)" = interrupted ] || return 1
-  same_files $2/initial $1/initial || return 1
+  same_run $2/initial $1/initial || return 1
   for f in $( cd $2 && find . -type f ! -path './iterates/*' ); do [ -s $1/$f ] || return 1; done
   rows=$(grep -vc '^#' $1/history.dat); sets=$(grep -c '<DataSet' $1/iterates.pvd)
   vtus=$(ls $1/iterates | wc -l)
@@ -93,10 +80,10 @@ leg() { name=$1; shift
     sleep $t; kill -INT $pid 2>/dev/null; wait $pid; rc=$?
     lines=$(wc -l < $d/err)
     left=$(ls -d $out.* 2>/dev/null | wc -l)
-    if [ $rc -eq 0 ] && [ $lines -eq 0 ] && same_files $d/ref $out; then how=finished
+    if [ $rc -eq 0 ] && [ $lines -eq 0 ] && same_run $d/ref $out; then how=finished
     elif [ $rc -eq 130 ] && [ $lines -eq 1 ] && grep -q 'interrupted' $d/err && stopped $out $d/ref; then how=stopped
     elif [ $rc -eq 130 ] && [ $lines -eq 0 ] && untouched "$prev" $out; then how=before
-    elif [ $rc -eq 130 ] && [ $lines -eq 0 ] && same_files $d/ref $out; then how=after
+    elif [ $rc -eq 130 ] && [ $lines -eq 0 ] && same_run $d/ref $out; then how=after
     else how=; fi
     if [ -z "$how" ] || [ $left -ne 0 ]; then
       echo "run $i at $t s from the $from: exit $rc, $lines lines ($(head -c 150 $d/err | tr '\n' ' ')), $left beside the folder, folder $(ls $out 2>/dev/null | wc -l) entries" >> $d/bad

@@ -195,3 +195,18 @@ kkt() { awk -v C0=$2 -v d=$3 -v h=$4 "$awk_lib"'
 kkt_point() { _lr=$(kkt "$2/multipliers.dat" $3 $4 $5); _lrc=$?
   check "$1: the final design is a KKT point (signs, complementarity; stationarity $(show %.1e "$_lr") <= 1e-4)" \
     holds 'rc == 0 && r <= 1e-4' rc=$_lrc r="$_lr"; }
+
+# same_run A B: the output folders A and B hold the same files with the same contents,
+# the times of summary.dat and history.dat aside
+same_run() {
+  ( cd "$1" && find . -type f | sort ) > $TMP/same.a
+  ( cd "$2" && find . -type f | sort ) > $TMP/same.b
+  cmp -s $TMP/same.a $TMP/same.b || return 1
+  while read -r f; do
+    case $f in
+      */summary.dat) grep -v seconds "$1/$f" > $TMP/same.c; grep -v seconds "$2/$f" > $TMP/same.d ;;
+      */history.dat) cut -d' ' -f1-4 "$1/$f" > $TMP/same.c; cut -d' ' -f1-4 "$2/$f" > $TMP/same.d ;;
+      *) cmp -s "$1/$f" "$2/$f" || return 1; continue ;;
+    esac
+    cmp -s $TMP/same.c $TMP/same.d || return 1
+  done < $TMP/same.a; }
