@@ -49,5 +49,5 @@ for sc in $SCENES; do
     done
   done
 done
-echo "# kernels.sh: $(($(date +%s) - start)) s for $(echo $SCENES | wc -w) scenes x refine $REFINES x $METHODS x $KERNELS"
+echo "# kernels/optimize.sh: $(($(date +%s) - start)) s for $(echo $SCENES | wc -w) scenes x refine $REFINES x $METHODS x $KERNELS"
 finish
