@@ -28,37 +28,20 @@
 #include <unistd.h>
 #include "scene.h"
 #include "contract.h"
+#include "folder.h"
 
 enum { MAX_OVERRIDES = 16 };
 
-static char dir[256];          /* the folder of the scene file */
-static char path[300];         /* the scene file written for each input */
-static char shape[300];        /* a shape file of 17 rows (N = 16) */
 static int binary;             /* the scene part holds a NUL byte */
-
-/* remove the files and the folder made by init */
-static void cleanup(void)
-{
-  unlink(path);
-  unlink(shape);
-  rmdir(dir);
-}
 
 /* make the folder and the shape file, once */
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
-  const char *base = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
   FILE *fp;
   int i;
   (void)argc;
   (void)argv;
-  snprintf(dir, sizeof dir, "%s/contactopt-fuzz.XXXXXX", base);
-  if (!mkdtemp(dir)) {
-    perror("fuzz_scene: mkdtemp");
-    exit(1);
-  }
-  snprintf(path, sizeof path, "%s/fuzz.scene", dir);
-  snprintf(shape, sizeof shape, "%s/shape.dat", dir);
+  make_folder("fuzz", "fuzz.scene");
   if (!(fp = fopen(shape, "w"))) {
     perror("fuzz_scene: shape.dat");
     exit(1);
@@ -66,7 +49,6 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
   fprintf(fp, "# x1 alpha\n");
   for (i = 0; i <= 16; i++) fprintf(fp, "%g %g\n", 0.25 * i, 0.003125 * i);
   fclose(fp);
-  atexit(cleanup);
   return 0;
 }
 

@@ -15,10 +15,8 @@
 #include <unistd.h>
 #include "scene.h"
 #include "contract.h"
+#include "folder.h"
 
-static char dir[256];          /* the folder of the scene and shape files */
-static char path[300];         /* the fixed scene */
-static char shape[300];        /* the shape file written for each input */
 
 static const char scene_text[] =
   "[geometry]\na = 0\nb = 4\ngamma = 1\n"
@@ -29,33 +27,17 @@ static const char scene_text[] =
   "[left]\nbc = clamped\n[right]\nbc = roller\n"
   "[top]\nbc = traction\nfrom = 2\nto = 4\nP2 = -5.75e8\n";
 
-/* remove the files and the folder made by init */
-static void cleanup(void)
-{
-  unlink(path);
-  unlink(shape);
-  rmdir(dir);
-}
-
 /* make the folder and the scene file, once */
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
-  const char *base = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
   FILE *fp;
   (void)argc;
   (void)argv;
-  snprintf(dir, sizeof dir, "%s/contactopt-fuzz-shape.XXXXXX", base);
-  if (!mkdtemp(dir)) {
-    perror("fuzz_shape: mkdtemp");
-    exit(1);
-  }
-  snprintf(path, sizeof path, "%s/shape.scene", dir);
-  snprintf(shape, sizeof shape, "%s/shape.dat", dir);
+  make_folder("fuzz-shape", "shape.scene");
   if (!(fp = fopen(path, "w")) || fputs(scene_text, fp) == EOF || fclose(fp)) {
     perror("fuzz_shape: shape.scene");
     exit(1);
   }
-  atexit(cleanup);
   return 0;
 }
 
