@@ -100,6 +100,9 @@ $(PROGRAM): $(B)/main.o $(OBJ)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 -include $(wildcard $(B)/*.d $(B)/tests/*.d)
 
+# The fault-injection shim (rules below): named before make check needs it.
+FAULT_SHIM := build/faults/inject.so
+
 # Test programs link the library modules directly.
 TEST_PROGS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/*.c))
 $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
@@ -141,7 +144,6 @@ check-kernels-full:
 # allocation or write of a run fail, built without the sanitizers, so that
 # one shim serves both builds. make check runs the solve's legs; make faults
 # every leg (a few minutes), make SAN=1 faults with LeakSanitizer on every run.
-FAULT_SHIM := build/faults/inject.so
 $(FAULT_SHIM): tests/faults/inject.c
 	@mkdir -p $(@D)
 	$(CC) -O2 -g -std=gnu11 -Wall -Wextra -fPIC -shared -o $@ $< -ldl
