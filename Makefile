@@ -9,7 +9,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h), and the program.
-MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args
+MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args threads
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp

@@ -1,4 +1,4 @@
-#line 382 "paper/main.nw"
+#line 384 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"
