@@ -26,6 +26,7 @@ typedef struct {
   char library[PATH_MAX];      /* the file that defines dgemm_ */
   char kernels[32];            /* OpenBLAS's kernel family, or "unknown" */
   int cores, physical;         /* CPUs the process may run on; their cores */
+  double load;                 /* the 15-minute load average at start */
   int asked;                   /* BLAS threads the user asked for (0: none) */
   const char *asked_by;        /* the variable that asked */
   int omp_asked;               /* OMP_NUM_THREADS, 0 if unset */
@@ -36,7 +37,7 @@ typedef struct {
   int found, started;
 } Threads;
 static Threads T;
-#line 173 "paper/threads.nw"
+#line 174 "paper/threads.nw"
 /* s begins with prefix: the rest of s, else NULL */
 static const char *after(const char *s, const char *prefix)
 {
@@ -66,7 +67,7 @@ static void restart_alone(int argc, char **argv, char **envp)
 }
 __attribute__((section(".preinit_array"), used))
 static void (*restart_entry)(int, char **, char **) = restart_alone;
-#line 212 "paper/threads.nw"
+#line 213 "paper/threads.nw"
 /* *fp = the symbol name of the libraries after this executable, or NULL */
 static void find(void *fp, size_t size, void *where, const char *name)
 {
@@ -75,7 +76,7 @@ static void find(void *fp, size_t size, void *where, const char *name)
 }
 #define FIND(fp, where, name) find(&(fp), sizeof (fp), where, name)
 
-#line 241 "paper/threads.nw"
+#line 243 "paper/threads.nw"
 static void put_back_asked(void)
 {
   const char *asked = getenv(ASKED);
@@ -84,7 +85,7 @@ static void put_back_asked(void)
   else unsetenv("OPENBLAS_NUM_THREADS");
   unsetenv(ASKED);
 }
-#line 255 "paper/threads.nw"
+#line 257 "paper/threads.nw"
 static void name_blas(Threads *t)
 {
   void *dgemm;
@@ -101,7 +102,7 @@ static void name_blas(Threads *t)
       && !realpath(info.dli_fname, t->library))
     snprintf(t->library, sizeof t->library, "%s", info.dli_fname);
 }
-#line 277 "paper/threads.nw"
+#line 279 "paper/threads.nw"
 /* the first CPU of cpu's core (its thread siblings), or cpu */
 static int first_sibling(int cpu)
 {
@@ -132,7 +133,14 @@ static void count_cores(Threads *t)
   if (t->physical < 1) t->physical = t->cores;
 }
 
-#line 224 "paper/threads.nw"
+/* the 15-minute load average, 0 if unknown */
+static double load_average(void)
+{
+  double load[3];
+  return getloadavg(load, 3) == 3 ? load[2] : 0;
+}
+
+#line 225 "paper/threads.nw"
 static void threads_find(Threads *t)
 {
   if (t->found) return;
@@ -146,8 +154,9 @@ static void threads_find(Threads *t)
   FIND(t->omp_levels, RTLD_DEFAULT, "omp_set_max_active_levels");
   name_blas(t);
   count_cores(t);
+  t->load = load_average();
 }
-#line 321 "paper/threads.nw"
+#line 334 "paper/threads.nw"
 /* a positive count from the environment variable name, else 0 */
 static int count_from(const char *name)
 {
@@ -164,14 +173,15 @@ static void choose(Threads *t)
   for (int k = 0; k < 3 && !t->asked; k++)
     if ((t->asked = count_from(names[k]))) t->asked_by = names[k];
   t->omp_asked = count_from("OMP_NUM_THREADS");
-  t->blas_threads = t->asked ? t->asked : t->physical;
+  int idle = t->physical - (int) floor(t->load + 0.1);
+  t->blas_threads = t->asked ? t->asked : idle > 1 ? idle : 1;
   t->by_size = !t->asked;
   t->chosen_by = t->asked ? t->asked_by : "program";
   t->omp_threads = t->omp_asked > 1 ? CHOLMOD_OMP : 1;
   if (!t->set) t->blas_threads = t->get ? t->get() : 1, t->by_size = 0;
   if (t->parallel && t->parallel() == 2) t->omp_threads = CHOLMOD_OMP;
 }
-#line 363 "paper/threads.nw"
+#line 377 "paper/threads.nw"
 #define OPENBLAS_BUFFER (32.0 * (1 << 22))  /* BUFFER_SIZE, x86-64 */
 
 /* bytes: the address-space limit (INFINITY if none), what is mapped */
@@ -202,7 +212,7 @@ static double stack_bytes(void)
   }
   return (double) size + (double) guard;
 }
-#line 405 "paper/threads.nw"
+#line 419 "paper/threads.nw"
 static int fit(Threads *t, const char *origin, double need, Status *st)
 {
   double L = limit_bytes(), M = mapped_bytes(), S = stack_bytes();
@@ -227,7 +237,7 @@ static int fit(Threads *t, const char *origin, double need, Status *st)
                     "this process maps already, more than the %.3g GB it may use",
                     origin, t->blas, B / 1e9, (M + B) / 1e9, M / 1e9, L / 1e9);
 }
-#line 440 "paper/threads.nw"
+#line 454 "paper/threads.nw"
 static void warm(int threads)
 {
   static double a[1], c[1];
@@ -237,7 +247,7 @@ static void warm(int threads)
     cblas_daxpy(20000 * threads, 1.0, x, 1, x + 20000 * threads, 1);
   free(x);
 }
-#line 461 "paper/threads.nw"
+#line 475 "paper/threads.nw"
 const char *threads_coretype_advice(const char *kernels, int coretype_set,
                                     int avx2, int avx512)
 {
@@ -262,7 +272,7 @@ static void advise_kernels(const Threads *t)
             "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
             t->blas, t->kernels, avx512 ? "AVX-512" : "AVX2", fits);
 }
-#line 497 "paper/threads.nw"
+#line 511 "paper/threads.nw"
 int threads_start(const char *origin, double need, Status *st)
 {
   Threads *t = &T;
@@ -282,7 +292,7 @@ int threads_start(const char *origin, double need, Status *st)
   t->started = 1;
   return STATUS_OK;
 }
-#line 532 "paper/threads.nw"
+#line 546 "paper/threads.nw"
 /* the threads a call of f flops gets (set now), or 0 if left as it is */
 static int enter(double f)
 {
@@ -296,7 +306,7 @@ static void leave(int n) { if (n) T.set(1); }
 
 #define NEXT(type, name) static type next; \
   if (!next) FIND(next, RTLD_NEXT, name)
-#line 551 "paper/threads.nw"
+#line 565 "paper/threads.nw"
 typedef void (*gemm_f)(const char *, const char *, const int *, const int *,
                        const int *, const double *, const double *, const int *,
                        const double *, const int *, const double *, double *,
@@ -347,7 +357,7 @@ void dpotrf_(const char *uplo, const int *n, double *A, const int *lda, int *inf
   next(uplo, n, A, lda, info);
   leave(use);
 }
-#line 604 "paper/threads.nw"
+#line 618 "paper/threads.nw"
 typedef void (*cgemm_f)(enum CBLAS_ORDER, enum CBLAS_TRANSPOSE,
                         enum CBLAS_TRANSPOSE, int, int, int, double,
                         const double *, int, const double *, int, double,
@@ -391,7 +401,7 @@ void cblas_dtrsm(const enum CBLAS_ORDER order, const enum CBLAS_SIDE side,
   next(order, side, uplo, trans, diag, m, n, alpha, A, lda, B, ldb);
   leave(use);
 }
-#line 652 "paper/threads.nw"
+#line 666 "paper/threads.nw"
 void threads_summary(FILE *f)
 {
   Threads *t = &T;
@@ -401,8 +411,8 @@ void threads_summary(FILE *f)
           t->library, t->kernels);
   fprintf(f, "blas_threads %d\nblas_threads_by_size %d\nthreads_chosen_by %s\n",
           t->blas_threads, t->by_size, t->chosen_by);
-  fprintf(f, "openmp_threads %d\ncores %d\nphysical_cores %d\n",
-          t->omp_threads, t->cores, t->physical);
+  fprintf(f, "openmp_threads %d\ncores %d\nphysical_cores %d\nload_average %.2f\n",
+          t->omp_threads, t->cores, t->physical, t->load);
 }
 
 void threads_version(FILE *f)
@@ -413,8 +423,8 @@ void threads_version(FILE *f)
   fprintf(f, "BLAS: %s (%s), %s kernels\n", t->blas, t->library, t->kernels);
   if (t->by_size)
     fprintf(f, "threads: up to %d per BLAS call (calls under %.3g flops: one), "
-            "CHOLMOD's OpenMP regions one; %d cores, %d physical\n",
-            t->blas_threads, 2 * THREADS_WORK, t->cores, t->physical);
+            "CHOLMOD's OpenMP regions one; %d cores, %d physical, load %.2f\n",
+            t->blas_threads, 2 * THREADS_WORK, t->cores, t->physical, t->load);
   else
     fprintf(f, "threads: %d per BLAS call (%s), CHOLMOD's OpenMP regions %d; "
             "%d cores, %d physical\n", t->blas_threads, t->asked_by ? t->asked_by
