@@ -1,4 +1,4 @@
-#line 111 "paper/threads.nw"
+#line 119 "paper/threads.nw"
 #define _GNU_SOURCE             /* dladdr, RTLD_NEXT, CPU_COUNT */
 #include <dlfcn.h>
 #include <limits.h>
@@ -12,7 +12,7 @@
 #include <sys/resource.h>
 #include <gsl/gsl_cblas.h>
 #include "threads.h"
-#line 127 "paper/threads.nw"
+#line 135 "paper/threads.nw"
 #define CHOLMOD_OMP 4           /* CHOLMOD 3.0's CHOLMOD_OMP_NUM_THREADS */
 #define ASKED "CONTACTOPT_BLAS_THREADS_ASKED"   /* set by the restart */
 typedef struct {
@@ -37,7 +37,7 @@ typedef struct {
   int found, started;
 } Threads;
 static Threads T;
-#line 174 "paper/threads.nw"
+#line 182 "paper/threads.nw"
 /* s begins with prefix: the rest of s, else NULL */
 static const char *after(const char *s, const char *prefix)
 {
@@ -52,7 +52,7 @@ static void restart_alone(int argc, char **argv, char **envp)
   const char *asked = "", *v;
   int n = 0, m = 0;
   (void) argc;
-  if (getrlimit(RLIMIT_AS, &lim) || lim.rlim_cur == RLIM_INFINITY) return;
+  if (!envp || getrlimit(RLIMIT_AS, &lim) || lim.rlim_cur == RLIM_INFINITY) return;
   for (; envp[n]; n++) {
     if (after(envp[n], ASKED "=")) return;              /* restarted */
     if ((v = after(envp[n], "OPENBLAS_NUM_THREADS="))) asked = v;
@@ -67,7 +67,7 @@ static void restart_alone(int argc, char **argv, char **envp)
 }
 __attribute__((section(".preinit_array"), used))
 static void (*restart_entry)(int, char **, char **) = restart_alone;
-#line 213 "paper/threads.nw"
+#line 221 "paper/threads.nw"
 /* *fp = the symbol name of the libraries after this executable, or NULL */
 static void find(void *fp, size_t size, void *where, const char *name)
 {
@@ -76,7 +76,7 @@ static void find(void *fp, size_t size, void *where, const char *name)
 }
 #define FIND(fp, where, name) find(&(fp), sizeof (fp), where, name)
 
-#line 243 "paper/threads.nw"
+#line 251 "paper/threads.nw"
 static void put_back_asked(void)
 {
   const char *asked = getenv(ASKED);
@@ -85,7 +85,7 @@ static void put_back_asked(void)
   else unsetenv("OPENBLAS_NUM_THREADS");
   unsetenv(ASKED);
 }
-#line 257 "paper/threads.nw"
+#line 265 "paper/threads.nw"
 static void name_blas(Threads *t)
 {
   void *dgemm;
@@ -102,7 +102,7 @@ static void name_blas(Threads *t)
       && !realpath(info.dli_fname, t->library))
     snprintf(t->library, sizeof t->library, "%s", info.dli_fname);
 }
-#line 279 "paper/threads.nw"
+#line 287 "paper/threads.nw"
 /* the first CPU of cpu's core (its thread siblings), or cpu */
 static int first_sibling(int cpu)
 {
@@ -140,7 +140,7 @@ static double load_average(void)
   return getloadavg(load, 3) == 3 ? load[2] : 0;
 }
 
-#line 225 "paper/threads.nw"
+#line 233 "paper/threads.nw"
 static void threads_find(Threads *t)
 {
   if (t->found) return;
@@ -156,7 +156,7 @@ static void threads_find(Threads *t)
   count_cores(t);
   t->load = load_average();
 }
-#line 334 "paper/threads.nw"
+#line 342 "paper/threads.nw"
 /* a positive count from the environment variable name, else 0 */
 static int count_from(const char *name)
 {
@@ -181,7 +181,7 @@ static void choose(Threads *t)
   if (!t->set) t->blas_threads = t->get ? t->get() : 1, t->by_size = 0;
   if (t->parallel && t->parallel() == 2) t->omp_threads = CHOLMOD_OMP;
 }
-#line 377 "paper/threads.nw"
+#line 385 "paper/threads.nw"
 #define OPENBLAS_BUFFER (32.0 * (1 << 22))  /* BUFFER_SIZE, x86-64 */
 
 /* bytes: the address-space limit (INFINITY if none), what is mapped */
@@ -212,7 +212,7 @@ static double stack_bytes(void)
   }
   return (double) size + (double) guard;
 }
-#line 419 "paper/threads.nw"
+#line 427 "paper/threads.nw"
 static int fit(Threads *t, const char *origin, double need, Status *st)
 {
   double L = limit_bytes(), M = mapped_bytes(), S = stack_bytes();
@@ -237,17 +237,15 @@ static int fit(Threads *t, const char *origin, double need, Status *st)
                     "this process maps already, more than the %.3g GB it may use",
                     origin, t->blas, B / 1e9, (M + B) / 1e9, M / 1e9, L / 1e9);
 }
-#line 454 "paper/threads.nw"
+#line 462 "paper/threads.nw"
+#define WARM_N 16384             /* > 10^4, >= any count of threads used */
 static void warm(int threads)
 {
-  static double a[1], c[1];
-  double *x = calloc(2 * 20000 * (size_t) threads, sizeof *x);
+  static double a[1], c[1], x[2 * WARM_N];
   cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, 1, 1, 1.0, a, 1, 0.0, c, 1);
-  if (x && threads > 1)
-    cblas_daxpy(20000 * threads, 1.0, x, 1, x + 20000 * threads, 1);
-  free(x);
+  if (threads > 1) cblas_daxpy(WARM_N, 1.0, x, 1, x + WARM_N, 1);
 }
-#line 475 "paper/threads.nw"
+#line 481 "paper/threads.nw"
 const char *threads_coretype_advice(const char *kernels, int coretype_set,
                                     int avx2, int avx512)
 {
@@ -272,7 +270,7 @@ static void advise_kernels(const Threads *t)
             "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
             t->blas, t->kernels, avx512 ? "AVX-512" : "AVX2", fits);
 }
-#line 511 "paper/threads.nw"
+#line 517 "paper/threads.nw"
 int threads_start(const char *origin, double need, Status *st)
 {
   Threads *t = &T;
@@ -280,11 +278,11 @@ int threads_start(const char *origin, double need, Status *st)
   threads_find(t);
   choose(t);
   if ((rc = fit(t, origin, need, st))) return rc;
-  if (t->set) {
+  if (t->by_size) threads_by_size(t->blas_threads);
+  else if (t->set) {
     t->set(t->blas_threads);
     if (t->get && t->get() < t->blas_threads) t->blas_threads = t->get();
     warm(t->blas_threads);
-    if (t->by_size) t->set(1);
   }
   if (t->omp_threads == 1 && t->omp_levels) t->omp_levels(0);
   if (t->omp_threads == 1 && !t->omp_levels) t->omp_threads = CHOLMOD_OMP;
@@ -292,13 +290,31 @@ int threads_start(const char *origin, double need, Status *st)
   t->started = 1;
   return STATUS_OK;
 }
-#line 546 "paper/threads.nw"
+
+void threads_by_size(int most)
+{
+  Threads *t = &T;
+  threads_find(t);
+  if (!t->set) return;
+  t->set(most);
+  t->blas_threads = t->get && t->get() < most ? t->get() : most;
+  warm(t->blas_threads);
+  t->set(1);
+  t->by_size = 1;
+}
+#line 564 "paper/threads.nw"
+int threads_for(double f)
+{
+  double k = floor(f / THREADS_WORK);
+  if (!T.by_size) return 0;
+  return k < 2 ? 1 : k < T.blas_threads ? (int) k : T.blas_threads;
+}
+
 /* the threads a call of f flops gets (set now), or 0 if left as it is */
 static int enter(double f)
 {
-  double k = floor(f / THREADS_WORK);
-  if (!T.started || !T.by_size || k < 2 || T.blas_threads < 2) return 0;
-  int n = k < T.blas_threads ? (int) k : T.blas_threads;
+  int n = threads_for(f);
+  if (n < 2) return 0;
   T.set(n);
   return n;
 }
@@ -306,7 +322,7 @@ static void leave(int n) { if (n) T.set(1); }
 
 #define NEXT(type, name) static type next; \
   if (!next) FIND(next, RTLD_NEXT, name)
-#line 565 "paper/threads.nw"
+#line 589 "paper/threads.nw"
 typedef void (*gemm_f)(const char *, const char *, const int *, const int *,
                        const int *, const double *, const double *, const int *,
                        const double *, const int *, const double *, double *,
@@ -357,7 +373,7 @@ void dpotrf_(const char *uplo, const int *n, double *A, const int *lda, int *inf
   next(uplo, n, A, lda, info);
   leave(use);
 }
-#line 618 "paper/threads.nw"
+#line 642 "paper/threads.nw"
 typedef void (*cgemm_f)(enum CBLAS_ORDER, enum CBLAS_TRANSPOSE,
                         enum CBLAS_TRANSPOSE, int, int, int, double,
                         const double *, int, const double *, int, double,
@@ -401,12 +417,19 @@ void cblas_dtrsm(const enum CBLAS_ORDER order, const enum CBLAS_SIDE side,
   next(order, side, uplo, trans, diag, m, n, alpha, A, lda, B, ldb);
   leave(use);
 }
-#line 666 "paper/threads.nw"
+#line 690 "paper/threads.nw"
+/* the choice made, or, before threads_start, the one it would make */
+static Threads described(void)
+{
+  threads_find(&T);
+  Threads d = T;
+  if (!d.started) choose(&d);
+  return d;
+}
+
 void threads_summary(FILE *f)
 {
-  Threads *t = &T;
-  threads_find(t);
-  if (!t->started) choose(t);
+  Threads d = described(), *t = &d;
   fprintf(f, "blas %s\nblas_library %s\nblas_kernels %s\n", t->blas,
           t->library, t->kernels);
   fprintf(f, "blas_threads %d\nblas_threads_by_size %d\nthreads_chosen_by %s\n",
@@ -417,16 +440,15 @@ void threads_summary(FILE *f)
 
 void threads_version(FILE *f)
 {
-  Threads *t = &T;
-  threads_find(t);
-  choose(t);
+  Threads d = described(), *t = &d;
   fprintf(f, "BLAS: %s (%s), %s kernels\n", t->blas, t->library, t->kernels);
   if (t->by_size)
-    fprintf(f, "threads: up to %d per BLAS call (calls under %.3g flops: one), "
-            "CHOLMOD's OpenMP regions one; %d cores, %d physical, load %.2f\n",
-            t->blas_threads, 2 * THREADS_WORK, t->cores, t->physical, t->load);
+    fprintf(f, "threads: a BLAS call on up to %d by its size (one under %.3g flops), "
+            "CHOLMOD's OpenMP regions on one; %d cores, %d physical, 15-minute "
+            "load %.2f\n", t->blas_threads, 2 * THREADS_WORK, t->cores,
+            t->physical, t->load);
   else
-    fprintf(f, "threads: %d per BLAS call (%s), CHOLMOD's OpenMP regions %d; "
+    fprintf(f, "threads: a BLAS call on %d (%s), CHOLMOD's OpenMP regions on %d; "
             "%d cores, %d physical\n", t->blas_threads, t->asked_by ? t->asked_by
             : "the BLAS's own", t->omp_threads, t->cores, t->physical);
   advise_kernels(t);

@@ -13,6 +13,11 @@
    run whose model needs about need bytes, create them and reserve the
    BLAS's buffers now; STATUS_MEMORY when not one BLAS thread fits */
 int threads_start(const char *origin, double need, Status *st);
+/* the program's rule, which threads_start sets with the idle cores: a
+   level-3 call gets threads by its size, at most `most`; creates them */
+void threads_by_size(int most);
+/* the threads the rule gives a call of f flops, 0 when it is not set */
+int threads_for(double f);
 /* the lines of summary.dat that say what computed the run */
 void threads_summary(FILE *f);
 /* the same for a person (contactopt --version) */

@@ -60,7 +60,7 @@ $BIN --version > $TMP/version; rc=$?
 version=$(sed -n 's/^#define CONTACTOPT_VERSION "\(.*\)"$/\1/p' src/usage.h)
 check "--version prints contactopt $version, as src/usage.h defines it, then what computes (the BLAS, its kernels, the threads)" \
   sh -c "[ $rc -eq 0 ] && [ -n '$version' ] && [ \"\$(head -n 1 $TMP/version)\" = 'contactopt $version' ] \
-         && grep -q '^BLAS: .* kernels\$' $TMP/version && grep -q '^threads: .*per BLAS call' $TMP/version"
+         && grep -q '^BLAS: .* kernels\$' $TMP/version && grep -q '^threads: a BLAS call on ' $TMP/version"
 $BIN --help > $TMP/help
 check "--help names keys and --version" sh -c "grep -q '^  keys ' $TMP/help && grep -q -- --version $TMP/help"
 finish

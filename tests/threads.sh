@@ -46,4 +46,64 @@ case $BIN in
   ;;
 esac
 
+# ---- what computed a run ---------------------------------------------------------
+# summary.dat of each command names the BLAS, its file and kernels, and the
+# thread counts; the kernels are those OPENBLAS_CORETYPE selects, the file
+# Debian's alternative for libblas.so.3 where there is one, and a user's
+# count is the one recorded (16 on two cores too: honoured, not capped)
+keys='blas blas_library blas_kernels blas_threads blas_threads_by_size threads_chosen_by openmp_threads cores physical_cores load_average'
+has_keys() { for _k in $keys; do [ -n "$(value $_k "$1")" ] || return 1; done; }
+$BIN solve $ex -o $TMP/s > /dev/null 2> $TMP/err
+$BIN gradcheck $ex -o $TMP/g > /dev/null 2>> $TMP/err
+$BIN optimize $ex -o $TMP/o > /dev/null 2>> $TMP/err
+for d in s g o; do
+  check "summary.dat of $d names $keys" has_keys $TMP/$d
+done
+check "no line on stderr from a run on this CPU's own kernels ($(head -c 200 $TMP/err))" test ! -s $TMP/err
+alt=/etc/alternatives/libblas.so.3-x86_64-linux-gnu
+if [ -e $alt ]; then
+  check "blas_library is the file Debian's alternatives choose ($(value blas_library $TMP/s))" \
+    test "$(value blas_library $TMP/s)" = "$(readlink -f $alt)"
+fi
+case $(value blas $TMP/s) in
+  OpenBLAS-*)
+  for k in Prescott Haswell; do
+    OPENBLAS_CORETYPE=$k $BIN solve $ex -o $TMP/k$k > /dev/null 2> $TMP/err
+    check "OPENBLAS_CORETYPE=$k: blas_kernels $k, no note on stderr" \
+      test "$(value blas_kernels $TMP/k$k)" = $k -a ! -s $TMP/err
+  done
+  for t in 1 16; do
+    OPENBLAS_NUM_THREADS=$t $BIN solve $ex -o $TMP/t$t > /dev/null 2>&1
+    check "OPENBLAS_NUM_THREADS=$t: blas_threads $t, chosen by OPENBLAS_NUM_THREADS, not by size" \
+      test "$(value blas_threads $TMP/t$t) $(value threads_chosen_by $TMP/t$t) $(value blas_threads_by_size $TMP/t$t)" \
+        = "$t OPENBLAS_NUM_THREADS 0"
+  done
+  OMP_NUM_THREADS=3 $BIN solve $ex -o $TMP/omp > /dev/null 2>&1
+  check "OMP_NUM_THREADS=3 (OpenBLAS reads it): 3 BLAS threads, CHOLMOD's 4 OpenMP threads" \
+    test "$(value blas_threads $TMP/omp) $(value openmp_threads $TMP/omp)" = "3 4"
+  check "by default CHOLMOD's OpenMP regions run on one thread, the BLAS's calls by size" \
+    test "$(value openmp_threads $TMP/s) $(value blas_threads_by_size $TMP/s) $(value threads_chosen_by $TMP/s)" = "1 1 program"
+  ;;
+  *) echo "# the BLAS is not OpenBLAS: its kernels and threads are not checked" ;;
+esac
+
+# ---- results do not depend on the thread count --------------------------------
+# optimize of Example 5.1 at N = 256 with one, two and 16 BLAS threads (16
+# oversubscribed on a small machine; every call OpenBLAS splits is split)
+# and with the program's choice: the same exit status, iterations,
+# evaluations and stop reason, E* within 1e-12 of the one-thread run's
+for t in 1 2 16 -; do
+  ( if [ $t = - ]; then unset OPENBLAS_NUM_THREADS; else export OPENBLAS_NUM_THREADS=$t; fi
+    exec $BIN optimize $ex -o $TMP/n$t -s mesh.refine=16 ) > /dev/null 2>&1
+  echo $? > $TMP/rc$t
+done
+for t in 2 16 -; do
+  check "N = 256, OPENBLAS_NUM_THREADS=$t against 1: exit $(cat $TMP/rc$t), $(value iterations $TMP/n$t) iterations, $(value evaluations $TMP/n$t) evaluations, $(value stop_reason $TMP/n$t)" \
+    test "$(cat $TMP/rc$t) $(value iterations $TMP/n$t) $(value evaluations $TMP/n$t) $(value stop_reason $TMP/n$t)" \
+       = "$(cat $TMP/rc1) $(value iterations $TMP/n1) $(value evaluations $TMP/n1) $(value stop_reason $TMP/n1)"
+  check "N = 256, OPENBLAS_NUM_THREADS=$t: E* within 1e-12 of one thread's ($(value energy $TMP/n$t), $(value energy $TMP/n1))" \
+    near_ref "$(value energy $TMP/n1)" "$(value energy $TMP/n$t)" 1e-12
+done
+check "... and the one-thread run converged (exit 0)" test "$(cat $TMP/rc1) $(value stop_reason $TMP/n1)" = "0 converged"
+
 finish
