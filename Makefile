@@ -9,7 +9,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h), and the program.
-MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args
+MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args threads
 SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
@@ -152,7 +152,8 @@ faults: $(PROGRAM) $(FAULT_SHIM)
 
 # make bench: the state-solver table, then the performance tables (issue 5;
 # BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve
-# (issue 14: tests/bench/output.sh) against one CHOLMOD factorisation.  bench_cholmod links the modules
+# (issue 14: tests/bench/output.sh) against one CHOLMOD factorisation, and
+# the optimisation under each thread setting (issue 26: tests/bench/threads.sh).  bench_cholmod links the modules
 # like a test program; walltime times a whole run of the program.
 build/bench/bench_cholmod: tests/bench/bench_cholmod.c $(OBJ)
 	@mkdir -p build/bench
@@ -167,6 +168,7 @@ bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/performance.sh
 	@sh tests/bench/optimize.sh
 	@sh tests/bench/output.sh
+	@sh tests/bench/threads.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of
@@ -240,7 +242,7 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex \
-                      paper/bench-output.tex paper/bench-kernels.tex | deps
+                       paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \

@@ -1,4 +1,4 @@
-#line 414 "paper/main.nw"
+#line 416 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

@@ -11,7 +11,8 @@
 #include "usage.h"
 #include "interrupt.h"
 #include "args.h"
-#line 207 "paper/main.nw"
+#include "threads.h"
+#line 208 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -36,7 +37,8 @@ static int run_command(const Args *a, const char *suffix,
   else output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
   double extra = command == command_optimize ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
   if (!(rc = output_check(r.dir, st))                  /* before any work */
-      && !(rc = model_fits(&r.s.problem, extra, r.s.path, st))) {
+      && !(rc = model_fits(&r.s.problem, extra, r.s.path, st))
+      && !(rc = threads_start(r.s.path, model_memory(&r.s.problem) + extra, st))) {
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
     rc = r.md ? command(&r, st) : (int) st->code;
   }
@@ -44,7 +46,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 263 "paper/main.nw"
+#line 265 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -55,7 +57,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 282 "paper/main.nw"
+#line 284 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is there */
 static int begin(Run *r, Output *o, Status *st)
 {
@@ -82,7 +84,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 311 "paper/main.nw"
+#line 313 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -97,7 +99,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 334 "paper/main.nw"
+#line 336 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -108,7 +110,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 354 "paper/main.nw"
+#line 356 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -125,7 +127,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 455 "paper/main.nw"
+#line 457 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -135,7 +137,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 471 "paper/main.nw"
+#line 473 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -148,7 +150,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 490 "paper/main.nw"
+#line 492 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -194,11 +196,12 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 546 "paper/main.nw"
+#line 548 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
-  if (!strcmp(argv[1], "--version")) printf("contactopt %s\n", CONTACTOPT_VERSION);
+  if (!strcmp(argv[1], "--version"))
+    printf("contactopt %s\n", CONTACTOPT_VERSION), threads_version(stdout);
   else if (strcmp(argv[1], "keys")) return -1;
   else if (argc > 2 && (!strcmp(argv[2], "-h") || !strcmp(argv[2], "--help")))
     fputs(usage_keys, stdout);
@@ -208,7 +211,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 569 "paper/main.nw"
+#line 572 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

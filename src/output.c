@@ -12,15 +12,16 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output.h"
+#include "threads.h"
 
-#line 280 "paper/output.nw"
+#line 281 "paper/output.nw"
 /* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
 static int output_errno(Status *st, int e, const char *path, const char *what)
 {
   return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
                     path, what, strerror(e));
 }
-#line 293 "paper/output.nw"
+#line 294 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -35,7 +36,7 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
-#line 323 "paper/output.nw"
+#line 324 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -47,7 +48,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 338 "paper/output.nw"
+#line 339 "paper/output.nw"
 int output_check(const char *dir, Status *st)
 {
   struct stat sb;
@@ -66,7 +67,7 @@ int output_check(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 360 "paper/output.nw"
+#line 361 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -87,7 +88,7 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 311 "paper/output.nw"
+#line 312 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
@@ -97,7 +98,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 384 "paper/output.nw"
+#line 385 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -107,7 +108,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 398 "paper/output.nw"
+#line 399 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -143,7 +144,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 438 "paper/output.nw"
+#line 439 "paper/output.nw"
 static int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -168,7 +169,7 @@ static FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 510 "paper/output.nw"
+#line 511 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -231,7 +232,7 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 479 "paper/output.nw"
+#line 480 "paper/output.nw"
 int output_commit(Output *o, Status *st)
 {
   char old[1200];
@@ -256,19 +257,19 @@ int output_commit(Output *o, Status *st)
 }
 
 void output_abort(Output *o) { output_remove_tree(o->stage); }
-#line 575 "paper/output.nw"
+#line 576 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 588 "paper/output.nw"
+#line 589 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 597 "paper/output.nw"
+#line 598 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -276,7 +277,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 607 "paper/output.nw"
+#line 608 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -287,7 +288,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 620 "paper/output.nw"
+#line 621 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -303,19 +304,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 644 "paper/output.nw"
+#line 645 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 635 "paper/output.nw"
+#line 636 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 653 "paper/output.nw"
+#line 654 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -329,7 +330,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 669 "paper/output.nw"
+#line 670 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -347,7 +348,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 707 "paper/output.nw"
+#line 708 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -371,7 +372,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 766 "paper/output.nw"
+#line 767 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -413,7 +414,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 826 "paper/output.nw"
+#line 827 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -437,7 +438,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 856 "paper/output.nw"
+#line 857 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -462,7 +463,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 735 "paper/output.nw"
+#line 736 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -485,7 +486,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 885 "paper/output.nw"
+#line 886 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -512,7 +513,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 916 "paper/output.nw"
+#line 917 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -524,7 +525,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 932 "paper/output.nw"
+#line 933 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -543,7 +544,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 953 "paper/output.nw"
+#line 954 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -553,7 +554,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 966 "paper/output.nw"
+#line 967 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -566,7 +567,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 1010 "paper/output.nw"
+#line 1012 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -579,7 +580,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 986 "paper/output.nw"
+#line 987 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -597,9 +598,10 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
   output_friction(f, md);
+  threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1027 "paper/output.nw"
+#line 1029 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -622,7 +624,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1058 "paper/output.nw"
+#line 1060 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -646,10 +648,11 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
           problem_model_name(p->model), p->N, md->energy,
           gc->err[gc->worst], gc->worst);
   output_friction(f, md);
+  threads_summary(f);
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1263 "paper/output.nw"
+#line 1266 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -660,7 +663,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1153 "paper/output.nw"
+#line 1156 "paper/output.nw"
 #define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
 
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -682,7 +685,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1094 "paper/output.nw"
+#line 1097 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -727,7 +730,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1218 "paper/output.nw"
+#line 1221 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -740,7 +743,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1182 "paper/output.nw"
+#line 1185 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -772,7 +775,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1241 "paper/output.nw"
+#line 1244 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -791,7 +794,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1279 "paper/output.nw"
+#line 1282 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
@@ -816,5 +819,6 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
   output_friction(f, md);
+  threads_summary(f);
   return output_close(o, f, st);
 }

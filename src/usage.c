@@ -1,6 +1,6 @@
-#line 59 "paper/main.nw"
+#line 60 "paper/main.nw"
 #include "usage.h"
-#line 64 "paper/main.nw"
+#line 65 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"

@@ -58,8 +58,9 @@ check "keys --frobnicate: exit 2, one line, nothing printed ($(cat $TMP/err))" \
   sh -c "[ $rc -eq 2 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && [ ! -s $TMP/out ] && grep -q frobnicate $TMP/err"
 $BIN --version > $TMP/version; rc=$?
 version=$(sed -n 's/^#define CONTACTOPT_VERSION "\(.*\)"$/\1/p' src/usage.h)
-check "--version prints one line, contactopt $version, as src/usage.h defines it" \
-  sh -c "[ $rc -eq 0 ] && [ -n '$version' ] && [ \"\$(cat $TMP/version)\" = 'contactopt $version' ]"
+check "--version prints contactopt $version, as src/usage.h defines it, then what computes (the BLAS, its kernels, the threads)" \
+  sh -c "[ $rc -eq 0 ] && [ -n '$version' ] && [ \"\$(head -n 1 $TMP/version)\" = 'contactopt $version' ] \
+         && grep -q '^BLAS: .* kernels\$' $TMP/version && grep -q '^threads: a BLAS call on ' $TMP/version"
 $BIN --help > $TMP/help
 check "--help names keys and --version" sh -c "grep -q '^  keys ' $TMP/help && grep -q -- --version $TMP/help"
 finish
