@@ -196,16 +196,24 @@ kkt_point() { _lr=$(kkt "$2/multipliers.dat" $3 $4 $5); _lrc=$?
   check "$1: the final design is a KKT point (signs, complementarity; stationarity $(show %.1e "$_lr") <= 1e-4)" \
     holds 'rc == 0 && r <= 1e-4' rc=$_lrc r="$_lr"; }
 
+# strip_times FILE: the file without its wall-clock times and the lines that say
+# how the run computed (its thread counts, the machine's load), which differ by design
+strip_times() {
+  awk 'NR == 1 && /^#/ { for (i = 2; i <= NF; i++) if ($i == "seconds") col = i - 1 }
+       ($1 == "seconds" || $1 ~ /^(metric|state|model|monitor)_seconds$/) && NF == 2 { next }
+       $1 ~ /^(blas_threads|blas_threads_by_size|threads_chosen_by|openmp_threads|load_average)$/ && NF == 2 { next }
+       col && !/^#/ { $col = ""; print; next }
+       { print }' "$1"
+}
 # same_run A B: the output folders A and B hold the same files with the same contents,
-# the times of summary.dat and history.dat aside
+# their times and thread counts aside (strip_times)
 same_run() {
   ( cd "$1" && find . -type f | sort ) > $TMP/same.a
   ( cd "$2" && find . -type f | sort ) > $TMP/same.b
   cmp -s $TMP/same.a $TMP/same.b || return 1
   while read -r f; do
     case $f in
-      */summary.dat) grep -v seconds "$1/$f" > $TMP/same.c; grep -v seconds "$2/$f" > $TMP/same.d ;;
-      */history.dat) cut -d' ' -f1-4 "$1/$f" > $TMP/same.c; cut -d' ' -f1-4 "$2/$f" > $TMP/same.d ;;
+      *.dat) strip_times "$1/$f" > $TMP/same.c; strip_times "$2/$f" > $TMP/same.d ;;
       *) cmp -s "$1/$f" "$2/$f" || return 1; continue ;;
     esac
     cmp -s $TMP/same.c $TMP/same.d || return 1

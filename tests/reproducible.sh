@@ -28,14 +28,6 @@ runs() {
     && $BIN optimize data/example-5.1.scene -o $d/example-5.1-C2arc-optimize \
          -s design.C2=$c2 > /dev/null
 }
-# strip FILE: the file without its wall-clock times and thread counts
-strip_times() {
-  awk 'NR == 1 && /^#/ { for (i = 2; i <= NF; i++) if ($i == "seconds") col = i - 1 }
-       ($1 == "seconds" || $1 ~ /^(metric|state|model|monitor)_seconds$/) && NF == 2 { next }
-       $1 ~ /^(blas_threads|blas_threads_by_size|threads_chosen_by|openmp_threads|load_average)$/ && NF == 2 { next }
-       col && !/^#/ { $col = ""; print; next }
-       { print }' "$1"
-}
 runs $TMP/a; rc_a=$?
 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 runs $TMP/b; rc_b=$?
 check "the figure runs succeed twice (default threads, then one thread)" \
