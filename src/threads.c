@@ -270,7 +270,15 @@ static void advise_kernels(const Threads *t)
             "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
             t->blas, t->kernels, avx512 ? "AVX-512" : "AVX2", fits);
 }
-#line 517 "paper/threads.nw"
+#line 524 "paper/threads.nw"
+__attribute__((constructor))
+static void threads_load(void)
+{
+  threads_find(&T);
+  choose(&T);
+  if (T.omp_threads == 1 && T.omp_levels) T.omp_levels(0);
+}
+
 int threads_start(const char *origin, double need, Status *st)
 {
   Threads *t = &T;
@@ -302,7 +310,7 @@ void threads_by_size(int most)
   t->set(1);
   t->by_size = 1;
 }
-#line 564 "paper/threads.nw"
+#line 579 "paper/threads.nw"
 int threads_for(double f)
 {
   double k = floor(f / THREADS_WORK);
@@ -322,7 +330,7 @@ static void leave(int n) { if (n) T.set(1); }
 
 #define NEXT(type, name) static type next; \
   if (!next) FIND(next, RTLD_NEXT, name)
-#line 589 "paper/threads.nw"
+#line 604 "paper/threads.nw"
 typedef void (*gemm_f)(const char *, const char *, const int *, const int *,
                        const int *, const double *, const double *, const int *,
                        const double *, const int *, const double *, double *,
@@ -373,7 +381,7 @@ void dpotrf_(const char *uplo, const int *n, double *A, const int *lda, int *inf
   next(uplo, n, A, lda, info);
   leave(use);
 }
-#line 642 "paper/threads.nw"
+#line 657 "paper/threads.nw"
 typedef void (*cgemm_f)(enum CBLAS_ORDER, enum CBLAS_TRANSPOSE,
                         enum CBLAS_TRANSPOSE, int, int, int, double,
                         const double *, int, const double *, int, double,
@@ -417,7 +425,7 @@ void cblas_dtrsm(const enum CBLAS_ORDER order, const enum CBLAS_SIDE side,
   next(order, side, uplo, trans, diag, m, n, alpha, A, lda, B, ldb);
   leave(use);
 }
-#line 690 "paper/threads.nw"
+#line 705 "paper/threads.nw"
 /* the choice made, or, before threads_start, the one it would make */
 static Threads described(void)
 {
