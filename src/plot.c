@@ -186,16 +186,16 @@ static double nice_down(double x)
 }
 static double nice_up(double x)
 {
-  double d = nice_down(x);
+  double d = nice_down(x), m = d / pow(10, floor(log10(d) + SLACK));
   if (d >= x * (1 - SLACK)) return d;
-  return d * (nice_down(d * 1.5) == d ? 2.5 : 2);   /* 1 -> 2, 2 -> 5, 5 -> 10 */
+  return d * (fabs(m - 2) < 0.5 ? 2.5 : 2);         /* 1 -> 2, 2 -> 5, 5 -> 10 */
 }
 static double nice(double x)
 {
   double d = nice_down(x), u = nice_up(x);
   return x / d <= u / x ? d : u;
 }
-#line 393 "paper/figures.nw"
+#line 391 "paper/figures.nw"
 static void tics_at(FILE *f, const char *axis, double first, double step,
                     double last, int format)
 {
@@ -210,7 +210,7 @@ static void tics(FILE *f, const char *axis, double lo, double hi, double n, int 
   double step = nice((hi - lo) / n);
   tics_at(f, axis, ceil(lo / step - SLACK) * step, step, hi, format);
 }
-#line 455 "paper/figures.nw"
+#line 453 "paper/figures.nw"
 static const char page_lines[] =
   "dpcm = 1600.0 / Wcm; fontpt = 12\n"
   "sx(cm) = cm / Wcm\n"
@@ -232,7 +232,7 @@ static const char terminal_lines[] =
   "  }\n"
   "  set output out.'.'.fmt\n"
   "  unset xlabel; unset ylabel; unset title; unset key\n";
-#line 485 "paper/figures.nw"
+#line 483 "paper/figures.nw"
 /* the head of a script: the figure, the run, and the variables of both */
 static void script_head(FILE *f, const Plot *pl, const char *what, const char *out)
 {
@@ -247,14 +247,14 @@ static void script_head(FILE *f, const Plot *pl, const char *what, const char *o
   fprintf(f, "\na = %s; b = %s; gamma = %s      # the body: a < x1 < b, x2 < gamma\n",
           real(p->a, 0), real(p->b, 0), real(p->gamma, 0));
 }
-#line 503 "paper/figures.nw"
+#line 501 "paper/figures.nw"
 static void place(FILE *f, const char *x, const char *w, const char *y, const char *h)
 {
   fprintf(f, "  set lmargin at screen sx(%s); set rmargin at screen sx(%s + %s)\n"
           "  set tmargin at screen sy(%s); set bmargin at screen sy(%s + %s)\n",
           x, x, w, y, y, h);
 }
-#line 542 "paper/figures.nw"
+#line 540 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
@@ -270,10 +270,10 @@ typedef struct {
   double top;                 /* cm above the upper panel */
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
 } Body_page;
-#line 561 "paper/figures.nw"
+#line 559 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 569 "paper/figures.nw"
+#line 567 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
@@ -296,7 +296,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
-#line 594 "paper/figures.nw"
+#line 592 "paper/figures.nw"
 static void top_support(FILE *f, Bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -311,7 +311,7 @@ static void top_support(FILE *f, Bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 613 "paper/figures.nw"
+#line 611 "paper/figures.nw"
 static double load_reach(const Side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Side *sd, int k)
@@ -323,7 +323,7 @@ static double side_reach(const Side *sd, int k)
   default: return 0;
   }
 }
-#line 629 "paper/figures.nw"
+#line 627 "paper/figures.nw"
 static Body_page body_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -343,7 +343,7 @@ static Body_page body_page(const Plot *pl)
   L.exag = fmax(L.vex, nice(3.52 / ((L.shi - L.slo) * L.ucm)));
   return L;
 }
-#line 661 "paper/figures.nw"
+#line 659 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -372,7 +372,7 @@ static double load_reach(const Side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 692 "paper/figures.nw"
+#line 690 "paper/figures.nw"
 static void load_text(const Side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -382,13 +382,13 @@ static void load_text(const Side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 706 "paper/figures.nw"
+#line 704 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 716 "paper/figures.nw"
+#line 714 "paper/figures.nw"
 static void side_load(FILE *f, const Side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -421,7 +421,7 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 759 "paper/figures.nw"
+#line 757 "paper/figures.nw"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
@@ -449,15 +449,17 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = L->ext[SIDE_TOP] + ALABEL + 0.396;
   }
 }
-#line 790 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p);
+#line 791 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
   char name[64], g[64];
   double x, up;
-  fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + 0.275*(b - a), 0.6*gamma "
-          "center front font sprintf(',%%g', 1.4*fsz)\n");
+  int low = p->gamma * L->ucm * L->vex < 3;
+  fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + %s*(b - a), %s*gamma "
+          "center front font sprintf(',%%g', 1.4*fsz)\n", low ? "0.3" : "0.275",
+          low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
   fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right\n", name, L->ext[0] + LGAP);
   side_name(p, SIDE_RIGHT, name, sizeof name);
@@ -465,7 +467,8 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   side_name(p, SIDE_TOP, name, sizeof name);
   top_name_place(p, L, &x, &up);
   fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center\n", name, num(x), up);
-  fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + 0.1875*(b - a), cy(0.616) center front\n");
+  fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
+          low ? "0.1" : "0.1875");
   if (p->contact == CONTACT_TRESCA) enhanced_number(p->slip_bound, g, sizeof g);
   if (p->contact == CONTACT_COULOMB) enhanced_number(p->friction, g, sizeof g);
   fprintf(f, "  set label 'rigid foundation  {/:Italic x}_2 ≤ 0%s%s%s' at (a + b)/2, "
@@ -474,18 +477,19 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
           "{/:Italic F} = " : "", p->contact == CONTACT_FRICTIONLESS ? "" : g,
           p->contact == CONTACT_TRESCA ? " N/m^2" : "");
   fprintf(f, "  set style textbox opaque noborder\n");
-  if (p->has_body_force) body_force_label(f, p);
+  if (p->has_body_force) body_force_label(f, p, low);
 }
-#line 820 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p)
+#line 824 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low)
 {
   char f1[64], f2[64];
   enhanced_number(p->F[0], f1, sizeof f1);
   enhanced_number(p->F[1], f2, sizeof f2);
   fprintf(f, "  set label 'body force ({/:Italic F}_1, {/:Italic F}_2) = (%s, %s) N/m^3' "
-          "at a + 0.65*(b - a), 0.6*gamma center front\n", f1, f2);
+          "at a + %s*(b - a), %s*gamma center front\n", f1, f2, low ? "0.7" : "0.65",
+          low ? "0.5" : "0.6");
 }
-#line 834 "paper/figures.nw"
+#line 839 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -511,7 +515,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 872 "paper/figures.nw"
+#line 877 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -523,9 +527,10 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   tics_at(f, "y", 0, step, floor(L->shi / step + SLACK) * step, 1);
   fprintf(f, "  set xlabel '{/:Italic x}_1 [m]' offset 0, 0.5\n"
           "  set title sprintf('the bottom strip −%%g ≤ {/:Italic x}_2 ≤ %%g, vertical "
-          "scale exaggerated ×%%g', -slo, shi, exag) offset 0, -0.3\n"
+          "scale exaggerated ×%%g%s', -slo, shi, exag) offset 0, -0.3\n"
           "  set object rect from xlo, slo to xhi, 0 fs pattern 5 noborder fc 'gray40' back\n"
-          "  set arrow from xlo, 0 to xhi, 0 nohead lw 2 lc 'gray30' back\n");
+          "  set arrow from xlo, 0 to xhi, 0 nohead lw 2 lc 'gray30' back\n",
+          pl->optimize ? "; dashed: the final {/:Italic α}^*" : "");
   if (p->side[SIDE_LEFT].kind == BC_CLAMPED)
     fprintf(f, "  set object rect from a - cx(%g), a_left to a, shi %s\n", WALL, hatch);
   if (p->side[SIDE_RIGHT].kind == BC_CLAMPED)
@@ -540,19 +545,16 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 903 "paper/figures.nw"
+#line 910 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
-  if (pl->optimize) fprintf(f, "  set key top right\n");
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
-          "       shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc 'black' %s",
-          pl->optimize ? "title 'initial {/:Italic α}^0'" : "notitle");
+          "       shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc 'black' notitle");
   if (pl->optimize)
-    fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' "
-            "title 'final {/:Italic α}^*'");
+    fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 923 "paper/figures.nw"
+#line 927 "paper/figures.nw"
 static void body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
@@ -587,7 +589,7 @@ static void body_figure(FILE *f, const Plot *pl, const char *out)
   body_strip(f, pl, &L);
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1016 "paper/figures.nw"
+#line 1020 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -605,7 +607,7 @@ static Results_page results_page(const Plot *pl)
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   return L;
 }
-#line 1037 "paper/figures.nw"
+#line 1041 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -616,7 +618,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1053 "paper/figures.nw"
+#line 1057 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
@@ -637,15 +639,17 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "left = 2.8; colw = %s; colgap = 2.4; pw = (bxhi - bxlo)*ucm    # cm\n"
           "top = 2.4; rowgap = 2.3; graphh = %s; bodyh = (byhi - bylo)*ucm*vex\n"
           "Wcm = left + 2*colw + colgap + 0.5\n"
-          "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + 1.6\n",
-          real(L->ucm, 6), real(L->vex, 0), real(COLW, 0), real(GRAPHH, 0), L->graphs);
+          "graphgap = rowgap + 0.8          # between two rows of graphs, room for x labels\n"
+          "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + %d*0.8 + 1.6\n",
+          real(L->ucm, 6), real(L->vex, 0), real(COLW, 0), real(GRAPHH, 0), L->graphs,
+          L->graphs > 1 ? L->graphs - 1 : 0);
   fputs(page_lines, f);
   fprintf(f, "colx(c) = left + c*(colw + colgap)         # the left edge of column c\n"
           "amax(x, y) = x > y ? x : y\n"
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   results_scales(f, pl);
 }
-#line 1087 "paper/figures.nw"
+#line 1093 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -666,16 +670,18 @@ static void results_scales(FILE *f, const Plot *pl)
   }
 }
 
-/* m = the largest |column c| of the states' contact.dat, e its power of ten */
+/* m = the largest |column c| of the states' contact.dat, e its power of ten,
+   e_step the step of tick marks for a short graph of it */
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c)
 {
   fprintf(f, "%s = 0\n", m);
   for (int k = 0; k < 1 + pl->optimize; k++)
     fprintf(f, "stats s%d.'/contact.dat' using %d nooutput; "
             "%s = amax(%s, amax(abs(STATS_min), abs(STATS_max)))\n", k, c, m, m);
-  fprintf(f, "%s = tens(%s)\n", e, m);
+  fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
+          e, m, e, m, m, e);
 }
-#line 1121 "paper/figures.nw"
+#line 1129 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
@@ -698,7 +704,7 @@ static const char *exaggerated(const Results_page *L)
   snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
-#line 1150 "paper/figures.nw"
+#line 1158 "paper/figures.nw"
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -721,16 +727,16 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
             q->letter, exaggerated(L), k, k, k, k, k, VHEAD);
 }
-#line 1176 "paper/figures.nw"
+#line 1186 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
   snprintf(x, sizeof x, "colx(%d)", q->col);
   if (q->row < 3) snprintf(y, sizeof y, "top + %d*(bodyh + rowgap)", q->row);
-  else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + rowgap)", q->row - 3);
+  else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1192 "paper/figures.nw"
+#line 1202 "paper/figures.nw"
 static void energy_graph(FILE *f, const Plot *pl)
 {
   double step = nice_up(fmax(1, pl->iterations / 2.0));
@@ -750,15 +756,16 @@ static void energy_graph(FILE *f, const Plot *pl)
                           : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1220 "paper/figures.nw"
+#line 1234 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
   int c = q->kind == PRESSURE ? 6 : q->kind == TANGENTIAL ? 8 : 7;
   const char *e = q->kind == PRESSURE ? "pe" : q->kind == TANGENTIAL ? "te" : "ue";
-  fprintf(f, "  set title '(%c) %s along Γ_C'\n  set xlabel '{/:Italic x}_1 [m]' offset 0, 0.4\n",
-          q->letter, q->kind == PRESSURE ? "contact pressure" : q->kind == TANGENTIAL
-          ? "tangential force" : "tangential displacement (slip)");
+  fprintf(f, "  set title '(%c) %s along Γ_C'\n", q->letter, q->kind == PRESSURE ?
+          "contact pressure" : q->kind == TANGENTIAL ? "tangential force"
+          : "tangential displacement (slip)");
+  if (q->row >= 3) fprintf(f, "  set xlabel '{/:Italic x}_1 [m]' offset 0, 0.4\n");
   fprintf(f, "  set ylabel sprintf('%s [10^{%%d} %s]', %s)\n", q->kind == PRESSURE ?
           "−{/:Italic T}_2" : q->kind == TANGENTIAL ? "{/:Italic T}_t" : "{/:Italic u}_1",
           q->kind == PRESSURE ? "N/m^2" : q->kind == TANGENTIAL ? "N/m" : "m", e);
@@ -766,7 +773,9 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
   if (q->kind == PRESSURE) fprintf(f, "set yrange [plo:*]\n");
   else fprintf(f, "set yrange [*:*]; if (%cm == 0) { set yrange [-1:1] }\n", e[0]);
   tics(f, "x", p->a, p->b, 4, 0);
-  fprintf(f, "  set key top left\n  plot s0.'/contact.dat' using 1:($%d/10.0**%s) with "
+  if (q->row < 3) fprintf(f, "  set ytics %s_step out nomirror\n", e);
+  fprintf(f, q->kind == PRESSURE ? "  set key top left\n" : "  unset key\n");
+  fprintf(f, "  plot s0.'/contact.dat' using 1:($%d/10.0**%s) with "
           "linespoints pt '▷' ps 1.3 lw 1.2 \\\n           lc '#b00000' %s", c, e,
           pl->optimize ? "title 'initial {/:Italic α}^0'" : "notitle");
   if (pl->optimize)
@@ -774,7 +783,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
             "pt '◁' ps 1.3 lw 1.2 \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'", c, e);
   fprintf(f, "\n");
 }
-#line 1248 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -794,7 +803,7 @@ static void results_figure(FILE *f, const Plot *pl, const char *out)
   }
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1279 "paper/figures.nw"
+#line 1296 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f */
@@ -825,7 +834,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, Status *st)
   }
   return STATUS_OK;
 }
-#line 1316 "paper/figures.nw"
+#line 1333 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) body_figure(f, pl, out);
@@ -841,7 +850,7 @@ static void unstage(const char *stage)
   snprintf(path, sizeof path, "%s.png", stage);
   remove(path);
 }
-#line 1335 "paper/figures.nw"
+#line 1352 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   static const char *const ext[] = { "pdf", "png" };
@@ -880,7 +889,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1383 "paper/figures.nw"
+#line 1400 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -901,7 +910,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1409 "paper/figures.nw"
+#line 1426 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -927,7 +936,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   return STATUS_OK;
 }
-#line 1439 "paper/figures.nw"
+#line 1456 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };
