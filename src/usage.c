@@ -1,6 +1,6 @@
-#line 62 "paper/main.nw"
+#line 63 "paper/main.nw"
 #include "usage.h"
-#line 67 "paper/main.nw"
+#line 68 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"
