@@ -13,7 +13,7 @@
 #include "args.h"
 #include "threads.h"
 #include "plot.h"
-#line 235 "paper/main.nw"
+#line 236 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -47,7 +47,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 292 "paper/main.nw"
+#line 293 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -58,7 +58,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 311 "paper/main.nw"
+#line 312 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is there */
 static int begin(Run *r, Output *o, Status *st)
 {
@@ -85,7 +85,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 340 "paper/main.nw"
+#line 341 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -100,7 +100,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 363 "paper/main.nw"
+#line 364 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -111,7 +111,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 383 "paper/main.nw"
+#line 384 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -128,7 +128,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 484 "paper/main.nw"
+#line 485 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -138,7 +138,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 500 "paper/main.nw"
+#line 501 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -151,7 +151,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 519 "paper/main.nw"
+#line 520 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -197,7 +197,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 574 "paper/main.nw"
+#line 575 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -216,7 +216,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 604 "paper/main.nw"
+#line 605 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -232,7 +232,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 629 "paper/main.nw"
+#line 630 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

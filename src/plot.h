@@ -1,4 +1,4 @@
-#line 95 "paper/figures.nw"
+#line 96 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_H
 #define CONTACTOPT_PLOT_H
 #include <stdio.h>
@@ -24,6 +24,6 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st);
 /* draw the figures of a->dir with gnuplot (d: their names), or print
    their scripts on out; STATUS_INPUT for a folder that is not a finished
    run's, STATUS_SYSTEM for a figure not written (gnuplot missing or
-   failing included) */
+   failing included), STATUS_INTERRUPTED after SIGINT or SIGTERM */
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st);
 #endif

@@ -99,7 +99,8 @@ const char usage_plot[] =
   "  -h, --help       this text\n\n"
   "Exit status: 0 drawn, 2 bad input (DIR not a finished run of solve or\n"
   "optimize, or without its --plot-files), 4 a figure cannot be written, or\n"
-  "gnuplot is missing or fails.\n";
+  "gnuplot is missing or fails, 130 interrupted (the figure being drawn is\n"
+  "removed; those finished stay).\n";
 
 const char usage_keys[] =
   "usage: contactopt keys [--latex]\n"

@@ -163,8 +163,8 @@ figure() {
 # leaves no staging file
 plotted() {
   $BIN plot "$2" > $TMP/out 2> $TMP/err; _rc=$?
-  check "$1: plot exits 0, names both figures ($(head -c 200 $TMP/err))" \
-    sh -c "[ $_rc -eq 0 ] && [ \$(grep -c '\\.pdf, .*\\.png' $TMP/out) -eq 2 ]"
+  check "$1: plot exits 0 and says nothing but the names of both figures ($(head -c 200 $TMP/err))" \
+    sh -c "[ $_rc -eq 0 ] && [ \$(grep -c '\\.pdf, .*\\.png' $TMP/out) -eq 2 ] && [ ! -s $TMP/err ]"
   check "$1: the body figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-body"
   check "$1: the results figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-results"
   check "$1: no staging file is left" sh -c "! ls '$2'/*.partial-* 2>/dev/null"; }
@@ -295,17 +295,36 @@ check "gnuplot missing: exit 4, one line that says so ($(cat $TMP/err))" \
 nothing_left() { clean_failure $1 4 $TMP/err $2.pdf "$3" && ! ls $2*.partial-* 2>/dev/null; }
 mkdir -p $TMP/fake
 for end in 'exit 1' 'kill -9 $$'; do
+  pattern="gnuplot was killed by signal 9"
+  [ "$end" = 'exit 1' ] && pattern="gnuplot failed \(exit status 1\) drawing .*: line 1: the fake gnuplot's message\$"
   cat > $TMP/fake/gnuplot <<EOF
 #!/bin/sh
 out=\$(sed -n "s/^out = '\\(.*\\)'\$/\\1/p")
 echo partial > "\$out.pdf"
+echo "line 1: the fake gnuplot's message" >&2
 $end
 EOF
   chmod +x $TMP/fake/gnuplot
   PATH=$TMP/fake:$PATH $BIN plot $TMP/free --body > /dev/null 2> $TMP/err; rc=$?
   check "gnuplot that fails ($end): exit 4, one line, no figure and no staged file ($(cat $TMP/err))" \
-    nothing_left $rc $TMP/free/plot-body 'gnuplot (failed|was killed)'
+    nothing_left $rc $TMP/free/plot-body "$pattern"
 done
+
+# Ctrl-C while gnuplot draws the results: a terminal signals the process
+# group, contactopt and gnuplot; the body figure, finished, stays, the
+# results are removed, exit 130 with one line
+if command -v setsid > /dev/null && env --default-signal=INT true 2>/dev/null; then
+  $BIN solve data/example-5.1.scene -s mesh.refine=16 -o $TMP/big --plot-files > /dev/null
+  setsid env --default-signal=INT $BIN plot $TMP/big -o $TMP/big/fig > /dev/null 2> $TMP/err &
+  pid=$!
+  for i in $(seq 1 3000); do ls $TMP/big/fig-results.partial-* > /dev/null 2>&1 && break; sleep 0.005; done
+  kill -INT -$pid; wait $pid; rc=$?
+  check "Ctrl-C while the results are drawn: exit 130, one line, the body kept, nothing of the results ($(cat $TMP/err))" \
+    sh -c "[ $rc -eq 130 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q 'interrupted by signal 2' $TMP/err &&
+           test -s $TMP/big/fig-body.png -a ! -e $TMP/big/fig-results.pdf && ! ls $TMP/big/*.partial-* 2>/dev/null"
+else
+  echo "# setsid or env --default-signal is missing: the interruption of plot is not tried"
+fi
 
 # ---- the help ----------------------------------------------------------------------------
 $BIN plot --help > $TMP/help; rc=$?
