@@ -597,7 +597,7 @@ static void body_figure(FILE *f, const Plot *pl, const char *out)
   body_strip(f, pl, &L);
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1049 "paper/figures.nw"
+#line 1050 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -615,7 +615,7 @@ static Results_page results_page(const Plot *pl)
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   return L;
 }
-#line 1070 "paper/figures.nw"
+#line 1071 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -626,7 +626,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1086 "paper/figures.nw"
+#line 1087 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
@@ -657,7 +657,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   results_scales(f, pl);
 }
-#line 1122 "paper/figures.nw"
+#line 1123 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -689,7 +689,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1158 "paper/figures.nw"
+#line 1159 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
@@ -712,7 +712,7 @@ static const char *exaggerated(const Results_page *L)
   snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
-#line 1187 "paper/figures.nw"
+#line 1188 "paper/figures.nw"
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -735,7 +735,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
             q->letter, exaggerated(L), k, k, k, k, k, VHEAD);
 }
-#line 1215 "paper/figures.nw"
+#line 1216 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -744,7 +744,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1231 "paper/figures.nw"
+#line 1232 "paper/figures.nw"
 static void energy_graph(FILE *f, const Plot *pl)
 {
   double step = nice_up(fmax(1, pl->iterations / 2.0));
@@ -764,7 +764,7 @@ static void energy_graph(FILE *f, const Plot *pl)
                           : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1263 "paper/figures.nw"
+#line 1264 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -791,7 +791,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
             "pt '◁' ps 1.3 lw 1.2 \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'", c, e);
   fprintf(f, "\n");
 }
-#line 1294 "paper/figures.nw"
+#line 1295 "paper/figures.nw"
 static void results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -811,7 +811,7 @@ static void results_figure(FILE *f, const Plot *pl, const char *out)
   }
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1328 "paper/figures.nw"
+#line 1329 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -843,7 +843,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 1363 "paper/figures.nw"
+#line 1364 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -856,7 +856,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 1380 "paper/figures.nw"
+#line 1381 "paper/figures.nw"
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
   int ws = 0, done;
@@ -874,7 +874,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 1404 "paper/figures.nw"
+#line 1405 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) body_figure(f, pl, out);
@@ -908,7 +908,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1446 "paper/figures.nw"
+#line 1447 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -936,7 +936,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 1483 "paper/figures.nw"
+#line 1484 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -957,7 +957,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1509 "paper/figures.nw"
+#line 1510 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -983,7 +983,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   return STATUS_OK;
 }
-#line 1539 "paper/figures.nw"
+#line 1540 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };
