@@ -9,8 +9,8 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h), and the program.
-MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args threads
-SCRIPTS := src/fig-body.gp src/fig-results.gp src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
+MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design newton opt output usage interrupt args threads plot
+SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
 TANGLED := $(filter-out src/pdas.h src/mprgp.h src/psor.h,$(MODULES:%=src/%.h)) \
@@ -283,21 +283,24 @@ out/example-5.1-C2arc-optimize/summary.dat: data/example-5.1.scene out/example-5
 	c2=$$(sh src/c2-of-shape.sh 1 out/example-5.1/shape.dat) && \
 	  bin/contactopt optimize $< -o $(@D) -s design.C2=$$c2 > $(@D).log
 
-# Fig. 5.1 and 5.3: the initial bodies; Fig. 5.2 and 5.4: the results.
-figures/fig-5.1.pdf figures/fig-5.1.png &: src/fig-body.gp out/example-5.1/summary.dat
+# Fig. 5.1 and 5.3: the initial bodies; Fig. 5.2 and 5.4: the results,
+# drawn by contactopt plot as a user's run is (paper/figures.nw).
+figures/fig-5.1.pdf figures/fig-5.1.png &: out/example-5.1/summary.dat bin/contactopt
 	@mkdir -p figures
-	gnuplot -e "solve='out/example-5.1'; out='figures/fig-5.1'; example='5.1'" $<
-figures/fig-5.3.pdf figures/fig-5.3.png &: src/fig-body.gp out/example-5.2/summary.dat
+	bin/contactopt plot out/example-5.1 --body --title 'Example 5.1' -o figures/fig-5.1
+figures/fig-5.3.pdf figures/fig-5.3.png &: out/example-5.2/summary.dat bin/contactopt
 	@mkdir -p figures
-	gnuplot -e "solve='out/example-5.2'; out='figures/fig-5.3'; example='5.2'" $<
-figures/fig-5.2.pdf figures/fig-5.2.png &: src/fig-results.gp out/example-5.1/summary.dat \
-                                           out/example-5.1-optimize/summary.dat
+	bin/contactopt plot out/example-5.2 --body --title 'Example 5.2' -o figures/fig-5.3
+figures/fig-5.2.pdf figures/fig-5.2.png &: out/example-5.1/summary.dat \
+                                           out/example-5.1-optimize/summary.dat bin/contactopt
 	@mkdir -p figures
-	gnuplot -e "solve='out/example-5.1'; opt='out/example-5.1-optimize'; out='figures/fig-5.2'; example='5.1'" $<
-figures/fig-5.4.pdf figures/fig-5.4.png &: src/fig-results.gp out/example-5.2/summary.dat \
-                                           out/example-5.2-optimize/summary.dat
+	bin/contactopt plot out/example-5.1-optimize --results --start out/example-5.1 \
+	  --title 'Example 5.1' -o figures/fig-5.2
+figures/fig-5.4.pdf figures/fig-5.4.png &: out/example-5.2/summary.dat \
+                                           out/example-5.2-optimize/summary.dat bin/contactopt
 	@mkdir -p figures
-	gnuplot -e "solve='out/example-5.2'; opt='out/example-5.2-optimize'; out='figures/fig-5.4'; example='5.2'" $<
+	bin/contactopt plot out/example-5.2-optimize --results --start out/example-5.2 \
+	  --title 'Example 5.2' -o figures/fig-5.4
 out/suite/%-newton/summary.dat: data/suite/%.scene bin/contactopt
 	@mkdir -p out/suite
 	bin/contactopt optimize $< -o $(@D) -s optimizer.method=newton > $(@D).log

@@ -1,4 +1,4 @@
-#line 171 "paper/main.nw"
+#line 199 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

@@ -1,4 +1,4 @@
-#line 152 "paper/main.nw"
+#line 180 "paper/main.nw"
 #ifndef CONTACTOPT_ARGS_H
 #define CONTACTOPT_ARGS_H
 #include "status.h"

@@ -1,4 +1,4 @@
-#line 416 "paper/main.nw"
+#line 444 "paper/main.nw"
 #include <signal.h>
 #include <string.h>
 #include "interrupt.h"

@@ -1,4 +1,4 @@
-#line 405 "paper/main.nw"
+#line 433 "paper/main.nw"
 #ifndef CONTACTOPT_INTERRUPT_H
 #define CONTACTOPT_INTERRUPT_H
 /* on: SIGINT and SIGTERM are noted, once (a second one has its default

@@ -1,4 +1,4 @@
-#line 18 "paper/main.nw"
+#line 19 "paper/main.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +12,8 @@
 #include "interrupt.h"
 #include "args.h"
 #include "threads.h"
-#line 208 "paper/main.nw"
+#include "plot.h"
+#line 236 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -46,7 +47,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 265 "paper/main.nw"
+#line 293 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -57,7 +58,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 284 "paper/main.nw"
+#line 312 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is there */
 static int begin(Run *r, Output *o, Status *st)
 {
@@ -84,7 +85,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 313 "paper/main.nw"
+#line 341 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -99,7 +100,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 336 "paper/main.nw"
+#line 364 "paper/main.nw"
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   double *last = data, now = model_clock(), worst = 0;
@@ -110,7 +111,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          i + 1, gc->N + 1, worst);
   fflush(stdout);
 }
-#line 356 "paper/main.nw"
+#line 384 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -127,7 +128,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 457 "paper/main.nw"
+#line 485 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -137,7 +138,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 473 "paper/main.nw"
+#line 501 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -150,7 +151,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 492 "paper/main.nw"
+#line 520 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -196,10 +197,30 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 548 "paper/main.nw"
+#line 575 "paper/main.nw"
+static int command_plot(int argc, char **argv)
+{
+  Status st = { STATUS_OK, "" };
+  Plot_args a;
+  Plot_drawn d;
+  int rc;
+  for (int k = 2; k < argc; k++)
+    if (!strcmp(argv[k], "-h") || !strcmp(argv[k], "--help"))
+      return fputs(usage_plot, stdout) == EOF ? STATUS_SYSTEM : STATUS_OK;
+  if (!(rc = plot_args_read(argc, argv, &a, &st))) rc = plot_run(&a, stdout, &d, &st);
+  if (rc) {
+    fprintf(stderr, "contactopt: %s\n", st.msg);
+    return rc;
+  }
+  for (int k = 0; k < d.n; k++)
+    printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
+  return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
+}
+#line 605 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
+  if (!strcmp(argv[1], "plot")) return command_plot(argc, argv);
   if (!strcmp(argv[1], "--version"))
     printf("contactopt %s\n", CONTACTOPT_VERSION), threads_version(stdout);
   else if (strcmp(argv[1], "keys")) return -1;
@@ -211,7 +232,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 572 "paper/main.nw"
+#line 630 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

@@ -1,6 +1,6 @@
-#line 60 "paper/main.nw"
+#line 63 "paper/main.nw"
 #include "usage.h"
-#line 65 "paper/main.nw"
+#line 68 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"
@@ -9,7 +9,8 @@ const char usage_main[] =
   "  solve     solve the contact state at the scene's initial shape\n"
   "  gradcheck compare the gradient (4.8) with finite differences of E\n"
   "  optimize  find the contact shape of least energy (Section 4.4)\n"
-  "  keys      list every key of a scene: unit, default, values, meaning\n\n"
+  "  keys      list every key of a scene: unit, default, values, meaning\n"
+  "  plot      draw the figures of a run: 'contactopt plot DIR' (gnuplot)\n\n"
   "'contactopt COMMAND --help' explains the options of a command;\n"
   "'contactopt --version' prints the version.\n\n"
   "-s section.key=value overrides a key of the scene; an empty value\n"
@@ -76,6 +77,30 @@ const char usage_optimize[] =
   "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
   "last design accepted are written), 4 cannot write, 5 out of memory,\n"
   "130 interrupted (the files of the best design so far are written).\n";
+
+const char usage_plot[] =
+  "usage: contactopt plot DIR [-o NAME] [--body | --results] [--start SOLVEDIR]\n"
+  "                  [--title TEXT] [--gnuplot]\n"
+  "Draw the figures of the run in DIR, an output folder of solve or optimize\n"
+  "written with --plot-files, with gnuplot, each as a PDF and a PNG: the body\n"
+  "with its sides, its loads and a strip of its bottom (NAME-body), and the\n"
+  "results (NAME-results): the triangulation, the deformed body and the\n"
+  "displacement field of each state, the contact pressure (with friction the\n"
+  "tangential force and the slip), for optimize E against the iteration.\n"
+  "The axes, sides and loads are those of DIR/effective.scene.\n\n"
+  "  -o NAME          the figures' name without extension (default DIR/plot);\n"
+  "                   with --body or --results, the files are NAME.pdf, NAME.png\n"
+  "  --body           only the body figure\n"
+  "  --results        only the results figure\n"
+  "  --start SOLVEDIR draw this solve folder as the initial state of DIR, a run\n"
+  "                   of optimize (the initial design as given, before B)\n"
+  "  --title TEXT     the head of the titles (default DIR)\n"
+  "  --gnuplot        print the gnuplot scripts instead of drawing\n"
+  "  -h, --help       this text\n\n"
+  "Exit status: 0 drawn, 2 bad input (DIR not a finished run of solve or\n"
+  "optimize, or without its --plot-files), 4 a figure cannot be written, or\n"
+  "gnuplot is missing or fails, 130 interrupted (the figure being drawn is\n"
+  "removed; those finished stay).\n";
 
 const char usage_keys[] =
   "usage: contactopt keys [--latex]\n"

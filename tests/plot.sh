@@ -1,0 +1,335 @@
+# plot.sh: contactopt plot DIR (paper/figures.nw) on the output of every
+# shipped scene and of a user's scene for each condition of a side
+# (clamped, rollers, free, a load on a side) and for friction, read back:
+# the figures exist as PDF and PNG, the PNGs are drawings (1600 pixels
+# wide, many colours, not one), the scripts take their axes, sides and
+# loads from the scene; and every refusal: one line, its exit status,
+# nothing written.
+. tests/lib.sh
+scenes=$TMP/scenes
+mkdir -p $scenes
+
+# ---- the user's scenes -------------------------------------------------------
+# both sides clamped, 10 m wide: the axes must run from a = 0 to b = 10
+cat > $scenes/clamped.scene <<'EOF'
+[geometry]
+a = 0
+b = 10
+gamma = 1
+[design]
+N = 20
+C0 = 0.05
+C1 = 0.025
+C2 = 9.75
+initial = constant
+constant = 0.025
+[mesh]
+M = 1
+R = 3
+C0prime = 0.25
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = clamped
+[right]
+bc = clamped
+[top]
+bc = traction
+from = 3
+to = 7
+P2 = -1e8
+EOF
+# both sides on rollers, a < 0, the whole top loaded
+cat > $scenes/roller.scene <<'EOF'
+[geometry]
+a = -2
+b = 2
+gamma = 1
+[design]
+N = 16
+C0 = 0.05
+C1 = 0.025
+C2 = 3.91
+initial = line
+line_start = 0.02
+line_end = 0.025
+[mesh]
+M = 1
+R = 3
+C0prime = 0.25
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = roller
+[right]
+bc = roller
+[top]
+bc = traction
+from = -2
+to = 2
+P2 = -2e8
+EOF
+# aluminium, the right side free, an oblique load and the body's weight
+cat > $scenes/free.scene <<'EOF'
+[geometry]
+a = 0
+b = 2
+gamma = 0.5
+[design]
+N = 32
+C0 = 0.02
+C1 = 0.05
+C2 = 0.99
+initial = arc
+arc_x1 = 2
+arc_x2 = 100.02
+arc_radius = 100.02
+[mesh]
+M = 1
+R = 3
+C0prime = 0.1
+[material]
+E = 7e10
+nu = 0.33
+[left]
+bc = clamped
+[right]
+bc = free
+[top]
+bc = traction
+from = 0.5
+to = 2
+P1 = 2e7
+P2 = -1e8
+[body_force]
+F2 = -2.65e4
+EOF
+# Coulomb friction, and a load on the right side pushing to the left
+cat > $scenes/friction.scene <<'EOF'
+[geometry]
+a = 0
+b = 4
+gamma = 1
+[design]
+N = 16
+C0 = 0.05
+C1 = 0.025
+C2 = 3.91
+initial = line
+line_start = 0.05
+line_end = 0
+[mesh]
+M = 1
+R = 3
+C0prime = 0.25
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = clamped
+[right]
+bc = traction
+from = 0.3
+to = 0.9
+P1 = -5e7
+[top]
+bc = traction
+from = 2
+to = 4
+P2 = -5.75e8
+[contact]
+model = coulomb
+friction = 0.3
+EOF
+
+# ---- reading a figure back ----------------------------------------------------
+# png_width FILE: the width in the PNG's header
+png_width() { od -An -tu1 -j16 -N4 "$1" | awk '{ print (($1 * 256 + $2) * 256 + $3) * 256 + $4 }'; }
+# png_drawn FILE: a PNG of at least 20 colours where no colour covers more
+# than 99 % (gnuplot reads it back, every fourth pixel of every fourth row)
+png_drawn() {
+  gnuplot -e "set table '$TMP/pixels'; plot '$1' binary filetype=png every 4:4 with rgbimage" 2>/dev/null \
+    && awk '$1 ~ /^[0-9]/ && NF == 7 { c[$3 " " $4 " " $5]++; n++ }
+      END { for (k in c) { m++; if (c[k] > top) top = c[k] }
+            exit !(n > 1000 && m >= 20 && top < 0.99 * n) }' $TMP/pixels; }
+# figure NAME: NAME.pdf is a PDF and NAME.png a drawing 1600 pixels wide
+figure() {
+  [ "$(head -c 5 "$1.pdf")" = "%PDF-" ] && [ "$(wc -c < "$1.pdf")" -gt 10000 ] \
+    && [ "$(wc -c < "$1.png")" -gt 20000 ] && [ "$(png_width "$1.png")" -eq 1600 ] \
+    && png_drawn "$1.png"; }
+# plotted LABEL DIR: contactopt plot DIR draws both figures of DIR, and
+# leaves no staging file
+plotted() {
+  $BIN plot "$2" > $TMP/out 2> $TMP/err; _rc=$?
+  check "$1: plot exits 0 and says nothing but the names of both figures ($(head -c 200 $TMP/err))" \
+    sh -c "[ $_rc -eq 0 ] && [ \$(grep -c '\\.pdf, .*\\.png' $TMP/out) -eq 2 ] && [ ! -s $TMP/err ]"
+  check "$1: the body figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-body"
+  check "$1: the results figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-results"
+  check "$1: no staging file is left" sh -c "! ls '$2'/*.partial-* 2>/dev/null"; }
+
+# ---- every shipped scene, and the user's ------------------------------------------
+for s in data/*.scene $scenes/*.scene; do
+  n=$(basename $s .scene)
+  $BIN solve $s -o $TMP/$n --plot-files > /dev/null 2>&1
+  check "solve $n --plot-files exits 0" test -s $TMP/$n/summary.dat
+  plotted "solve $n" $TMP/$n
+done
+for n in example-5.1 example-5.1-tresca; do
+  $BIN optimize data/$n.scene -o $TMP/$n-opt --plot-files > /dev/null 2>&1
+  plotted "optimize $n" $TMP/$n-opt
+done
+$BIN optimize $scenes/free.scene -o $TMP/free-opt --plot-files > /dev/null 2>&1
+plotted "optimize free (the user's)" $TMP/free-opt
+
+# ---- what the scripts draw: the scene's axes, sides and loads ---------------------------
+script() { $BIN plot "$@" --gnuplot > $TMP/script.gp; }
+script $TMP/clamped --results
+check "a = 0, b = 10: the contact pressure's x axis is [0:10]" \
+  grep -q '^  set xrange \[0:10\]; set yrange \[plo:\*\]$' $TMP/script.gp
+check "a = 0, b = 10: the body panels span [-0.25, 10.25] (2.5 % beside)" \
+  grep -q '^bxlo = -0.25; bxhi = 10.25;' $TMP/script.gp
+check "a = 0, b = 10: the tick marks run from 0 to 10 by 2" grep -q '^  set xtics 0, 2, 10 ' $TMP/script.gp
+check "a solve has no graph of E" sh -c "! grep -q 'against iteration' $TMP/script.gp"
+script $TMP/clamped --body
+check "the body figure reads a, b, gamma from the scene" grep -q '^a = 0.0; b = 10.0; gamma = 1.0 ' $TMP/script.gp
+check "both sides clamped: a wall left of a and right of b" sh -c \
+  "grep -q 'set object rect from a - cx(0.528), a_left to a, gamma' $TMP/script.gp &&
+   grep -q 'set object rect from b, a_right to b + cx(0.528), gamma' $TMP/script.gp"
+check "both sides clamped: no rollers" sh -c "! grep -q 'object circle' $TMP/script.gp"
+check "the load P2 = -1e8 on 3 < x1 < 7: 7 arrows downwards, their value" sh -c \
+  "grep -q '# top: the traction (P1, P2) = (0, -100000000) N/m^2 on 3 < s < 7' $TMP/script.gp &&
+   grep -q 'do for \[k=0:6\]' $TMP/script.gp &&
+   grep -q 'set arrow from s + cx(0), gamma + cy(1.32) to s + cx(0), gamma + cy(0.088)' $TMP/script.gp &&
+   grep -q '{/:Italic P}_2 = −10^{8} N/m^2' $TMP/script.gp"
+xr() { awk '/^xlo = / { gsub(/;/, ""); print $3, $6 }' $TMP/script.gp; }
+set -- $(xr)
+check "the upper panel's x range [$1, $2] holds [0, 10] and its margins" holds 'lo < 0 && hi > 10 && lo > -2 && hi < 12' lo="$1" hi="$2"
+script $TMP/roller --body
+check "a = -2, b = 2: the tick marks run from -2 to 2" grep -q '^  set xtics -2, 1, 2 ' $TMP/script.gp
+check "rollers on both sides: four circles beside a and beside b" sh -c \
+  "[ \$(grep -c 'do for \[k=1:4\]' $TMP/script.gp) -eq 2 ] &&
+   grep -q 'circle at a - cx(0.154)' $TMP/script.gp && grep -q 'circle at b + cx(0.154)' $TMP/script.gp"
+check "rollers: the sides are named Γ_P 1, 2 and the loaded top 3" sh -c \
+  "grep -q \"label 'Γ@^{/\\*0.7 1}_{/\\*0.7 P}' at a\" $TMP/script.gp &&
+   grep -q \"label 'Γ@^{/\\*0.7 3}_{/\\*0.7 P}' at\" $TMP/script.gp"
+script $TMP/free --body
+check "a free right side: nothing drawn beside b, no wall, no rollers" sh -c \
+  "! grep -q 'b + cx(0.528)\\|circle\\|rect from b' $TMP/script.gp"
+check "the oblique load (2e7, -1e8): arrows along (0.196, -0.981) on the page, its value" sh -c \
+  "grep -q 'set arrow from s + cx(-0.2416), gamma + cy(1.296) to s + cx(0), gamma + cy(0.088)' $TMP/script.gp &&
+   grep -q '({/:Italic P}_1, {/:Italic P}_2) = (2·10^{7}, −10^{8}) N/m^2' $TMP/script.gp"
+check "the body force is written" grep -q 'body force ({/:Italic F}_1, {/:Italic F}_2) = (0, −2.65·10^{4}) N/m^3' $TMP/script.gp
+script $TMP/friction
+check "a load on the right side: its arrows push to the left, their value upright" sh -c \
+  "grep -q '# right: the traction (P1, P2) = (-50000000, 0) N/m^2 on 0.3 < s < 0.9' $TMP/script.gp &&
+   grep -q 'set arrow from b + cx(1.32), s + cy(0) to b + cx(0.088), s + cy(0)' $TMP/script.gp &&
+   grep -q 'rotate by 90' $TMP/script.gp"
+check "Coulomb friction: the foundation says so" grep -q 'Coulomb friction {/:Italic F} = 0.3' $TMP/script.gp
+check "friction: the tangential force and the slip are drawn" sh -c \
+  "grep -q '(e) tangential force along' $TMP/script.gp && grep -q '(f) tangential displacement (slip)' $TMP/script.gp"
+script $TMP/example-5.1
+check "frictionless: no tangential graphs" sh -c "! grep -q 'tangential' $TMP/script.gp"
+script $TMP/example-5.1-tresca-opt --results
+check "Tresca, optimize: E against iteration, (i) and (j) with both states" sh -c \
+  "grep -q 'against iteration' $TMP/script.gp && grep -q '(i) tangential force' $TMP/script.gp &&
+   grep -q \"s1.'/contact.dat' using 1:(\\\$7/10.0\\*\\*ue)\" $TMP/script.gp"
+script $TMP/example-5.1-opt --results --start $TMP/example-5.1 --title 'my_run ^1'
+check "--start: the initial state is the solve folder's, E(alpha0) its summary's energy" sh -c \
+  "grep -q \"^s0 = '$TMP/example-5.1' \" $TMP/script.gp && grep -q \"^start = '$TMP/example-5.1'\" $TMP/script.gp"
+check "--title: the marks of enhanced text are escaped (my_run ^1)" grep -q "^title = 'my\\\\_run \\\\^1'$" $TMP/script.gp
+script $TMP/example-5.1-opt --body
+check "optimize: the body is the start (initial/), the final shape dashed in the strip" sh -c \
+  "grep -q \"^shape = '$TMP/example-5.1-opt/initial/shape.dat'; final = '$TMP/example-5.1-opt/final/shape.dat'\" $TMP/script.gp"
+rm -f $TMP/example-5.1-opt/plot-body.*
+(cd $TMP && gnuplot script.gp) 2> $TMP/err
+check "the printed script draws with gnuplot alone ($(head -c 200 $TMP/err))" figure $TMP/example-5.1-opt/plot-body
+
+# ---- the names of the figures -------------------------------------------------------
+$BIN plot $TMP/example-5.1-opt --results --start $TMP/example-5.1 --title 'Example 5.1' \
+  -o $TMP/fig-5.2 > /dev/null 2> $TMP/err; rc=$?
+check "-o NAME with one figure: NAME.pdf and NAME.png, as the Makefile draws Fig. 5.2" \
+  sh -c "[ $rc -eq 0 ] && test -s $TMP/fig-5.2.pdf -a -s $TMP/fig-5.2.png"
+mkdir -p $TMP/figs
+$BIN plot $TMP/free -o $TMP/figs/free > /dev/null; rc=$?
+check "-o NAME with both figures: NAME-body and NAME-results" \
+  sh -c "[ $rc -eq 0 ] && test -s $TMP/figs/free-body.png -a -s $TMP/figs/free-results.png"
+
+# ---- refusals: one line, the documented exit status, nothing written ----------------------
+# refused LABEL CODE PATTERN FIGURE ARGS...: plot ARGS exits CODE with one line
+# matching PATTERN, and FIGURE.pdf is not there
+refused() { _d=$1 _c=$2 _p=$3 _f=$4; shift 4
+  $BIN plot "$@" > /dev/null 2> $TMP/err; _rc=$?
+  check "$_d: exit $_c, one line ($(head -c 200 $TMP/err))" clean_failure $_rc $_c $TMP/err "$_f.pdf" "$_p"; }
+refused "a folder that does not exist" 2 'nope: no such folder' $TMP/nope/plot-body $TMP/nope
+mkdir -p $TMP/empty
+refused "a folder that is not a run's" 2 'not an output folder of solve or optimize' \
+  $TMP/empty/plot-body $TMP/empty
+refused "a file, not a folder" 2 'not a folder' $TMP/x $scenes/free.scene
+cp -r $TMP/free $TMP/free.partial-4242
+rm -f $TMP/free.partial-4242/plot-*
+refused "the staging folder of an unfinished run" 2 'staging folder of a run that did not finish' \
+  $TMP/free.partial-4242/plot-body $TMP/free.partial-4242
+$BIN gradcheck data/example-5.1.scene -o $TMP/gc > /dev/null 2>&1
+refused "a folder of gradcheck" 2 'gradcheck' $TMP/gc/plot-body $TMP/gc
+$BIN solve data/example-5.1.scene -o $TMP/bare > /dev/null
+refused "a run without --plot-files" 2 'no nodes.dat: .*--plot-files' $TMP/bare/plot-body $TMP/bare
+refused "--start with a run of solve" 2 'is a run of solve' $TMP/r \
+  $TMP/free --results -o $TMP/r --start $TMP/example-5.1
+refused "--start naming a run of optimize" 2 'a run of optimize, not of solve' \
+  $TMP/r $TMP/free-opt --results -o $TMP/r --start $TMP/example-5.1-opt
+refused "--start with the body figure alone" 2 'only the results figure' $TMP/r \
+  $TMP/free-opt --body -o $TMP/r --start $TMP/free
+refused "an unknown option" 2 'unknown option' $TMP/free/plot-x $TMP/free --colour
+refused "no DIR" 2 'no DIR given' $TMP/plot-body
+refused "a figure's folder that does not exist" 4 'cannot write .*missing/f.pdf' \
+  $TMP/missing/f $TMP/free --body -o $TMP/missing/f
+rm -f $TMP/free/plot-*
+PATH=/nonexistent $BIN plot $TMP/free > /dev/null 2> $TMP/err; rc=$?
+check "gnuplot missing: exit 4, one line that says so ($(cat $TMP/err))" \
+  clean_failure $rc 4 $TMP/err $TMP/free/plot-body.pdf 'cannot run gnuplot' 'install it'
+# a gnuplot that writes the staged PDF, then fails or is killed: the figure
+# is refused and nothing of it stays
+# nothing_left RC NAME PATTERN: a clean failure, nothing of NAME left
+nothing_left() { clean_failure $1 4 $TMP/err $2.pdf "$3" && ! ls $2*.partial-* 2>/dev/null; }
+mkdir -p $TMP/fake
+for end in 'exit 1' 'kill -9 $$'; do
+  pattern="gnuplot was killed by signal 9"
+  [ "$end" = 'exit 1' ] && pattern="gnuplot failed \(exit status 1\) drawing .*: line 1: the fake gnuplot's message\$"
+  cat > $TMP/fake/gnuplot <<EOF
+#!/bin/sh
+out=\$(sed -n "s/^out = '\\(.*\\)'\$/\\1/p")
+echo partial > "\$out.pdf"
+echo "line 1: the fake gnuplot's message" >&2
+$end
+EOF
+  chmod +x $TMP/fake/gnuplot
+  PATH=$TMP/fake:$PATH $BIN plot $TMP/free --body > /dev/null 2> $TMP/err; rc=$?
+  check "gnuplot that fails ($end): exit 4, one line, no figure and no staged file ($(cat $TMP/err))" \
+    nothing_left $rc $TMP/free/plot-body "$pattern"
+done
+
+# Ctrl-C while gnuplot draws the results: a terminal signals the process
+# group, contactopt and gnuplot; the body figure, finished, stays, the
+# results are removed, exit 130 with one line
+if command -v setsid > /dev/null && env --default-signal=INT true 2>/dev/null; then
+  $BIN solve data/example-5.1.scene -s mesh.refine=16 -o $TMP/big --plot-files > /dev/null
+  setsid env --default-signal=INT $BIN plot $TMP/big -o $TMP/big/fig > /dev/null 2> $TMP/err &
+  pid=$!
+  for i in $(seq 1 3000); do ls $TMP/big/fig-results.partial-* > /dev/null 2>&1 && break; sleep 0.005; done
+  kill -INT -$pid; wait $pid; rc=$?
+  check "Ctrl-C while the results are drawn: exit 130, one line, the body kept, nothing of the results ($(cat $TMP/err))" \
+    sh -c "[ $rc -eq 130 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q 'interrupted by signal 2' $TMP/err &&
+           test -s $TMP/big/fig-body.png -a ! -e $TMP/big/fig-results.pdf && ! ls $TMP/big/*.partial-* 2>/dev/null"
+else
+  echo "# setsid or env --default-signal is missing: the interruption of plot is not tried"
+fi
+
+# ---- the help ----------------------------------------------------------------------------
+$BIN plot --help > $TMP/help; rc=$?
+for opt in -o --body --results --start --title --gnuplot --plot-files 'Exit status'; do
+  check "contactopt plot --help explains $opt" sh -c "[ $rc -eq 0 ] && grep -q -- '$opt' $TMP/help"
+done
+check "contactopt --help names plot" sh -c "$BIN --help | grep -q '^  plot '"
+finish
