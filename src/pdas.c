@@ -21,7 +21,7 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
 #line 339 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 860 "paper/pdas.nw"
+#line 862 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -257,7 +257,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 649 "paper/pdas.nw"
+#line 651 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -276,7 +276,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 671 "paper/pdas.nw"
+#line 673 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -296,7 +296,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 630 "paper/pdas.nw"
+#line 632 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -307,12 +307,12 @@ static int hold_stopping(Qp_workspace *w)
   int push = fabs(N) <= noise ? 0 : N > 0 ? 1 : -1;
   while ((t = least_slide(w, push)) >= 0) {
     w->pdas.act[t] = HELD, held++;
-    if ((absorbed += 2 * w->fhi[t]) >= fabs(N)) break;
+    if ((absorbed += 2 * w->fhi[t]) >= fabs(N) - noise) break;
   }
   return held > 0;
 }
 
-#line 708 "paper/pdas.nw"
+#line 710 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -324,13 +324,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 722 "paper/pdas.nw"
+#line 724 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 734 "paper/pdas.nw"
+#line 736 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -344,13 +344,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 727 "paper/pdas.nw"
+#line 729 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 756 "paper/pdas.nw"
+#line 758 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -392,7 +392,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 817 "paper/pdas.nw"
+#line 819 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -411,7 +411,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 842 "paper/pdas.nw"
+#line 844 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -461,7 +461,7 @@ return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
 #line 360 "paper/pdas.nw"
 }
 
-#line 880 "paper/pdas.nw"
+#line 882 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -478,7 +478,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 899 "paper/pdas.nw"
+#line 901 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -486,7 +486,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 918 "paper/pdas.nw"
+#line 920 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -498,7 +498,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 936 "paper/pdas.nw"
+#line 938 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -521,11 +521,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 929 "paper/pdas.nw"
+#line 931 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 969 "paper/pdas.nw"
+#line 971 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)
