@@ -1221,7 +1221,7 @@ return fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
             L->path, sides, p->friction, h.vertical, h.capacity, h.load);
 #line 1989 "paper/scene.nw"
 }
-#line 2056 "paper/scene.nw"
+#line 2059 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1246,7 +1246,7 @@ static int read_contact(Loader *L, Scene *s)
   if (p->max_fixed_point < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2038 "paper/scene.nw"
+#line 2041 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1261,7 +1261,7 @@ static int read_loads(Loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2089 "paper/scene.nw"
+#line 2092 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1274,7 +1274,7 @@ static int read_solver(Loader *L, Scene *s)
                  "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                  problem_contact_name(s->problem.contact));
   
-#line 2118 "paper/scene.nw"
+#line 2121 "paper/scene.nw"
 if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -1285,7 +1285,7 @@ if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                problem_bc_name(s->problem.side[0].kind),
                problem_bc_name(s->problem.side[1].kind),
                problem_bc_name(s->problem.side[2].kind));
-#line 2101 "paper/scene.nw"
+#line 2104 "paper/scene.nw"
   if ((rc = real(L, "solver", "tol", &o->tol))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative residual");
@@ -1296,7 +1296,7 @@ if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2140 "paper/scene.nw"
+#line 2143 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1321,7 +1321,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2174 "paper/scene.nw"
+#line 2177 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1334,7 +1334,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2191 "paper/scene.nw"
+#line 2194 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1354,14 +1354,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2214 "paper/scene.nw"
+#line 2217 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2231 "paper/scene.nw"
+#line 2234 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1390,7 +1390,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2263 "paper/scene.nw"
+#line 2266 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1414,7 +1414,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2291 "paper/scene.nw"
+#line 2294 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1427,7 +1427,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2309 "paper/scene.nw"
+#line 2312 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1451,18 +1451,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2338 "paper/scene.nw"
+#line 2341 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2332 "paper/scene.nw"
+#line 2335 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2355 "paper/scene.nw"
+#line 2358 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1478,7 +1478,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2378 "paper/scene.nw"
+#line 2381 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];
