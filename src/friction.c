@@ -1,15 +1,15 @@
-#line 172 "paper/friction.nw"
+#line 386 "paper/friction.nw"
 #include <math.h>
 #include "friction.h"
 
-#line 182 "paper/friction.nw"
+#line 400 "paper/friction.nw"
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
-#line 193 "paper/friction.nw"
+#line 411 "paper/friction.nw"
 void friction_coulomb_bounds(const Problem *p, const Dofs *d,
                              const double *T, double *slip)
 {
@@ -20,14 +20,14 @@ void friction_coulomb_bounds(const Problem *p, const Dofs *d,
     slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
   }
 }
-#line 206 "paper/friction.nw"
+#line 424 "paper/friction.nw"
 double friction_work(const Dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
-#line 218 "paper/friction.nw"
+#line 436 "paper/friction.nw"
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G)
 {
@@ -42,4 +42,50 @@ void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
       G[j + 1] += rate, G[j] -= rate;
     }
   }
+}
+#line 457 "paper/friction.nw"
+int friction_side_holds(const Problem *p, int component)
+{
+  for (int id = 0; id < SIDE_COUNT; id++) {
+    Bc_kind k = p->side[id].kind;
+    if (k == BC_CLAMPED || (k == BC_ROLLER && (id == SIDE_TOP) == (component == 1)))
+      return 1;
+  }
+  return 0;
+}
+#line 471 "paper/friction.nw"
+/* L = the total load (L1, L2) of a body of this area, N/m */
+static void total_load(const Problem *p, double area, double L[2])
+{
+  for (int j = 0; j < 2; j++) L[j] = p->F[j] * area;
+  for (int id = 0; id < SIDE_COUNT; id++)
+    if (p->side[id].kind == BC_TRACTION)
+      for (int j = 0; j < 2; j++)
+        L[j] += p->side[id].P[j] * (p->side[id].to - p->side[id].from);
+}
+#line 484 "paper/friction.nw"
+Friction_hold friction_hold(const Problem *p)
+{
+  double w = p->b - p->a, area[2] = {(p->gamma - p->C0prime) * w, p->gamma * w};
+  Friction_hold least = {0, 0, 0};
+  for (int end = 0; end < 2; end++) {
+    double L[2];
+    total_load(p, area[end], L);
+    Friction_hold h = {0, fabs(L[0]), -L[1]};
+    if (p->contact == CONTACT_TRESCA) h.capacity = p->slip_bound * w;
+    if (p->contact == CONTACT_COULOMB) h.capacity = p->friction * fmax(h.vertical, 0);
+    if (end == 0 || h.capacity - h.load < least.capacity - least.load) least = h;
+  }
+  return least;
+}
+#line 503 "paper/friction.nw"
+void friction_coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+                            const double *b, double *slip)
+{
+  double W = 0, length = 0;
+  for (int k = 1; k < d->ndof; k += 2)
+    if (d->unknown[k] >= 0) W -= b[d->unknown[k]];
+  for (int k = 0; k < d->nt; k++)
+    length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
+  for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
 }

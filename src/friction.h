@@ -1,11 +1,11 @@
-#line 140 "paper/friction.nw"
+#line 329 "paper/friction.nw"
 #ifndef CONTACTOPT_FRICTION_H
 #define CONTACTOPT_FRICTION_H
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-#line 153 "paper/friction.nw"
+#line 342 "paper/friction.nw"
 /* given friction: slip[k] = g omega_i, omega_i the tributary length of
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
@@ -20,5 +20,25 @@ double friction_work(const Dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 147 "paper/friction.nw"
+#line 362 "paper/friction.nw"
+/* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
+   side holds both, a roller on the left or the right u1, on the top u2 */
+int friction_side_holds(const Problem *p, int component);
+
+/* what friction can hold sideways against the horizontal load */
+typedef struct {
+  double capacity;  /* N/m: the largest total tangential force: g (b - a),
+                       F W, or 0 without friction */
+  double load;      /* N/m: |L1|, the total horizontal load */
+  double vertical;  /* N/m: W, the total load that presses the body down */
+} Friction_hold;
+/* capacity and loads at the design the mesh admits where the margin
+   capacity - load is least */
+Friction_hold friction_hold(const Problem *p);
+
+/* Coulomb's first bounds where no side holds u1: slip[k] = F W omega_k /
+   sum omega, W minus the u2 components of b */
+void friction_coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+                            const double *b, double *slip);
+#line 336 "paper/friction.nw"
 #endif

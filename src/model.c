@@ -29,7 +29,7 @@ md->Q = calloc(n, sizeof *md->Q);
 md->lo = malloc((nc ? nc : 1) * sizeof *md->lo);
 md->T = calloc(nc + nt + 1, sizeof *md->T);
 md->slip = calloc(nt + 1, sizeof *md->slip);
-md->fixed_point_tol = solver->tol, md->fixed_point_max = solver->max_iter;
+md->fixed_point_tol = solver->tol;
 if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   model_free(md);
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
@@ -39,7 +39,7 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   
 #line 194 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
-                nt, md->dofs->tangent, md->slip };
+                nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
@@ -47,7 +47,7 @@ if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
 #line 174 "paper/model.nw"
   return md;
 }
-#line 208 "paper/model.nw"
+#line 210 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -55,7 +55,7 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-#line 245 "paper/model.nw"
+#line 247 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
@@ -63,7 +63,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 293 "paper/model.nw"
+#line 323 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -72,36 +72,56 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 261 "paper/model.nw"
+#line 301 "paper/model.nw"
+#define COULOMB_STALL 10  /* rounds without halving the change: a stall */
+
+static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
+{
+  if (stalled >= COULOMB_STALL)
+    return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point stopped "
+      "converging: the change of the normal forces did not halve in its last "
+      "%d of %d iterations (from %.3g to %.3g relative, > solver.tol = %.3g); "
+      "successive approximations converge only for a small enough friction "
+      "(here %g)", stalled, md->fixed_point_iterations, mark,
+      md->fixed_point_residual, md->fixed_point_tol, md->problem->friction);
+  return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
+    "converge in %d iterations (contact.max_fixed_point): the normal forces "
+    "still change by %.3g relative > solver.tol = %.3g; successive "
+    "approximations converge only for a small enough friction (here %g)",
+    md->fixed_point_iterations, md->fixed_point_residual,
+    md->fixed_point_tol, md->problem->friction);
+}
+#line 268 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
-  int nc = md->dofs->nc, rc, steps = 0;
-  double *Tn = malloc((nc + 1) * sizeof *Tn);
+  const Problem *p = md->problem;
+  int nc = md->dofs->nc, rc, steps = 0, stalled = 0;
+  double *Tn = malloc((nc + 1) * sizeof *Tn), mark = INFINITY;
   if (!Tn) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
   memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
+  if (!friction_side_holds(p, 0))
+    friction_coulomb_start(p, md->mesh, md->dofs, md->b, md->slip);
   rc = model_state(md, st);
   md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
   while (!rc && md->fixed_point_residual > md->fixed_point_tol
-         && md->fixed_point_iterations < md->fixed_point_max) {
+         && md->fixed_point_iterations < p->max_fixed_point
+         && stalled < COULOMB_STALL) {
     memcpy(Tn, md->T, nc * sizeof *Tn);
-    friction_coulomb_bounds(md->problem, md->dofs, Tn, md->slip);
+    friction_coulomb_bounds(p, md->dofs, Tn, md->slip);
     steps += md->report.iterations;
     rc = model_state(md, st);
     md->fixed_point_iterations++;
     md->fixed_point_residual = model_change(Tn, md->T, nc);
+    if (md->fixed_point_residual <= mark / 2) mark = md->fixed_point_residual, stalled = 0;
+    else stalled++;
   }
   free(Tn);
   md->report.iterations += steps;
   if (!rc && md->fixed_point_residual > md->fixed_point_tol)
-    rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
-      "converge in %d iterations (solver.max_iter): the normal forces still "
-      "change by %.3g relative > solver.tol = %.3g; successive approximations "
-      "converge only for a small enough friction (here %g)",
-      md->fixed_point_iterations, md->fixed_point_residual,
-      md->fixed_point_tol, md->problem->friction);
+    rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 221 "paper/model.nw"
+#line 223 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -124,13 +144,13 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 315 "paper/model.nw"
+#line 345 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 323 "paper/model.nw"
+#line 353 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -145,7 +165,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 339 "paper/model.nw"
+#line 369 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -156,7 +176,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 433 "paper/model.nw"
+#line 463 "paper/model.nw"
 double model_memory(const Problem *p)
 {
   double nodes = (p->N + 1.0) * (p->M + p->R + 1.0), n = 2 * nodes;
@@ -164,7 +184,7 @@ double model_memory(const Problem *p)
   double factor = 5.1 * n * log2(n > 2 ? n : 2);
   return 3 * 8 * nk * nk + 12 * factor + 400 * n;
 }
-#line 444 "paper/model.nw"
+#line 474 "paper/model.nw"
 int model_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
   double need = model_memory(p) + extra;
@@ -177,14 +197,14 @@ int model_fits(const Problem *p, double extra, const char *origin, Status *st)
                     "about %.3g GB, more than the %.3g GB this process may use",
                     origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
 }
-#line 408 "paper/model.nw"
+#line 438 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 376 "paper/model.nw"
+#line 406 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -197,13 +217,13 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 395 "paper/model.nw"
+#line 425 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 388 "paper/model.nw"
+#line 418 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

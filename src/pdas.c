@@ -1,4 +1,4 @@
-#line 188 "paper/pdas.nw"
+#line 190 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,9 +7,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 329 "paper/pdas.nw"
+#line 331 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 317 "paper/pdas.nw"
+#line 319 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
@@ -18,10 +18,10 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 337 "paper/pdas.nw"
+#line 339 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
 
-#line 751 "paper/pdas.nw"
+#line 862 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -34,7 +34,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 257 "paper/pdas.nw"
+#line 259 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -56,7 +56,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   free(last), free(perm);
   if (!ok) return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 282 "paper/pdas.nw"
+#line 284 "paper/pdas.nw"
 if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
@@ -66,10 +66,10 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 278 "paper/pdas.nw"
+#line 280 "paper/pdas.nw"
 }
 
-#line 228 "paper/pdas.nw"
+#line 230 "paper/pdas.nw"
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -93,7 +93,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 294 "paper/pdas.nw"
+#line 296 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -105,7 +105,7 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 203 "paper/pdas.nw"
+#line 205 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -122,7 +122,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 434 "paper/pdas.nw"
+#line 437 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -136,7 +136,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 454 "paper/pdas.nw"
+#line 457 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -147,7 +147,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 474 "paper/pdas.nw"
+#line 477 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -156,7 +156,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 464 "paper/pdas.nw"
+#line 467 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -165,7 +165,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 487 "paper/pdas.nw"
+#line 490 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -182,7 +182,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 507 "paper/pdas.nw"
+#line 510 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -203,7 +203,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 410 "paper/pdas.nw"
+#line 413 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -226,7 +226,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 546 "paper/pdas.nw"
+#line 549 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -234,7 +234,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 569 "paper/pdas.nw"
+#line 572 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -246,7 +246,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 553 "paper/pdas.nw"
+#line 556 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -257,7 +257,62 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 599 "paper/pdas.nw"
+#line 651 "paper/pdas.nw"
+/* 1 if every tangential unknown is free (and there is one): N = the sum
+   of their right-hand sides, noise = the rounding it may carry */
+static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
+{
+  const Pdas_workspace *pd = &w->pdas;
+  double sum = 0, size = 0;
+  for (int t = w->nc; t < w->nk; t++) {
+    if (pd->act[t] == HELD) return 0;
+    const double *St = pd->S + (size_t) t * w->nk;
+    double F = pd->act[t] == FORCE_HI ? w->fhi[t] : w->flo[t];
+    sum += pd->f[t] + F, size += fabs(pd->f[t]) + fabs(F);
+    for (int c = 0; c < w->nk; c++)
+      if (pd->act[c] == HELD)
+        sum -= St[c] * w->pos[c], size += fabs(St[c] * w->pos[c]);
+  }
+  *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
+  return w->nk > w->nc;
+}
+#line 673 "paper/pdas.nw"
+/* the free tangential unknown with an interval, its force of the sign of
+   push (any if push is 0), that slides least: the first within TIE of
+   the least; -1 if none */
+static int least_slide(const Qp_workspace *w, int push)
+{
+  const double TIE = 1e-6;
+  const Pdas_workspace *pd = &w->pdas;
+  int least = -1;
+  for (int t = w->nc; t < w->nk; t++) {
+    double F = pd->act[t] == FORCE_HI ? w->fhi[t] : w->flo[t];
+    if (pd->act[t] == HELD || !(w->fhi[t] > w->flo[t]) || (push && !(F * push > 0)))
+      continue;
+    double slide = fabs(pd->y[t] - w->pos[t]);
+    if (least < 0 || slide < (1 - TIE) * fabs(pd->y[least] - w->pos[least]))
+      least = t;
+  }
+  return least;
+}
+
+#line 632 "paper/pdas.nw"
+/* where every tangential unknown is free, hold those that stop first
+   as the net force N pushes the body; 1 if it held any */
+static int hold_stopping(Qp_workspace *w)
+{
+  double N, noise, absorbed = 0;
+  int t, held = 0;
+  if (!slide_imbalance(w, &N, &noise)) return 0;
+  int push = fabs(N) <= noise ? 0 : N > 0 ? 1 : -1;
+  while ((t = least_slide(w, push)) >= 0) {
+    w->pdas.act[t] = HELD, held++;
+    if ((absorbed += 2 * w->fhi[t]) >= fabs(N) - noise) break;
+  }
+  return held > 0;
+}
+
+#line 710 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -269,13 +324,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 613 "paper/pdas.nw"
+#line 724 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 625 "paper/pdas.nw"
+#line 736 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -289,13 +344,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 618 "paper/pdas.nw"
+#line 729 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 647 "paper/pdas.nw"
+#line 758 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -337,7 +392,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 708 "paper/pdas.nw"
+#line 819 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -356,7 +411,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 733 "paper/pdas.nw"
+#line 844 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -372,18 +427,19 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 341 "paper/pdas.nw"
+#line 343 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 361 "paper/pdas.nw"
+#line 364 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 347 "paper/pdas.nw"
+#line 349 "paper/pdas.nw"
   }
+  if (w->qp->slides) hold_stopping(w);
   if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
     code = newton_solve(w);
@@ -393,7 +449,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 377 "paper/pdas.nw"
+#line 380 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -402,10 +458,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 357 "paper/pdas.nw"
+#line 360 "paper/pdas.nw"
 }
 
-#line 771 "paper/pdas.nw"
+#line 882 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -422,7 +478,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 790 "paper/pdas.nw"
+#line 901 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -430,7 +486,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 809 "paper/pdas.nw"
+#line 920 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -442,7 +498,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 827 "paper/pdas.nw"
+#line 938 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -465,11 +521,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 820 "paper/pdas.nw"
+#line 931 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 860 "paper/pdas.nw"
+#line 971 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

@@ -44,9 +44,11 @@ typedef struct {
   Contact_law contact;
   double slip_bound;   /* CONTACT_TRESCA: g >= 0 */
   double friction;     /* CONTACT_COULOMB: F >= 0 */
+  int max_fixed_point; /* CONTACT_COULOMB: the most rounds of its fixed
+                          point after the first solve, >= 1 */
 } Problem;
 
-#line 171 "paper/problem.nw"
+#line 176 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */

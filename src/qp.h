@@ -8,7 +8,8 @@
 /* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
    x[ic[c]] >= lo[c], c = 0..nc-1; with given friction, plus
    sum_k s_k |x[it[k]]|.  A is symmetric positive semidefinite, and
-   positive definite on the subspace x[ic] = 0. */
+   positive definite on the subspace x[ic] = 0, x[it] = 0; on x[ic] = 0
+   too unless slides. */
 typedef struct {
   const cholmod_sparse *A; /* n x n, both triangles stored, sorted, packed */
   const double *b;         /* n: the load vector F + P */
@@ -18,8 +19,11 @@ typedef struct {
   int nt;                  /* number of slipping unknowns; 0: frictionless */
   const int *it;           /* nt: their indices, increasing, none in ic */
   const double *slip;      /* nt: their slip bounds s_k >= 0 (forces) */
+  int slides;              /* 1: A e = 0 for an e that is 1 at every
+                              slipping unknown and 0 at every bounded one
+                              (only friction holds the body sideways) */
 } Qp;
-#line 89 "paper/qp.nw"
+#line 93 "paper/qp.nw"
 typedef enum { QP_PDAS, QP_PSOR, QP_CGSSOR } Qp_method;
 
 typedef struct {
@@ -33,7 +37,7 @@ typedef struct {
 Qp_options qp_options_default(Qp_method method);
 /* "pdas", "psor", "cgssor", or "?" */
 const char *qp_method_name(Qp_method method);
-#line 105 "paper/qp.nw"
+#line 109 "paper/qp.nw"
 typedef struct {
   int iterations;          /* sweeps, CG steps or Newton steps used */
   double kkt;              /* qp_kkt at the returned x */
@@ -42,7 +46,7 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-#line 120 "paper/qp.nw"
+#line 124 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
@@ -51,7 +55,7 @@ int qp_iterate(Qp_workspace *w, Status *st);
 int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
 void qp_free(Qp_workspace *w);
-#line 131 "paper/qp.nw"
+#line 135 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
    STATUS_NUMERIC when not converged. */

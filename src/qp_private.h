@@ -1,4 +1,4 @@
-#line 177 "paper/qp.nw"
+#line 181 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
@@ -7,7 +7,7 @@
 #include <math.h>
 #include "qp.h"
 
-#line 243 "paper/qp.nw"
+#line 247 "paper/qp.nw"
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -37,7 +37,7 @@ typedef struct {
   int stepped;           /* y, T come from a Newton step (not a guess) */
 } Pdas_workspace;
 
-#line 277 "paper/qp.nw"
+#line 281 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -49,7 +49,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 211 "paper/qp.nw"
+#line 215 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -76,7 +76,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 520 "paper/qp.nw"
+#line 524 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -135,7 +135,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 672 "paper/qp.nw"
+#line 676 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -148,7 +148,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 692 "paper/qp.nw"
+#line 696 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -164,7 +164,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 293 "paper/qp.nw"
+#line 297 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -179,7 +179,7 @@ int qp_count_active(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 316 "paper/qp.nw"
+#line 320 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -202,5 +202,5 @@ int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 200 "paper/qp.nw"
+#line 204 "paper/qp.nw"
 #endif

@@ -3,7 +3,10 @@
 # carry friction only where a scene asks for it; the friction work of the
 # summary is the one the contact file implies; every optimiser reaches
 # the same optimum of the friction scene; the gradient agrees with finite
-# differences; the Coulomb fixed point meets |Tt| <= F Tn; and what has no
+# differences; the Coulomb fixed point meets |Tt| <= F Tn, and stops at its
+# own limit or when it stalls; a body that only friction holds sideways is
+# solved when friction can hold it (|Tt| <= g omega, the forces carry the
+# loads) and refused with the numbers when it cannot; and what has no
 # meaning (the gradient of a Coulomb state, psor with friction) or does not
 # converge is refused cleanly.
 . tests/lib.sh
@@ -86,9 +89,21 @@ if $BIN solve $tr -o $TMP/co $co >/dev/null 2>$TMP/err; then
   check "coulomb: |Tt| <= F Tn at every node, to 1e-8 of max T" \
     le "$(rows_max 'abs($8) - 0.2 * $5' $TMP/co/contact.dat)" "$(calc '1e-8 * t' t=$Tmax)"
 else fail "coulomb solve: $(cat $TMP/err)"; fi
-$BIN solve $tr -o $TMP/co7 $co -s solver.max_iter=7 >/dev/null 2>$TMP/err
-check "coulomb: a fixed point not reached within solver.max_iter = 7: exit 3, one line, no folder" \
-  clean_failure $? 3 $TMP/err $TMP/co7 'fixed point did not converge in 7 iterations'
+$BIN solve $tr -o $TMP/co7 $co -s contact.max_fixed_point=7 >/dev/null 2>$TMP/err
+check "coulomb: a fixed point not reached within contact.max_fixed_point = 7: exit 3, one line, no folder" \
+  clean_failure $? 3 $TMP/err $TMP/co7 'fixed point did not converge in 7 iterations \(contact.max_fixed_point\)'
+if $BIN solve $tr -o $TMP/co-mi7 $co -s solver.max_iter=7 >/dev/null 2>$TMP/err; then
+  check "coulomb: solver.max_iter = 7 bounds the state solver's steps, not the fixed point's $(value fixed_point_iterations $TMP/co-mi7) rounds" \
+    test "$(value fixed_point_iterations $TMP/co-mi7)" -gt 7
+else fail "coulomb with solver.max_iter = 7: $(cat $TMP/err)"; fi
+# Example 5.2 at F = 100: the fixed point alternates between two states
+# from its fourth round; it stops when the change has not halved in 10
+for m in pdas cgssor; do
+  $BIN solve data/example-5.2.scene -o $TMP/co-cycle-$m -s contact.model=coulomb \
+    -s contact.friction=100 -s solver.state=$m >/dev/null 2>$TMP/err
+  check "coulomb, a fixed point that cycles ($m): stops on the stall within 20 rounds: exit 3, one line, no folder: $(cat $TMP/err)" \
+    clean_failure $? 3 $TMP/err $TMP/co-cycle-$m 'stopped converging: the change of the normal forces did not halve in its last 10 of 1[0-9] iterations'
+done
 for cmd in optimize gradcheck; do
   $BIN $cmd $tr -o $TMP/co-$cmd $co >/dev/null 2>$TMP/err
   check "coulomb: $cmd refused (no gradient of an energy): exit 2, one line, no folder" \
@@ -97,4 +112,71 @@ done
 $BIN solve $tr -o $TMP/psor -s solver.state=psor >/dev/null 2>$TMP/err
 check "psor with friction: refused, exit 2, one line naming the key" \
   clean_failure $? 2 $TMP/err $TMP/psor 'solver.state = psor: cannot take friction'
+
+# ---- a body that friction alone holds sideways (the section "Bodies that
+# friction alone holds sideways"): the friction scene with free sides and
+# 1e7 Pa sideways on [2, 4], a horizontal load L1 = 2e7 N/m, and the
+# vertical one W = 5.75e8 * 2 = 1.15e9 N/m
+held="-s left.bc=free -s right.bc=free -s top.P1=1e7"
+# omega FILE: contact.dat's rows as x1 omega T u1 Tt, omega half the
+# contact edges next to the node, from the columns x1 and alpha
+omega() { awk 'NR > 1 && !/^#/ { n++; x[n] = $1; a[n] = $2; T[n] = $5; u[n] = $7; t[n] = $8 }
+  function len(i) { return sqrt((x[i + 1] - x[i])^2 + (a[i + 1] - a[i])^2) }
+  END { for (i = 1; i <= n; i++)
+          printf "%s %.17g %s %s %s\n", x[i], ((i > 1 ? len(i - 1) : 0) + (i < n ? len(i) : 0)) / 2, T[i], u[i], t[i] }' "$1"; }
+if $BIN solve $tr -o $TMP/held $held -s contact.g=2e8 >/dev/null 2>$TMP/err; then
+  omega $TMP/held/contact.dat > $TMP/held.rows
+  check "held by friction, g = 2e8 Pa: |Tt| <= g omega at every node, to 1e-8 of g omega" \
+    le "$(rows_max 'abs($5) / (2e8 * $2) - 1' $TMP/held.rows)" 1e-8
+  check "held by friction: the tangential forces carry the horizontal load, sum Tt = -2e7 N/m ($(rows_sum '$5' $TMP/held.rows))" \
+    near_ref -2e7 "$(rows_sum '$5' $TMP/held.rows)" 1e-9
+  check "held by friction: the normal forces carry the vertical load, sum T = 1.15e9 N/m" \
+    near_ref 1.15e9 "$(rows_sum '$3' $TMP/held.rows)" 1e-9
+  check "held by friction: the nodes in contact stick (u1 = 0 under a tangential force)" \
+    test "$(awk 'NR > 1 && $4 == 0 && ($7 != 0 || $8 == 0)' $TMP/held/contact.dat | wc -l)" -eq 0 -a \
+         "$(awk 'NR > 1 && $4 == 0' $TMP/held/contact.dat | wc -l)" -gt 0
+else fail "held by friction, g = 2e8 Pa: $(cat $TMP/err)"; fi
+$BIN solve $tr -o $TMP/held-small $held -s contact.g=4e6 >/dev/null 2>$TMP/err
+check "held by friction, g = 4e6 Pa: refused with the capacity and the load: exit 2, one line, no folder" \
+  clean_failure $? 2 $TMP/err $TMP/held-small 'no side holds u1, and friction cannot hold the body' \
+  'g \(b - a\) = 1.6e\+07 N/m' 'horizontal load of 2e\+07 N/m'
+$BIN solve $tr -o $TMP/held-cg $held -s contact.g=2e8 -s solver.state=cgssor >/dev/null 2>$TMP/err
+check "held by friction: cgssor refused (its dual needs S positive definite): exit 2, one line, no folder" \
+  clean_failure $? 2 $TMP/err $TMP/held-cg 'solver.state = cgssor: cannot take friction' 'use pdas'
+for m in newton slsqp; do
+  $BIN optimize $tr -o $TMP/held-$m $held -s contact.g=2e8 -s optimizer.method=$m >/dev/null 2>$TMP/err \
+    || fail "held by friction, optimize $m: $(cat $TMP/err)"
+done
+check "held by friction: optimize newton converges ($(value iterations $TMP/held-newton) iterations)" \
+  test "$(value stop_reason $TMP/held-newton)" = converged
+check "held by friction: slsqp's E* agrees with the Newton method's to 1e-9" \
+  near_ref "$(value energy $TMP/held-newton)" "$(value energy $TMP/held-slsqp)" 1e-9
+co_held="$held -s contact.model=coulomb -s contact.g= -s contact.friction=0.2"
+if $BIN solve $tr -o $TMP/held-co $co_held >/dev/null 2>$TMP/err; then
+  omega $TMP/held-co/contact.dat > $TMP/held-co.rows
+  Tmax=$(rows_max '$3' $TMP/held-co.rows)
+  check "held by Coulomb friction, F = 0.2: |Tt| <= F T at every node, to 1e-8 of max T; $(value fixed_point_iterations $TMP/held-co) rounds" \
+    le "$(rows_max 'abs($5) - 0.2 * $3' $TMP/held-co.rows)" "$(calc '1e-8 * t' t=$Tmax)"
+  check "held by Coulomb friction: sum Tt = -2e7 N/m, sum T = 1.15e9 N/m" \
+    holds 'abs(t + 2e7) <= 2e-2 && abs(n - 1.15e9) <= 1.15' \
+      t="$(rows_sum '$5' $TMP/held-co.rows)" n="$(rows_sum '$3' $TMP/held-co.rows)"
+else fail "held by Coulomb friction, F = 0.2: $(cat $TMP/err)"; fi
+$BIN solve $tr -o $TMP/held-co-small $co_held -s contact.friction=0.01 >/dev/null 2>$TMP/err
+check "held by Coulomb friction, F = 0.01: refused with F W and the load: exit 2, one line, no folder" \
+  clean_failure $? 2 $TMP/err $TMP/held-co-small 'vertical load 1.15e\+09 N/m holds at most 1.15e\+07 N/m' \
+  'horizontal load of 2e\+07 N/m'
+# pressed flat and symmetrically (L1 = 0) at g = 1e5 Pa, N = 15: no node at
+# the middle, the two halves slide apart, and every position by less than
+# the innermost slide is a state; pdas holds the first of the two
+# innermost nodes (x1 = 1.8666666667, the 8th), whatever the rounding
+flat="-s left.bc=free -s right.bc=free -s top.from=0 -s design.initial=constant -s design.constant=0 -s design.arc_x1= -s design.arc_x2= -s design.arc_radius= -s design.N=15 -s contact.g=1e5"
+if $BIN solve $tr -o $TMP/flat $flat >/dev/null 2>$TMP/err; then
+  omega $TMP/flat/contact.dat > $TMP/flat.rows
+  check "flat and symmetric, every node but one sliding: |Tt| <= g omega, to 1e-8 of g omega" \
+    le "$(rows_max 'abs($5) / (1e5 * $2) - 1' $TMP/flat.rows)" 1e-8
+  check "flat and symmetric: sum Tt = 0 to 1e-9 of g (b - a)" \
+    holds 'abs(t) <= 4e-4' t="$(rows_sum '$5' $TMP/flat.rows)"
+  check "flat and symmetric: one node at rest, the 8th (x1 = 1.8666666667)" \
+    test "$(awk '$4 == 0 { print NR }' $TMP/flat.rows | tr '\n' ' ')" = "8 "
+else fail "flat and symmetric: $(cat $TMP/err)"; fi
 finish

@@ -60,7 +60,7 @@ static void problem_finish(Problem *P)
   t->nnz = k;
   P->A = cholmod_triplet_to_sparse(t, k, &cm);
   cholmod_free_triplet(&t, &cm);
-  P->qp = (Qp) { P->A, P->b, P->nc, P->ic, P->lo, 0, NULL, NULL };
+  P->qp = (Qp) { P->A, P->b, P->nc, P->ic, P->lo, 0, NULL, NULL, 0 };
 }
 
 static void problem_free(Problem *P)

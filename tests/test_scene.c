@@ -652,6 +652,93 @@ static void test_condition_errors(void)
               "[solver]\nstate = psor\n", "solver.state", "use pdas or cgssor");
 }
 
+/* a body that no side holds sideways (Example 5.1 with free sides and a
+   horizontal load of 1e7 Pa over [2, 4], L1 = 2e7 N/m, and the vertical
+   load W = 5.75e8 * 2 = 1.15e9 N/m) loads when friction can hold it:
+   capacity g (b - a) or F W above |L1|, at the least favourable area of
+   the body for a body force (Section "Bodies that friction alone holds
+   sideways"); refused otherwise, with the numbers */
+static int held_load(int n, char **extra, Status *st)
+{
+  char *ov[12] = {"left.bc=free", "right.bc=free", "top.P1=1e7"};
+  Scene s;
+  memcpy(ov + 3, extra, n * sizeof *extra);
+  *st = (Status) {STATUS_OK, ""};
+  int rc = scene_load(&s, "data/example-5.1.scene", 3 + n, ov, st);
+  scene_free(&s);
+  return rc;
+}
+
+static void held_accepted(const char *what, int n, char **extra)
+{
+  Status st;
+  int rc = held_load(n, extra, &st);
+  check(rc == 0, "held by friction: %s: loads%s%s", what, rc ? ": " : "", st.msg);
+}
+
+static void held_refused(const char *what, int n, char **extra,
+                         const char *word1, const char *word2)
+{
+  Status st;
+  int rc = held_load(n, extra, &st);
+  check(rc == STATUS_INPUT && strstr(st.msg, "data/example-5.1.scene")
+        && strstr(st.msg, "no side holds u1") && strstr(st.msg, word1)
+        && strstr(st.msg, word2) && !strchr(st.msg, '\n'),
+        "held by friction: %s: refused: %s", what, st.msg);
+}
+
+static void test_held_by_friction(void)
+{
+  char *big[] = {"contact.model=tresca", "contact.g=2e8"};
+  char *small[] = {"contact.model=tresca", "contact.g=4e6"};
+  char *equal[] = {"contact.model=tresca", "contact.g=5e6"};
+  char *above[] = {"contact.model=tresca", "contact.g=5.0000001e6"};
+  char *co_in[] = {"contact.model=coulomb", "contact.friction=0.018"};
+  char *co_out[] = {"contact.model=coulomb", "contact.friction=0.017"};
+  char *co_roll[] = {"contact.model=coulomb", "contact.friction=0.2",
+                     "top.bc=roller", "top.from=", "top.to=", "top.P1=", "top.P2="};
+  char *tr_roll[] = {"contact.model=tresca", "contact.g=2e8", "top.bc=roller",
+                     "top.from=", "top.to=", "top.P1=", "top.P2=",
+                     "body_force.F1=1e6"};
+  char *body_in[] = {"contact.model=tresca", "contact.g=1.01e8", "top.P1=",
+                     "body_force.F1=1e8"};
+  char *body_out[] = {"contact.model=tresca", "contact.g=0.9e8", "top.P1=",
+                      "body_force.F1=1e8"};
+  char *none[] = {"top.P1="};
+  held_accepted("tresca, g (b - a) = 8e8 against 2e7 N/m", 2, big);
+  held_refused("tresca, g (b - a) = 1.6e7 against 2e7 N/m", 2, small,
+               "g (b - a) = 1.6e+07 N/m", "horizontal load of 2e+07 N/m");
+  held_refused("tresca, g (b - a) = 2e7, equal to the load", 2, equal,
+               "g (b - a) = 2e+07 N/m", "horizontal load of 2e+07 N/m");
+  held_accepted("tresca, g (b - a) just above the load", 2, above);
+  held_accepted("coulomb, F W = 0.018 * 1.15e9 = 2.07e7 against 2e7 N/m", 2, co_in);
+  held_refused("coulomb, F W = 0.017 * 1.15e9 = 1.955e7 against 2e7 N/m", 2,
+               co_out, "vertical load 1.15e+09 N/m holds at most 1.955e+07 N/m",
+               "horizontal load of 2e+07 N/m");
+  held_refused("coulomb with the top on rollers", 7, co_roll,
+               "the top holds u2", "use contact.model = tresca");
+  held_accepted("tresca with the top on rollers, a body force", 8, tr_roll);
+  held_accepted("body force, 1.01e8 * 4 = 4.04e8 against 1e8 * 4 N/m", 4, body_in);
+  held_refused("body force, 0.9e8 * 4 = 3.6e8 against 1e8 * 4 = 4e8 N/m at the "
+               "largest area", 4, body_out, "g (b - a) = 3.6e+08 N/m",
+               "horizontal load of 4e+08 N/m");
+  held_refused("frictionless, no horizontal load", 1, none,
+               "frictionless contact cannot stop the body sliding", "");
+  expect_edit("cgssor with friction on rollers", "[left]\nbc = clamped\n",
+              "[left]\nbc = roller\n[contact]\nmodel = tresca\ng = 1e8\n"
+              "[solver]\nstate = cgssor\n", "solver.state",
+              "do not hold in both directions (left.bc = roller, right.bc = "
+              "roller, top.bc = traction): its dual needs the stiffness seen "
+              "from the contact positive definite; use pdas");
+  expect_edit("max_fixed_point 0", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = coulomb\nfriction = 0.2\n"
+              "max_fixed_point = 0\n", "contact.max_fixed_point", "must be >= 1");
+  expect_edit("max_fixed_point with tresca", "\nP2 = -5.75e8\n",
+              "\nP2 = -5.75e8\n[contact]\nmodel = tresca\ng = 1e6\n"
+              "max_fixed_point = 5\n", "contact.max_fixed_point",
+              "no effect with model = tresca");
+}
+
 /* a scene path longer than Scene.path: the message names its start */
 static void test_long_path(void)
 {
@@ -730,6 +817,7 @@ int main(void)
   test_range_errors();
   test_initial_errors();
   test_condition_errors();
+  test_held_by_friction();
   test_file_and_override_errors();
   test_names();
   for (i = 0; i < nmade; i++) unlink(made[i]);
