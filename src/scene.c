@@ -1,6 +1,7 @@
-#line 343 "paper/scene.nw"
+#line 342 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -50,34 +51,14 @@ static const char *name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 432 "paper/scene.nw"
-/* buf = x in %g with the fewest digits that read back as x exactly, its
-   exponent without + and leading zeros (2.15e11, 1e-6) */
-static const char *shortest(double x, char *buf, size_t size)
-{
-  char *e;
-  int digits;
-  for (digits = 1; digits < 17; digits++) {
-    snprintf(buf, size, "%.*g", digits, x);
-    if (strtod(buf, NULL) == x) break;
-  }
-  if (digits == 17) snprintf(buf, size, "%.17g", x);
-  if ((e = strchr(buf, 'e'))) {
-    char *from = e + 1 + (e[1] == '+'), *to = e + 1 + (e[1] == '-');
-    if (*from == '-') from++;
-    while (*from == '0' && from[1]) from++;
-    memmove(to, from, strlen(from) + 1);
-  }
-  return buf;
-}
-#line 461 "paper/scene.nw"
+#line 441 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
 {
   Qp_options d = qp_options_default((Qp_method)k);
   if (strcmp(key, "max_iter") == 0) snprintf(buf, size, "%d", d.max_iter);
-  else shortest(strcmp(key, "tol") == 0 ? d.tol : d.omega, buf, size);
+  else status_number(strcmp(key, "tol") == 0 ? d.tol : d.omega, buf);
   return buf;
 }
 
@@ -89,10 +70,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   if (strcmp(key, "metric") == 0)
     snprintf(buf, size, "%s", opt_metric_name(d.metric));
   else if (strcmp(key, "max_iter") == 0) snprintf(buf, size, "%d", d.max_iter);
-  else shortest(d.tol, buf, size);
+  else status_number(d.tol, buf);
   return buf;
 }
-#line 490 "paper/scene.nw"
+#line 470 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -121,10 +102,10 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 657 "paper/scene.nw"
+#line 637 "paper/scene.nw"
 static const Key keys[] = {
   
-#line 524 "paper/scene.nw"
+#line 504 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -165,9 +146,9 @@ static const Key keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder"},
-#line 659 "paper/scene.nw"
+#line 639 "paper/scene.nw"
   
-#line 567 "paper/scene.nw"
+#line 547 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -183,9 +164,9 @@ static const Key keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 660 "paper/scene.nw"
+#line 640 "paper/scene.nw"
   
-#line 587 "paper/scene.nw"
+#line 567 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -209,9 +190,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 661 "paper/scene.nw"
+#line 641 "paper/scene.nw"
   
-#line 614 "paper/scene.nw"
+#line 594 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -227,9 +208,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "friction", KEY_REAL, .at = AT(problem.friction), .unit = "1",
  .selector = "model", .when = "coulomb", .accepted = "0 <= friction <= 1e30",
  .meaning = "Coulomb's coefficient of friction"},
-#line 662 "paper/scene.nw"
+#line 642 "paper/scene.nw"
   
-#line 632 "paper/scene.nw"
+#line 612 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -252,10 +233,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "max_iter", KEY_INT, .at = AT(optimizer.max_iter),
  .unit = "-", .by = optimizer_default, .selector = "method",
  .accepted = ">= 1", .meaning = "iteration limit of the optimiser"},
-#line 663 "paper/scene.nw"
+#line 643 "paper/scene.nw"
 };
 enum { NKEYS = sizeof keys / sizeof keys[0] };
-#line 669 "paper/scene.nw"
+#line 649 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 static const Key *key_find(const char *sec, const char *key)
 {
@@ -274,7 +255,7 @@ static int section_known(const char *sec)
     if (strcmp(keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 692 "paper/scene.nw"
+#line 672 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 static const char *key_names(const char *sec, char *buf, size_t size)
 {
@@ -290,7 +271,7 @@ static const char *key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 711 "paper/scene.nw"
+#line 691 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 static int key_means(const Key *k, const char *w)
 {
@@ -302,7 +283,7 @@ static int key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 734 "paper/scene.nw"
+#line 714 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)NKEYS <= (int)TABLE_MAX, "a scene's values fit the loader");
 
@@ -312,7 +293,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 749 "paper/scene.nw"
+#line 729 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -326,13 +307,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 780 "paper/scene.nw"
+#line 760 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 790 "paper/scene.nw"
+#line 770 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -351,7 +332,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 812 "paper/scene.nw"
+#line 792 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -359,7 +340,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 823 "paper/scene.nw"
+#line 803 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -369,7 +350,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 836 "paper/scene.nw"
+#line 816 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -389,7 +370,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 865 "paper/scene.nw"
+#line 845 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -397,7 +378,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   char where[640], list[256];
   origin(L, L->override, where, sizeof where);
   
-#line 886 "paper/scene.nw"
+#line 866 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -407,7 +388,7 @@ if (!section_known(sec))
 if (!key_find(sec, key))
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, key_names(sec, list, sizeof list));
-#line 872 "paper/scene.nw"
+#line 852 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -418,7 +399,7 @@ if (!key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 899 "paper/scene.nw"
+#line 879 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -428,7 +409,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 913 "paper/scene.nw"
+#line 893 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -439,14 +420,14 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 965 "paper/scene.nw"
+#line 945 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Loader *L)
 {
   return fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
               "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 985 "paper/scene.nw"
+#line 965 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 static int in_comment(const char *buf, int line)
 {
@@ -471,7 +452,7 @@ static int long_line(Loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 944 "paper/scene.nw"
+#line 924 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -490,7 +471,7 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1016 "paper/scene.nw"
+#line 996 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -501,7 +482,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1033 "paper/scene.nw"
+#line 1013 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -509,18 +490,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 1026 "paper/scene.nw"
+#line 1006 "paper/scene.nw"
   
-#line 1044 "paper/scene.nw"
+#line 1024 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 1027 "paper/scene.nw"
+#line 1007 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1085 "paper/scene.nw"
+#line 1065 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
 static int for_memory(Loader *L, int e)
 {
@@ -529,7 +510,7 @@ static int for_memory(Loader *L, int e)
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1058 "paper/scene.nw"
+#line 1038 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -549,18 +530,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1096 "paper/scene.nw"
+#line 1076 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1077 "paper/scene.nw"
+#line 1057 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1118 "paper/scene.nw"
+#line 1098 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -571,7 +552,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1135 "paper/scene.nw"
+#line 1115 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -585,7 +566,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1154 "paper/scene.nw"
+#line 1134 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -598,7 +579,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1179 "paper/scene.nw"
+#line 1159 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -610,7 +591,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1166 "paper/scene.nw"
+#line 1146 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -620,7 +601,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1208 "paper/scene.nw"
+#line 1188 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -660,7 +641,7 @@ static const char *to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1251 "paper/scene.nw"
+#line 1231 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -673,7 +654,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1267 "paper/scene.nw"
+#line 1247 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -684,7 +665,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1287 "paper/scene.nw"
+#line 1267 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -699,7 +680,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1304 "paper/scene.nw"
+#line 1284 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -718,7 +699,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1326 "paper/scene.nw"
+#line 1306 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -728,7 +709,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1338 "paper/scene.nw"
+#line 1318 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -738,7 +719,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1350 "paper/scene.nw"
+#line 1330 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -749,7 +730,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1366 "paper/scene.nw"
+#line 1346 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -763,16 +744,20 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1390 "paper/scene.nw"
+#line 1383 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
+/* the rounding of a ratio of decimals, relative: within it of a bound is on it */
+#define WINDOW_ROUNDING (4 * DBL_EPSILON)
 
-/* whether |x| / unit lies in the window (false if it overflows) */
+/* whether |x| / unit lies in the window, up to the rounding of the ratio
+   (false if it overflows) */
 static int in_window(double x, double unit)
 {
   double r = fabs(x) / unit;
-  return r >= WINDOW_MIN && r <= WINDOW_MAX;
+  return r >= WINDOW_MIN * (1 - WINDOW_ROUNDING)
+         && r <= WINDOW_MAX * (1 + WINDOW_ROUNDING);
 }
 
 /* refuse the load x = the value converted last, times `times`, unless
@@ -780,26 +765,29 @@ static int in_window(double x, double unit)
 static int check_load(Loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
+  char r[STATUS_NUMBER];
   if (x == 0 || in_window(x * times, s->problem.E)) return 0;
-  return blame(L, "%s / E = %.3g: a load must be 0 or lie within [1e-30, "
+  return blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                "1e30] times E, where every product the solvers form is "
-               "finite", what, fabs(x) * times / s->problem.E);
+               "finite", what, status_number(fabs(x) * times / s->problem.E, r));
 }
-#line 1420 "paper/scene.nw"
+#line 1418 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
+  char w[STATUS_NUMBER];
   int rc;
   if ((rc = real(L, "geometry", "a", &s->problem.a))
       || (rc = real(L, "geometry", "b", &s->problem.b)))
     return rc;
-  if (!(s->problem.b > s->problem.a)) return blame(L, "must exceed geometry.a = %g", s->problem.a);
+  if (!(s->problem.b > s->problem.a))
+    return blame(L, "must exceed geometry.a = %s", status_number(s->problem.a, w));
   if (!isfinite(s->problem.b - s->problem.a))
     return blame(L, "the width b - a overflows a double");
   if (!in_window(s->problem.b - s->problem.a, 1))
-    return blame(L, "the width b - a = %g must lie in [1e-30, 1e30], where "
+    return blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
                  "every product the solvers form is finite",
-                 s->problem.b - s->problem.a);
+                 status_number(s->problem.b - s->problem.a, w));
   if ((rc = real(L, "geometry", "gamma", &s->problem.gamma))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return blame(L, "the area gamma (b - a) overflows a double");
@@ -825,6 +813,7 @@ static int read_design(Loader *L, Scene *s)
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
+  char v[STATUS_NUMBER];
   int rc, k;
   if ((rc = integer(L, "mesh", "M", &s->problem.M))) return rc;
   if (s->problem.M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
@@ -833,7 +822,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1509 "paper/scene.nw"
+#line 1511 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -841,29 +830,32 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1487 "paper/scene.nw"
+#line 1488 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
-    return blame(L, "must exceed design.C0 = %g: the moving boundary must "
-                 "stay below the fixed part of the mesh", s->problem.C0);
+    return blame(L, "must exceed design.C0 = %s: the moving boundary must "
+                 "stay below the fixed part of the mesh", status_number(s->problem.C0, v));
   if (!(s->problem.gamma > s->problem.C0prime))
     return bad(L, find(L, "geometry", "gamma"), "must exceed mesh.C0prime "
-               "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
+               "= %s: the fixed part of the mesh needs a height",
+               status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1540 "paper/scene.nw"
+#line 1542 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
   double w = s->problem.b - s->problem.a, S = s->problem.gamma * w - s->problem.C2;
   double slack = 1e-12 * s->problem.gamma * w;
+  char v[2][STATUS_NUMBER];
   if (S >= -slack && S <= s->problem.C0 * w + slack) return 0;
   return bad(L, find(L, "design", "C2"), "C0, C1, C2 admit no shape: the "
-             "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
-             "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
+             "area under alpha would be S = gamma (b-a) - C2 = %s, outside "
+             "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
+             status_number(s->problem.C0 * w, v[1]));
 }
-#line 1560 "paper/scene.nw"
+#line 1564 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -876,7 +868,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1576 "paper/scene.nw"
+#line 1580 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -886,14 +878,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1588 "paper/scene.nw"
+#line 1592 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1600 "paper/scene.nw"
+#line 1604 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -904,7 +896,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1615 "paper/scene.nw"
+#line 1619 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -915,7 +907,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1628 "paper/scene.nw"
+#line 1632 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -926,7 +918,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1645 "paper/scene.nw"
+#line 1649 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -954,7 +946,7 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1675 "paper/scene.nw"
+#line 1679 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -977,7 +969,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 1791 "paper/scene.nw"
+#line 1795 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -990,7 +982,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 1748 "paper/scene.nw"
+#line 1752 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Loader *L, Scene *s, const char *path,
@@ -1008,14 +1000,14 @@ static int shape_from_rows(Loader *L, Scene *s, const char *path,
                    "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                    r->x[j - 1]);
   
-#line 1780 "paper/scene.nw"
+#line 1784 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 1765 "paper/scene.nw"
+#line 1769 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -1028,7 +1020,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 1704 "paper/scene.nw"
+#line 1708 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -1059,7 +1051,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 1809 "paper/scene.nw"
+#line 1813 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -1073,20 +1065,22 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1826 "paper/scene.nw"
+#line 1830 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
+  char v[3][STATUS_NUMBER];
   int i;
   for (i = 0; i <= s->problem.N; i++)
     if (!(s->alpha0[i] >= 0 && s->alpha0[i] < s->problem.C0prime))
-      return bad(L, find(L, "design", "initial"), "alpha0 = %g at node %d "
-                 "(x1 = %g) is outside [0, C0prime) = [0, %g)",
-                 s->alpha0[i], i, problem_node_x(&s->problem, i),
-                 s->problem.C0prime);
+      return bad(L, find(L, "design", "initial"), "alpha0 = %s at node %d "
+                 "(x1 = %s) is outside [0, C0prime) = [0, %s)",
+                 status_number(s->alpha0[i], v[0]), i,
+                 status_number(problem_node_x(&s->problem, i), v[1]),
+                 status_number(s->problem.C0prime, v[2]));
   return 0;
 }
-#line 1844 "paper/scene.nw"
+#line 1850 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -1104,7 +1098,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1872 "paper/scene.nw"
+#line 1878 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -1124,30 +1118,31 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1901 "paper/scene.nw"
+#line 1907 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
   const char *sec = side_names[id];
   Side *d = &s->problem.side[id];
+  char v[2][STATUS_NUMBER];
   int rc;
   
-#line 1922 "paper/scene.nw"
+#line 1929 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
   "the part of the side the design never moves, [C0prime, gamma]";
 if ((rc = real(L, sec, "from", &d->from))) return rc;
 if (!(d->from >= lo))
-  return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
-               lo, hi);
+  return blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+               status_number(lo, v[0]), status_number(hi, v[1]));
 if ((rc = real(L, sec, "to", &d->to))) return rc;
 if (!(d->to > d->from))
-  return blame(L, "must exceed %s.from = %g", sec, d->from);
+  return blame(L, "must exceed %s.from = %s", sec, status_number(d->from, v[0]));
 if (!(d->to <= hi))
-  return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
-               lo, hi);
-#line 1908 "paper/scene.nw"
+  return blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+               status_number(lo, v[0]), status_number(hi, v[1]));
+#line 1915 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = real(L, sec, "P2", &d->P[1]))
@@ -1158,7 +1153,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1940 "paper/scene.nw"
+#line 1947 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -1170,7 +1165,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1961 "paper/scene.nw"
+#line 1968 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -1184,7 +1179,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1977 "paper/scene.nw"
+#line 1984 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1193,7 +1188,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 2016 "paper/scene.nw"
+#line 2023 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1215,7 +1210,7 @@ static int read_contact(Loader *L, Scene *s)
     return blame(L, "must be <= 1e30: it multiplies a contact force");
   return 0;
 }
-#line 1999 "paper/scene.nw"
+#line 2006 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1229,7 +1224,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 2046 "paper/scene.nw"
+#line 2053 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1251,7 +1246,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2079 "paper/scene.nw"
+#line 2086 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1276,7 +1271,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2113 "paper/scene.nw"
+#line 2120 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1289,7 +1284,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2130 "paper/scene.nw"
+#line 2137 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1309,14 +1304,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2153 "paper/scene.nw"
+#line 2160 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2170 "paper/scene.nw"
+#line 2177 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1345,7 +1340,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2202 "paper/scene.nw"
+#line 2209 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1369,7 +1364,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2230 "paper/scene.nw"
+#line 2237 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1382,7 +1377,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2248 "paper/scene.nw"
+#line 2255 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1406,18 +1401,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2277 "paper/scene.nw"
+#line 2284 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2271 "paper/scene.nw"
+#line 2278 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2294 "paper/scene.nw"
+#line 2301 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1427,13 +1422,13 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   int v;
   if (k->at == AT_DEFAULT) return k->dflt;
   if (k->type == KEY_TEXT) return at;
-  if (k->type == KEY_REAL) return memcpy(&x, at, sizeof x), shortest(x, buf, size);
+  if (k->type == KEY_REAL) return memcpy(&x, at, sizeof x), status_number(x, buf);
   memcpy(&v, at, sizeof v);
   if (k->type == KEY_WORD) return k->words[v];
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2317 "paper/scene.nw"
+#line 2324 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

@@ -1,6 +1,8 @@
-#line 51 "paper/status.nw"
+#line 68 "paper/status.nw"
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include "status.h"
 
 int status_set(Status *st, Status_code code, const char *fmt, ...)
@@ -13,4 +15,20 @@ int status_set(Status *st, Status_code code, const char *fmt, ...)
     st->code = code;
   }
   return code;
+}
+#line 90 "paper/status.nw"
+const char *status_number(double x, char *buf)
+{
+  char *e;
+  int digits = 1;
+  snprintf(buf, STATUS_NUMBER, "%.1g", x);
+  while (digits < 17 && strtod(buf, NULL) != x)
+    snprintf(buf, STATUS_NUMBER, "%.*g", ++digits, x);
+  if ((e = strchr(buf, 'e'))) {
+    char *from = e + 1 + (e[1] == '+'), *to = e + 1 + (e[1] == '-');
+    if (*from == '-') from++;
+    while (*from == '0' && from[1]) from++;
+    memmove(to, from, strlen(from) + 1);
+  }
+  return buf;
 }

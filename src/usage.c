@@ -1,6 +1,6 @@
-#line 60 "paper/main.nw"
-#include "usage.h"
 #line 65 "paper/main.nw"
+#include "usage.h"
+#line 70 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"
@@ -38,18 +38,24 @@ const char usage_solve[] =
 
 const char usage_gradcheck[] =
   "usage: contactopt gradcheck SCENE [-o DIR] [-s section.key=value ...]\n"
-  "                  [--matrix-market FILE]\n"
+  "                  [--components LIST] [--matrix-market FILE]\n"
   "Compare the gradient (4.8) at the scene's initial design with finite\n"
   "differences of E (steps C0 * 1e-2 .. 1e-6; one-sided where alpha_i = 0)\n"
   "and print the largest relative error |G - G_fd| / max|G|.\n\n"
   "  -o DIR                output folder (default: out/NAME-gradcheck)\n"
   "  -s section.key=value  override a key of the scene (repeatable;\n"
   "                        an empty value deletes it)\n"
+  "  --components LIST     check only these nodes of 0..N: I, I-J, I-J/S\n"
+  "                        (every S-th), comma-separated; 0-256/16 checks\n"
+  "                        17 nodes spread over N = 256 (default: all)\n"
   "  --matrix-market FILE  also write A(X) at the design checked\n"
   "  -h, --help            this text\n\n"
+  "A node takes ten state solves: the check says first how long it will\n"
+  "take, and warns when that is over a minute. It prints its progress at\n"
+  "most once a second.\n"
   "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
-  "difference, relative error) and summary.dat (max_relative_error, ...).\n"
-  "Prints its progress at most once a second.\n"
+  "difference, relative error; a row per node checked) and summary.dat\n"
+  "(max_relative_error, worst_node, nodes_checked, ...).\n"
   "Exit status: 0 success, 2 bad input, 3 a state solve failed, 4 cannot\n"
   "write, 5 out of memory.\n";
 

@@ -197,14 +197,16 @@ kkt_point() { _lr=$(kkt "$2/multipliers.dat" $3 $4 $5); _lrc=$?
     holds 'rc == 0 && r <= 1e-4' rc=$_lrc r="$_lr"; }
 
 # same_run A B: the output folders A and B hold the same files with the same contents,
-# the times of summary.dat and history.dat aside
+# the times of summary.dat and history.dat aside, and the lines of summary.dat
+# that say how a run computed (its threads, the machine's load)
 same_run() {
   ( cd "$1" && find . -type f | sort ) > $TMP/same.a
   ( cd "$2" && find . -type f | sort ) > $TMP/same.b
   cmp -s $TMP/same.a $TMP/same.b || return 1
   while read -r f; do
     case $f in
-      */summary.dat) grep -v seconds "$1/$f" > $TMP/same.c; grep -v seconds "$2/$f" > $TMP/same.d ;;
+      */summary.dat) _lx='seconds|^(blas_threads|blas_threads_by_size|threads_chosen_by|openmp_threads|load_average) '
+        grep -v -E "$_lx" "$1/$f" > $TMP/same.c; grep -v -E "$_lx" "$2/$f" > $TMP/same.d ;;
       */history.dat) cut -d' ' -f1-4 "$1/$f" > $TMP/same.c; cut -d' ' -f1-4 "$2/$f" > $TMP/same.d ;;
       *) cmp -s "$1/$f" "$2/$f" || return 1; continue ;;
     esac
