@@ -1,4 +1,4 @@
-#line 183 "paper/main.nw"
+#line 186 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

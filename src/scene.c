@@ -744,7 +744,7 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1383 "paper/scene.nw"
+#line 1384 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -760,6 +760,16 @@ static int in_window(double x, double unit)
          && r <= WINDOW_MAX * (1 + WINDOW_ROUNDING);
 }
 
+/* buf = r, outside the window, with three digits or the fewest more
+   that still read outside it */
+static const char *outside(double r, char *buf)
+{
+  int digits = 3;
+  while (digits < 17 && in_window(strtod(status_digits(r, digits, buf), NULL), 1))
+    digits++;
+  return buf;
+}
+
 /* refuse the load x = the value converted last, times `times`, unless
    it is 0 or in the window times E; what names it in the message */
 static int check_load(Loader *L, const Scene *s, double x, double times,
@@ -769,9 +779,9 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
   if (x == 0 || in_window(x * times, s->problem.E)) return 0;
   return blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                "1e30] times E, where every product the solvers form is "
-               "finite", what, status_number(fabs(x) * times / s->problem.E, r));
+               "finite", what, outside(fabs(x) * times / s->problem.E, r));
 }
-#line 1418 "paper/scene.nw"
+#line 1429 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -787,13 +797,13 @@ static int read_geometry(Loader *L, Scene *s)
   if (!in_window(s->problem.b - s->problem.a, 1))
     return blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
                  "every product the solvers form is finite",
-                 status_number(s->problem.b - s->problem.a, w));
+                 outside(s->problem.b - s->problem.a, w));
   if ((rc = real(L, "geometry", "gamma", &s->problem.gamma))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1449 "paper/scene.nw"
+#line 1460 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -808,7 +818,7 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1475 "paper/scene.nw"
+#line 1486 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -822,7 +832,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1511 "paper/scene.nw"
+#line 1522 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -830,7 +840,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1488 "paper/scene.nw"
+#line 1499 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -842,7 +852,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1542 "paper/scene.nw"
+#line 1553 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -855,7 +865,7 @@ static int check_admissible(Loader *L, Scene *s)
              "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
              status_number(s->problem.C0 * w, v[1]));
 }
-#line 1564 "paper/scene.nw"
+#line 1575 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -868,7 +878,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1580 "paper/scene.nw"
+#line 1591 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -878,14 +888,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1592 "paper/scene.nw"
+#line 1603 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1604 "paper/scene.nw"
+#line 1615 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -896,7 +906,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1619 "paper/scene.nw"
+#line 1630 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -907,7 +917,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1632 "paper/scene.nw"
+#line 1643 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -918,7 +928,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1649 "paper/scene.nw"
+#line 1660 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -946,7 +956,7 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1679 "paper/scene.nw"
+#line 1690 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -969,7 +979,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 1795 "paper/scene.nw"
+#line 1806 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -982,7 +992,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 1752 "paper/scene.nw"
+#line 1763 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Loader *L, Scene *s, const char *path,
@@ -1000,14 +1010,14 @@ static int shape_from_rows(Loader *L, Scene *s, const char *path,
                    "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                    r->x[j - 1]);
   
-#line 1784 "paper/scene.nw"
+#line 1795 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 1769 "paper/scene.nw"
+#line 1780 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -1020,7 +1030,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 1708 "paper/scene.nw"
+#line 1719 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -1051,7 +1061,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 1813 "paper/scene.nw"
+#line 1824 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -1065,7 +1075,7 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1830 "paper/scene.nw"
+#line 1841 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -1080,7 +1090,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  status_number(s->problem.C0prime, v[2]));
   return 0;
 }
-#line 1850 "paper/scene.nw"
+#line 1861 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -1098,7 +1108,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1878 "paper/scene.nw"
+#line 1889 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -1118,7 +1128,7 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1907 "paper/scene.nw"
+#line 1918 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -1127,7 +1137,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 1929 "paper/scene.nw"
+#line 1940 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -1142,7 +1152,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                status_number(lo, v[0]), status_number(hi, v[1]));
-#line 1915 "paper/scene.nw"
+#line 1926 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = real(L, sec, "P2", &d->P[1]))
@@ -1153,7 +1163,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1947 "paper/scene.nw"
+#line 1958 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -1165,7 +1175,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 1968 "paper/scene.nw"
+#line 1979 "paper/scene.nw"
 /* some side holds u1: clamped anywhere, or a roller on left or right */
 static int check_held(Loader *L, const Scene *s)
 {
@@ -1179,7 +1189,7 @@ static int check_held(Loader *L, const Scene *s)
               "(singular problem)", L->path, problem_bc_name(s->problem.side[0].kind),
               problem_bc_name(s->problem.side[1].kind), problem_bc_name(s->problem.side[2].kind));
 }
-#line 1984 "paper/scene.nw"
+#line 1995 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1188,7 +1198,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return check_held(L, s);
 }
-#line 2023 "paper/scene.nw"
+#line 2034 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1210,7 +1220,7 @@ static int read_contact(Loader *L, Scene *s)
     return blame(L, "must be <= 1e30: it multiplies a contact force");
   return 0;
 }
-#line 2006 "paper/scene.nw"
+#line 2017 "paper/scene.nw"
 /* [body_force] F, [contact] model */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1224,7 +1234,7 @@ static int read_loads(Loader *L, Scene *s)
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   return read_contact(L, s);
 }
-#line 2053 "paper/scene.nw"
+#line 2064 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1246,7 +1256,7 @@ static int read_solver(Loader *L, Scene *s)
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2086 "paper/scene.nw"
+#line 2097 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1271,7 +1281,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2120 "paper/scene.nw"
+#line 2131 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1284,7 +1294,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2137 "paper/scene.nw"
+#line 2148 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1304,14 +1314,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2160 "paper/scene.nw"
+#line 2171 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2177 "paper/scene.nw"
+#line 2188 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1340,7 +1350,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2209 "paper/scene.nw"
+#line 2220 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1364,7 +1374,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2237 "paper/scene.nw"
+#line 2248 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1377,7 +1387,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2255 "paper/scene.nw"
+#line 2266 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1401,18 +1411,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2284 "paper/scene.nw"
+#line 2295 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2278 "paper/scene.nw"
+#line 2289 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2301 "paper/scene.nw"
+#line 2312 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1428,7 +1438,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2324 "paper/scene.nw"
+#line 2335 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

@@ -1,4 +1,4 @@
-#line 68 "paper/status.nw"
+#line 74 "paper/status.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,14 +16,11 @@ int status_set(Status *st, Status_code code, const char *fmt, ...)
   }
   return code;
 }
-#line 90 "paper/status.nw"
-const char *status_number(double x, char *buf)
+#line 97 "paper/status.nw"
+const char *status_digits(double x, int digits, char *buf)
 {
   char *e;
-  int digits = 1;
-  snprintf(buf, STATUS_NUMBER, "%.1g", x);
-  while (digits < 17 && strtod(buf, NULL) != x)
-    snprintf(buf, STATUS_NUMBER, "%.*g", ++digits, x);
+  snprintf(buf, STATUS_NUMBER, "%.*g", digits, x);
   if ((e = strchr(buf, 'e'))) {
     char *from = e + 1 + (e[1] == '+'), *to = e + 1 + (e[1] == '-');
     if (*from == '-') from++;
@@ -31,4 +28,11 @@ const char *status_number(double x, char *buf)
     memmove(to, from, strlen(from) + 1);
   }
   return buf;
+}
+
+const char *status_number(double x, char *buf)
+{
+  int digits = 1;
+  while (digits < 17 && strtod(status_digits(x, digits, buf), NULL) != x) digits++;
+  return digits < 17 ? buf : status_digits(x, 17, buf);
 }

@@ -33,6 +33,7 @@ const char usage_solve[] =
   "active_contact_nodes, dofs, seconds, ...), shape.dat, contact.dat,\n"
   "solution.vtu (ParaView: displacement, gap, pressure, stress) and\n"
   "effective.scene (the scene as run: overrides applied, defaults written).\n"
+  "Every path is checked before any work.\n"
   "Exit status: 0 success, 2 bad input, 3 no convergence, 4 cannot write,\n"
   "5 too large for the memory (refused before any work) or out of memory.\n";
 
@@ -77,8 +78,10 @@ const char usage_optimize[] =
   "initial/ and final/ with the files of solve, effective.scene, and\n"
   "iterates.pvd with iterates/ (the state at each iterate: ParaView plays it\n"
   "as an animation).\n"
-  "Ctrl-C or SIGTERM stops it at the next accepted iterate and writes the\n"
-  "files of that design (stop_reason interrupted); a second one kills it.\n"
+  "Ctrl-C or SIGTERM says so at once, stops it at the next accepted iterate\n"
+  "and writes the files of that design (stop_reason interrupted); a second\n"
+  "one stops it at once, its output folder as it was. A SIGINT ignored\n"
+  "when it starts (a background job of a script) stays ignored.\n"
   "Exit status: 0 converged, 2 bad input, 3 not converged (the files of the\n"
   "last design accepted are written), 4 cannot write, 5 out of memory,\n"
   "130 interrupted (the files of the best design so far are written).\n";

@@ -56,6 +56,6 @@ check "|P2| / E = 2e-19 / 2e11, on the bound 1e-30 in decimal: accepted (exit $r
 $BIN solve $ex -o $TMP/bound -s material.E=4.9e10 -s top.P2=-4.9e40 > /dev/null 2> $TMP/err; rc=$?
 check "|P2| / E = 4.9e40 / 4.9e10, on the bound 1e30 in decimal (the doubles' quotient 1.0000000000000002e30): accepted (exit $rc)" \
   test $rc -eq 0
-refused "|P2| / E = 1.9999e-19 / 2e11, just below 1e-30" top.P2 '\|P2\| / E = 9\.9995e-31: a load must be 0 or lie within \[1e-30, 1e30\]' -- \
-  -s material.E=2e11 -s top.P2=-1.9999e-19
+refused "|P2| / E = 1.99999e-19 / 2e11, just below 1e-30" top.P2 '\|P2\| / E = 9\.9999e-31: a load must be 0 or lie within \[1e-30, 1e30\]' -- \
+  -s material.E=2e11 -s top.P2=-1.99999e-19
 finish
