@@ -3,6 +3,7 @@
 # file, nothing written.
 . tests/lib.sh
 scene=data/example-5.1.scene
+top=$PWD      # the package's root, for commands run in another folder
 $BIN --help > $TMP/help; rc=$?
 check "contactopt --help exits 0 and names the solve command" \
   sh -c "[ $rc -eq 0 ] && grep -q solve $TMP/help"
@@ -45,8 +46,8 @@ check "shape.dat has N+1 = 17 rows" sh -c "[ \$(grep -vc '^#' $out/shape.dat) -e
 check "contact.dat: every gap >= 0 and every contact force >= -1e-12 max T" \
   holds 'gap >= -1e-12 && T >= -1e-12 * max(Tmax, 0)' gap="$(rows_min '$4' $out/contact.dat)" \
     T="$(rows_min '$5' $out/contact.dat)" Tmax="$(rows_max '$5' $out/contact.dat)"
-check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $OLDPWD/$scene d/x.scene &&
-  $OLDPWD/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
+check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $top/$scene d/x.scene &&
+  $top/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
 
 # one override switches a side, the contact law or the initial shape: the
 # file's keys that the new word makes meaningless are dropped
@@ -115,7 +116,6 @@ early() { # description exit pattern -- arguments (after "gradcheck SCENE")
     at_once $rc $code $TMP/err $TMP/bad "$pat"; }
 # at_once RC CODE ERR DIR PATTERN: clean_failure, no line of work, no staging folder
 at_once() { [ ! -s $TMP/stdout ] && ! ls -a $TMP | grep -q 'partial-' && clean_failure "$@"; }
-top=$PWD
 early "--matrix-market /nonexistent/A.mtx" 4 \
   '/nonexistent/A.mtx: cannot create it in /nonexistent: No such file or directory' -- \
   -o $TMP/bad --matrix-market /nonexistent/A.mtx
