@@ -44,6 +44,7 @@ static int component_item(const char **p, int N, unsigned char *chosen)
   if (**p == '-' && (++*p, component_number(p, &j))) return -1;
   if (**p == '/' && (++*p, component_number(p, &step) || step < 1)) return -1;
   if (i > j || j > N) return -1;
+  if (step > N) step = N + 1;          /* one node; k + step cannot overflow */
   for (long k = i; k <= j; k += step) chosen[k] = 1;
   return 0;
 }
@@ -68,7 +69,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 303 "paper/main.nw"
+#line 304 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -106,7 +107,7 @@ static int run_command(const Args *a, const char *suffix,
   scene_free(&r.s);
   return rc;
 }
-#line 364 "paper/main.nw"
+#line 365 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -117,7 +118,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 383 "paper/main.nw"
+#line 384 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -152,7 +153,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 420 "paper/main.nw"
+#line 421 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -167,7 +168,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 452 "paper/main.nw"
+#line 453 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -190,7 +191,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 478 "paper/main.nw"
+#line 479 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -209,7 +210,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 506 "paper/main.nw"
+#line 507 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -225,13 +226,13 @@ static int command_gradcheck(Run *r, Status *st)
   if (!rc && !(rc = begin(r, &o, st)))
     rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
   if (!rc)
-    printf("%s: largest relative error of the gradient %.3e (node %d of %d "
-           "checked) -> %s/\n", r->s.path, gc->err[gc->worst], gc->worst,
+    printf("%s: largest relative error of the gradient %.3e (node %d; %d "
+           "nodes checked) -> %s/\n", r->s.path, gc->err[gc->worst], gc->worst,
            gc->ncheck, r->dir);
   grad_check_free(gc);
   return rc;
 }
-#line 674 "paper/main.nw"
+#line 675 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -241,7 +242,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 690 "paper/main.nw"
+#line 691 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -254,7 +255,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 709 "paper/main.nw"
+#line 710 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -300,7 +301,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 765 "paper/main.nw"
+#line 766 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -315,7 +316,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 791 "paper/main.nw"
+#line 792 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
