@@ -1,4 +1,4 @@
-#line 199 "paper/main.nw"
+#line 214 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 
@@ -10,6 +10,7 @@ int args_read(int argc, char **argv, Args *a, Status *st)
     int more = k + 1 < argc;
     if (!strcmp(s, "-o") && more) a->outdir = argv[++k];
     else if (!strcmp(s, "--matrix-market") && more) a->matrix_market = argv[++k];
+    else if (!strcmp(s, "--components") && more) a->components = argv[++k];
     else if (!strcmp(s, "--plot-files")) a->plot_files = 1;
     else if (!strcmp(s, "-s") && more && a->noverride == MAX_OVERRIDES)
       return status_set(st, STATUS_INPUT, "command line: more than %d -s",

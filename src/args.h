@@ -1,4 +1,4 @@
-#line 180 "paper/main.nw"
+#line 194 "paper/main.nw"
 #ifndef CONTACTOPT_ARGS_H
 #define CONTACTOPT_ARGS_H
 #include "status.h"
@@ -7,6 +7,7 @@ typedef struct {
   const char *scene;                   /* the scene file */
   const char *outdir;                  /* -o, or NULL for out/NAME */
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
+  const char *components;              /* --components LIST, or NULL: all */
   int plot_files;                      /* --plot-files */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */

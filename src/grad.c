@@ -1,10 +1,10 @@
-#line 91 "paper/grad.nw"
+#line 104 "paper/grad.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grad.h"
 
-#line 155 "paper/grad.nw"
+#line 169 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G);
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
@@ -36,7 +36,7 @@ int grad_energy(const Model *md, double *G, Status *st)
     friction_gradient(md->problem, md->mesh, md->dofs, md->Q, G);
   return STATUS_OK;
 }
-#line 203 "paper/grad.nw"
+#line 217 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
@@ -61,7 +61,7 @@ static void grad_element(const Model *md, int t, double *G)
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 232 "paper/grad.nw"
+#line 246 "paper/grad.nw"
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
                                   double d, int m)
@@ -72,7 +72,7 @@ static double grad_element_height(const double gy[3], const double q[6],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 246 "paper/grad.nw"
+#line 260 "paper/grad.nw"
 static double grad_body_force(const double F[2], const double q[6],
                               double gy_m)
 {
@@ -80,7 +80,7 @@ static double grad_body_force(const double F[2], const double q[6],
   for (int v = 0; v < 3; v++) work += F[0] * q[2 * v] + F[1] * q[2 * v + 1];
   return work * gy_m / 6;
 }
-#line 276 "paper/grad.nw"
+#line 291 "paper/grad.nw"
 Grad_check *grad_check_new(int N, Status *st)
 {
   if (N < 1) {
@@ -88,7 +88,7 @@ Grad_check *grad_check_new(int N, Status *st)
     return NULL;
   }
   Grad_check *gc = malloc(sizeof *gc);
-  double *v = malloc(4 * ((size_t) N + 1) * sizeof *v);
+  double *v = malloc(4 * ((size_t) N + 1) * sizeof *v + ((size_t) N + 1) * sizeof (int));
   if (!gc || !v) {
     free(gc);
     free(v);
@@ -101,6 +101,9 @@ Grad_check *grad_check_new(int N, Status *st)
   gc->fd = gc->G + N + 1;
   gc->err = gc->fd + N + 1;
   gc->X = gc->err + N + 1;
+  gc->check = (int *) (gc->X + N + 1);
+  gc->ncheck = N + 1;
+  for (int i = 0; i <= N; i++) gc->check[i] = i;
   return gc;
 }
 
@@ -110,7 +113,7 @@ void grad_check_free(Grad_check *gc)
   free(gc->G);
   free(gc);
 }
-#line 311 "paper/grad.nw"
+#line 329 "paper/grad.nw"
 /* E at the design X with X_i = x */
 static int energy_with(Model *md, double *X, int i, double x, double *E,
                        Status *st)
@@ -129,32 +132,36 @@ static int grad_difference(Model *md, double *X, int i, double s,
   int rc;
   if (x0 - s >= 0) {
     
-#line 338 "paper/grad.nw"
+#line 356 "paper/grad.nw"
 double Em, Ep;
 if (!(rc = energy_with(md, X, i, x0 - s, &Em, st))
     && !(rc = energy_with(md, X, i, x0 + s, &Ep, st)))
   *fd = (Ep - Em) / (2 * s);
-#line 329 "paper/grad.nw"
+#line 347 "paper/grad.nw"
   } else {
     
-#line 345 "paper/grad.nw"
+#line 363 "paper/grad.nw"
 double E0, E1, E2;
 if (!(rc = energy_with(md, X, i, x0, &E0, st))
     && !(rc = energy_with(md, X, i, x0 + s, &E1, st))
     && !(rc = energy_with(md, X, i, x0 + 2 * s, &E2, st)))
   *fd = (-3 * E0 + 4 * E1 - E2) / (2 * s);
-#line 331 "paper/grad.nw"
+#line 349 "paper/grad.nw"
   }
   X[i] = x0;
   return rc;
 }
-#line 353 "paper/grad.nw"
+#line 371 "paper/grad.nw"
+/* the steps of the differences, relative to C0: 1e-2, 1e-3, ..., 1e-6 */
+#define FOR_EACH_STEP(step) \
+  for (double step = 1e-2; step >= 1e-6 * 0.999; step /= 10)
+
 static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
                            Status *st)
 {
   gc->err[i] = INFINITY;
   gc->fd[i] = NAN;
-  for (double step = 1e-2; step >= 1e-6 * 0.999; step /= 10) {
+  FOR_EACH_STEP(step) {
     double fd;
     int rc = grad_difference(md, gc->X, i, step * md->problem->C0, &fd, st);
     if (rc) return rc;
@@ -163,7 +170,15 @@ static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
   }
   return STATUS_OK;
 }
-#line 371 "paper/grad.nw"
+#line 393 "paper/grad.nw"
+long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X)
+{
+  long n = 2;
+  for (int k = 0; k < gc->ncheck; k++)
+    FOR_EACH_STEP(step) n += X[gc->check[k]] - step * p->C0 >= 0 ? 2 : 3;
+  return n;
+}
+#line 405 "paper/grad.nw"
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st)
 {
@@ -172,15 +187,23 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
   if (gc->N != md->problem->N)
     return status_set(st, STATUS_INPUT, "gradcheck: made for N = %d, the "
                       "model has N = %d", gc->N, md->problem->N);
+  if (gc->ncheck < 1 || gc->ncheck > n)
+    return status_set(st, STATUS_INPUT, "gradcheck: %d nodes to check", gc->ncheck);
+  for (int k = 0; k < gc->ncheck; k++)
+    if (gc->check[k] < (k ? gc->check[k - 1] + 1 : 0) || gc->check[k] > gc->N)
+      return status_set(st, STATUS_INPUT, "gradcheck: the nodes to check are "
+                        "not ascending in 0..%d (node %d)", gc->N, gc->check[k]);
   if ((rc = model_solve(md, X, st)) || (rc = grad_energy(md, gc->G, st)))
     return rc;
   for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(gc->G[i]));
+  for (int i = 0; i < n; i++) gc->fd[i] = gc->err[i] = NAN;
   memcpy(gc->X, X, n * sizeof *X);
-  for (int i = 0; i < n; i++) {
-    if ((rc = grad_check_node(md, gc, i, Gmax, st))) return rc;
-    if (progress) progress(i, gc, data);
+  for (int k = 0; k < gc->ncheck; k++) {
+    if ((rc = grad_check_node(md, gc, gc->check[k], Gmax, st))) return rc;
+    if (progress) progress(gc->check[k], gc, data);
   }
-  gc->worst = 0;
-  for (int i = 1; i < n; i++) if (gc->err[i] > gc->err[gc->worst]) gc->worst = i;
+  gc->worst = gc->check[0];
+  for (int k = 1; k < gc->ncheck; k++)
+    if (gc->err[gc->check[k]] > gc->err[gc->worst]) gc->worst = gc->check[k];
   return model_solve(md, X, st);
 }

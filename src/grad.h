@@ -12,13 +12,17 @@ int grad_available(const Problem *p, const char *origin, const char *command,
    model solved last.  It is a checked error to call it before a solve,
    or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 67 "paper/grad.nw"
+#line 74 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
+  int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */
+  int *check;     /* ncheck: their indices, ascending (0..N as made) */
   double *G;      /* N+1: dE/dX_i by (4.8) at X */
-  double *fd;     /* N+1: the finite difference closest to G_i */
-  double *err;    /* N+1: |fd_i - G_i| / max_k |G_k| (/ 1 when G = 0) */
-  int worst;      /* the node of the largest err, the first of equals */
+  double *fd;     /* N+1: the finite difference closest to G_i (NaN at a
+                     node not checked) */
+  double *err;    /* N+1: |fd_i - G_i| / max_k |G_k| (/ 1 when G = 0; NaN
+                     at a node not checked) */
+  int worst;      /* the node checked of the largest err, the first of equals */
   double *X;      /* N+1: scratch, the perturbed design */
 } Grad_check;
 
@@ -32,5 +36,7 @@ void grad_check_free(Grad_check *gc);
    NULL. */
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
+/* the state solves that grad_check(md, X, gc, ...) takes, md's problem's */
+long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X);
 #line 48 "paper/grad.nw"
 #endif

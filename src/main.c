@@ -1,4 +1,5 @@
-#line 19 "paper/main.nw"
+#line 20 "paper/main.nw"
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,13 +14,70 @@
 #include "args.h"
 #include "threads.h"
 #include "plot.h"
-#line 236 "paper/main.nw"
+#line 267 "paper/main.nw"
+/* st's message = "path: message", unless it begins with the path already */
+static void name_the_scene(Status *st, const char *path)
+{
+  char msg[sizeof st->msg];
+  size_t n = strlen(path);
+  if (!strncmp(st->msg, path, n) && (st->msg[n] == ':' || st->msg[n] == ' ')) return;
+  memcpy(msg, st->msg, sizeof msg);
+  if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
+    strcpy(st->msg + sizeof st->msg - 4, "...");
+}
+#line 285 "paper/main.nw"
+/* *v = the number at *p, digits only; *p moves past it */
+static int component_number(const char **p, long *v)
+{
+  char *end;
+  if (!isdigit((unsigned char) **p)) return -1;
+  *v = strtol(*p, &end, 10);
+  *p = end;
+  return 0;
+}
+
+/* chosen[I..J by S] = 1 for the item at *p: I, I-J or I-J/S */
+static int component_item(const char **p, int N, unsigned char *chosen)
+{
+  long i, j, step = 1;
+  if (component_number(p, &i)) return -1;
+  j = i;
+  if (**p == '-' && (++*p, component_number(p, &j))) return -1;
+  if (**p == '/' && (++*p, component_number(p, &step) || step < 1)) return -1;
+  if (i > j || j > N) return -1;
+  if (step > N) step = N + 1;          /* one node; k + step cannot overflow */
+  for (long k = i; k <= j; k += step) chosen[k] = 1;
+  return 0;
+}
+
+/* the nodes of spec, ascending, into gc's list (gc NULL: only checked) */
+static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
+{
+  const char *p = spec;
+  unsigned char *chosen = spec ? calloc((size_t) N + 1, 1) : NULL;
+  int rc = STATUS_OK, bad;
+  if (!spec) return STATUS_OK;
+  if (!chosen) return status_set(st, STATUS_MEMORY, "--components: out of memory");
+  while (!(bad = component_item(&p, N, chosen)) && *p == ',') p++;
+  if (bad || *p)
+    rc = status_set(st, STATUS_INPUT, "command line: --components %s: not a list of "
+                    "nodes I, ranges I-J and I-J/S (step S >= 1), comma-separated, "
+                    "in 0..N = 0..%d", spec, N);
+  else if (gc) {
+    gc->ncheck = 0;
+    for (int i = 0; i <= N; i++) if (chosen[i]) gc->check[gc->ncheck++] = i;
+  }
+  free(chosen);
+  return rc;
+}
+#line 332 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
   Model *md;                /* the discrete problem of s.problem */
   Output_run run;           /* the scene's facts for the summaries */
-  char dir[1024];           /* the output folder */
+  char dir[OUTPUT_PATH];    /* the output folder */
+  int optimizing;           /* the command is optimize */
 } Run;
 static int command_optimize(Run *r, Status *st);
 
@@ -27,27 +85,30 @@ static int run_command(const Args *a, const char *suffix,
                        int (*command)(Run *r, Status *st),
                        cholmod_common *cm, Status *st)
 {
-  Run r = { .a = a };
+  Run r = { .a = a, .optimizing = command == command_optimize };
   int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
   if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
                          opt_metric_name(r.s.optimizer.metric) };
-  if (a->outdir) snprintf(r.dir, sizeof r.dir, "%s", a->outdir);
-  else output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
+  if (!a->outdir) output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
   double extra = command == command_optimize ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
-  if (!(rc = output_check(r.dir, st))                  /* before any work */
+  if (!(rc = a->outdir ? output_dir_name(a->outdir, r.dir, sizeof r.dir, st) : 0)
+      && !(rc = output_check(r.dir, st))                  /* before any work */
+      && !(rc = a->matrix_market ? output_check_file(a->matrix_market, r.dir, st) : 0)
+      && !(rc = components_read(a->components, r.s.problem.N, NULL, st))
       && !(rc = model_fits(&r.s.problem, extra, r.s.path, st))
       && !(rc = threads_start(r.s.path, model_memory(&r.s.problem) + extra, st))) {
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
     rc = r.md ? command(&r, st) : (int) st->code;
   }
+  if (rc) name_the_scene(st, r.s.path);
   model_free(r.md);
   scene_free(&r.s);
   return rc;
 }
-#line 293 "paper/main.nw"
+#line 393 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -58,13 +119,21 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 312 "paper/main.nw"
-/* the staging folder of the command's files, signals caught while it is there */
+#line 412 "paper/main.nw"
+/* the staging folder of the command's files, signals caught while it is
+   there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
 {
-  interrupt_catch(1);
+  char line[1024];
+  snprintf(line, sizeof line, "contactopt: %s: interrupted: %s; interrupt "
+           "again to stop at once without them\n", r->s.path,
+           r->optimizing ? "the run stops at the next iterate "
+           "and writes the files of that design" : "the run's work is done, "
+           "its files are being finished");
+  memset(o, 0, sizeof *o);   /* nothing staged, as the handler will see it */
+  interrupt_catch(1, line, output_abort_now, o);
   int rc = output_begin(o, r->dir, st);
-  if (rc) interrupt_catch(0);
+  if (rc) interrupt_catch(0, NULL, NULL, NULL);
   else o->plot_files = r->a->plot_files;
   return rc;
 }
@@ -81,11 +150,11 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   }
   if (!rc) warn_large(r);
   rc = output_end(o, rc, st);
-  interrupt_catch(0);
+  interrupt_catch(0, NULL, NULL, NULL);
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 341 "paper/main.nw"
+#line 449 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -100,35 +169,71 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 364 "paper/main.nw"
+#line 481 "paper/main.nw"
+#define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
+static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
+{
+  const Problem *p = &r->s.problem;
+  int rc = model_solve(r->md, r->s.alpha0, st);
+  if (rc || (rc = model_solve(r->md, r->s.alpha0, st))) return rc;
+  long solves = grad_check_solves(gc, p, r->s.alpha0);
+  double t = r->md->seconds, total = solves * t;
+  printf("gradcheck: %d of %d nodes, %ld state solves of about %.2g s: about %.0f s\n",
+         gc->ncheck, p->N + 1, solves, t, ceil(total));
+  fflush(stdout);
+  if (total > GRADCHECK_LONG) {
+    int fit = (int) fmax(2, GRADCHECK_LONG / 2 / (total / gc->ncheck));
+    int step = (p->N + fit - 2) / (fit - 1);
+    fprintf(stderr, "contactopt: warning: %s: gradcheck of %d nodes will take "
+            "about %.0f s (%ld state solves of %.2g s); --components 0-%d/%d checks "
+            "%d of them in about %.0f s\n", r->s.path, gc->ncheck, ceil(total),
+            solves, t, p->N, step, p->N / step + 1,
+            ceil(total / gc->ncheck * (p->N / step + 1)));
+  }
+  return STATUS_OK;
+}
+#line 507 "paper/main.nw"
+typedef struct {
+  double start, last;       /* the check's start, the last line's time */
+  int done;                 /* nodes checked so far */
+} Gradcheck_progress;
+
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
-  double *last = data, now = model_clock(), worst = 0;
-  if (now - *last < 1 && i < gc->N) return;
-  *last = now;
-  for (int k = 0; k <= i; k++) worst = fmax(worst, gc->err[k]);
-  printf("gradcheck: node %d of %d, largest relative error so far %.3e\n",
-         i + 1, gc->N + 1, worst);
+  Gradcheck_progress *g = data;
+  double now = model_clock(), worst = 0;
+  (void) i;
+  if (++g->done < gc->ncheck && now - g->last < 1) return;
+  g->last = now;
+  for (int k = 0; k < g->done; k++) worst = fmax(worst, gc->err[gc->check[k]]);
+  printf("gradcheck: node %d of %d, largest relative error so far %.3e, "
+         "about %.0f s left\n", g->done, gc->ncheck, worst,
+         ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 384 "paper/main.nw"
+#line 535 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
   if (grad_available(&r->s.problem, r->s.path, "gradcheck", st)) return st->code;
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
-  double last = model_clock();
-  int rc = gc ? grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &last, st)
+  Gradcheck_progress g = { 0, 0, 0 };
+  int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
               : (int) st->code;
+  if (!rc && !(rc = gradcheck_estimate(r, gc, st))) {
+    g.start = g.last = model_clock();
+    rc = grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &g, st);
+  }
   if (!rc && !(rc = begin(r, &o, st)))
     rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
   if (!rc)
-    printf("%s: largest relative error of the gradient %.3e (node %d) -> %s/\n",
-           r->s.path, gc->err[gc->worst], gc->worst, r->dir);
+    printf("%s: largest relative error of the gradient %.3e (node %d; %d "
+           "nodes checked) -> %s/\n", r->s.path, gc->err[gc->worst], gc->worst,
+           gc->ncheck, r->dir);
   grad_check_free(gc);
   return rc;
 }
-#line 485 "paper/main.nw"
+#line 703 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -138,7 +243,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 501 "paper/main.nw"
+#line 719 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -151,7 +256,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 520 "paper/main.nw"
+#line 738 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -197,7 +302,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 575 "paper/main.nw"
+#line 793 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -216,7 +321,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 605 "paper/main.nw"
+#line 823 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -232,17 +337,18 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 630 "paper/main.nw"
+#line 850 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
   int plot_files;                     /* honours --plot-files */
+  int components;                     /* honours --components */
 } Command;
 
 static const Command commands[] = {
-  { "solve", usage_solve, "", command_solve, 1 },
-  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0 },
-  { "optimize", usage_optimize, "-optimize", command_optimize, 1 },
+  { "solve", usage_solve, "", command_solve, 1, 0 },
+  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1 },
+  { "optimize", usage_optimize, "-optimize", command_optimize, 1, 0 },
 };
 
 int main(int argc, char **argv)
@@ -273,6 +379,9 @@ int main(int argc, char **argv)
   if (!rc && a.plot_files && !c->plot_files)
     rc = status_set(&st, STATUS_INPUT, "command line: --plot-files: %s "
                     "writes no mesh files", c->name);
+  if (!rc && a.components && !c->components)
+    rc = status_set(&st, STATUS_INPUT, "command line: --components: %s "
+                    "checks no gradient", c->name);
   if (!rc) rc = run_command(&a, c->suffix, c->run, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
   cholmod_finish(&cm);

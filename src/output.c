@@ -1,10 +1,13 @@
-#line 223 "paper/output.nw"
+#line 250 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <ftw.h>
 #include <math.h>
+#include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,14 +17,73 @@
 #include "output.h"
 #include "threads.h"
 
-#line 281 "paper/output.nw"
+#line 311 "paper/output.nw"
 /* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
 static int output_errno(Status *st, int e, const char *path, const char *what)
 {
   return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
                     path, what, strerror(e));
 }
-#line 294 "paper/output.nw"
+#line 375 "paper/output.nw"
+#define ITERATE_PREFIX "iterate-"     /* the VTU of an iterate, in iterates/ */
+#define ITERATE_VTU ITERATE_PREFIX "%04d.vtu"
+
+/* *mark = v, after every write before it, as a signal handler sees them */
+static void output_publish(volatile sig_atomic_t *mark, int v)
+{
+  atomic_signal_fence(memory_order_seq_cst);
+  *mark = v;
+  atomic_signal_fence(memory_order_seq_cst);
+}
+
+/* buf = a, b and c joined (async-signal-safe: copies only) */
+static char *output_cat(char *buf, size_t size, const char *a, const char *b,
+                        const char *c)
+{
+  size_t n = 0;
+  for (const char *s[3] = { a, b, c }, **p = s; p < s + 3; p++)
+    for (const char *q = *p; *q && n + 1 < size; q++) buf[n++] = *q;
+  buf[n] = '\0';
+  return buf;
+}
+
+/* remove iterates/iterate-0000.vtu .. of the folder at path */
+static void output_unlink_iterates(const char *folder, int n)
+{
+  char path[1400], digits[16];
+  for (int j = 0; j < n; j++) {
+    int d = 0, k = j;
+    char *p = digits + sizeof digits - 1;
+    *p = '\0';
+    do *--p = (char) ('0' + k % 10), k /= 10, d++; while (k || d < 4);
+    output_cat(path, sizeof path, folder, "/" ITERATE_PREFIX, p);
+    unlink(output_cat(path, sizeof path, path, ".vtu", ""));
+  }
+}
+
+void output_abort_now(void *arg)
+{
+  Output *o = arg;
+  char path[1400];
+  size_t root = strlen(o->stage);
+  if (!o->staged) return;
+  int n = o->nfiles + o->opening;
+  for (int k = (n < OUTPUT_MAX_FILES ? n : OUTPUT_MAX_FILES) - 1; k >= 0; k--) {
+    size_t len = strlen(output_cat(path, sizeof path, o->stage, "/", o->file[k]));
+    if (path[len - 1] == '/') {                 /* a folder staged whole */
+      path[len - 1] = '\0';
+      output_unlink_iterates(path, o->iterates);
+      rmdir(path);
+    } else unlink(path);
+    for (char *slash; (slash = strrchr(path, '/')) > path + root; ) {
+      *slash = '\0';
+      rmdir(path);                              /* its folders, once empty */
+    }
+  }
+  rmdir(o->stage);
+}
+
+#line 327 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -36,7 +98,7 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
-#line 324 "paper/output.nw"
+#line 435 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -48,11 +110,98 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 339 "paper/output.nw"
+#line 452 "paper/output.nw"
+int output_dir_name(const char *given, char *dir, size_t size, Status *st)
+{
+  size_t n = strlen(given);
+  while (n > 1 && given[n - 1] == '/') n--;
+  const char *last = given + n;
+  while (last > given && last[-1] != '/') last--;
+  if (n == 0)
+    return status_set(st, STATUS_INPUT, "-o '': the output folder has an empty name");
+  size_t len = given + n - last;      /* of the last part */
+  if (n >= size)
+    return status_set(st, STATUS_INPUT, "-o %.40s...: the output folder's name is "
+                      "longer than %zu characters", given, size - 1);
+  if ((len == 1 || len == 2) && !strncmp(last, "..", len))
+    return status_set(st, STATUS_INPUT, "-o %s: cannot replace the folder %.*s: name "
+                      "a folder by its own name", given, (int) len, last);
+  snprintf(dir, size, "%.*s", (int) n, given);
+  return STATUS_OK;
+}
+#line 480 "paper/output.nw"
+/* parent = the folder of path: all before its last slash, "." or "/" */
+static void output_parent(const char *path, char *parent, size_t size)
+{
+  const char *slash = strrchr(path, '/');
+  if (!slash) snprintf(parent, size, ".");
+  else if (slash == path) snprintf(parent, size, "/");
+  else snprintf(parent, size, "%.*s", (int) (slash - path), path);
+}
+
+/* out = path with its empty and "." parts dropped ("." if none is left) */
+static void output_lexical(const char *path, char *out, size_t size)
+{
+  size_t n = 0;
+  if (*path == '/' && n + 1 < size) out[n++] = '/';
+  for (const char *p = path; *p; ) {
+    size_t len = strcspn(p, "/");
+    if (len && !(len == 1 && *p == '.') && n + len + 2 < size) {
+      if (n && out[n - 1] != '/') out[n++] = '/';
+      memcpy(out + n, p, len), n += len;
+    }
+    p += len + (p[len] == '/');
+  }
+  if (!n) out[n++] = '.';
+  out[n] = '\0';
+}
+
+/* whether path can be created: its folder (with parents, its deepest
+   ancestor that exists) is a folder this process may write into */
+static int output_creatable(const char *path, int parents, Status *st)
+{
+  char at[1100], up[1100];
+  struct stat sb;
+  output_parent(path, at, sizeof at);
+  while (stat(at, &sb)) {
+    int e = errno;
+    if (e != ENOENT || !parents || !strcmp(at, ".") || !strcmp(at, "/"))
+      return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM,
+                        "%s: cannot create it in %s: %s", path, at, strerror(e));
+    snprintf(up, sizeof up, "%s", at);
+    output_parent(up, at, sizeof at);
+  }
+  int e = !S_ISDIR(sb.st_mode) ? ENOTDIR
+        : faccessat(AT_FDCWD, at, W_OK | X_OK, AT_EACCESS) ? errno : 0;
+  return e ? status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM,
+                        "%s: cannot create it in %s: %s", path, at, strerror(e))
+           : STATUS_OK;
+}
+
+int output_check_file(const char *path, const char *dir, Status *st)
+{
+  char folder[1100], a[1100], b[1100];
+  struct stat sb;
+  if (!*path)
+    return status_set(st, STATUS_INPUT, "--matrix-market '': the file has an empty name");
+  if (strlen(path) >= OUTPUT_PATH)
+    return status_set(st, STATUS_INPUT, "--matrix-market %.40s...: the file's name is "
+                      "longer than %d characters", path, OUTPUT_PATH - 1);
+  if (!stat(path, &sb) && S_ISDIR(sb.st_mode))
+    return output_errno(st, EISDIR, path, "cannot write");
+  output_parent(path, folder, sizeof folder);
+  output_lexical(folder, a, sizeof a);
+  output_lexical(dir, b, sizeof b);
+  if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
+  return output_creatable(path, 0, st);
+}
+#line 551 "paper/output.nw"
 int output_check(const char *dir, Status *st)
 {
   struct stat sb;
   char path[1200];
+  int rc = output_creatable(dir, 1, st);
+  if (rc) return rc;
   if (stat(dir, &sb)) return STATUS_OK;                 /* absent */
   if (!S_ISDIR(sb.st_mode))
     return status_set(st, STATUS_INPUT, "%s: exists and is not a folder", dir);
@@ -67,7 +216,7 @@ int output_check(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 361 "paper/output.nw"
+#line 575 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -88,17 +237,18 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 312 "paper/output.nw"
+#line 347 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
   snprintf(o->dir, sizeof o->dir, "%s", dir);
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
+  output_publish(&o->staged, 1);
   int rc = output_check(dir, st);
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 385 "paper/output.nw"
+#line 599 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
@@ -108,7 +258,7 @@ void output_default_dir(const char *scene, const char *suffix, char *dir,
   if (len > 6 && !strcmp(base + len - 6, ".scene")) len -= 6;
   snprintf(dir, size, "out/%.*s%s", (int) len, base, suffix);
 }
-#line 399 "paper/output.nw"
+#line 613 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -117,17 +267,20 @@ FILE *output_open(Output *o, const char *name, Status *st)
     return NULL;
   }
   snprintf(o->file[o->nfiles], sizeof o->file[0], "%s", name);
+  output_publish(&o->opening, 1);
   snprintf(path, sizeof path, "%s/%s", o->stage, name);
   char *slash = strrchr(path, '/');
   *slash = '\0';
-  if (output_mkdirs(path, st)) return NULL;
-  *slash = '/';
-  FILE *f = fopen(path, "w");
-  if (!f) {
-    int e = errno;
-    snprintf(path, sizeof path, "%s/%s", o->dir, name);
-    output_errno(st, e, path, "cannot write");
-  } else o->nfiles++;
+  FILE *f = NULL;
+  if (!output_mkdirs(path, st)) {
+    *slash = '/';
+    if (!(f = fopen(path, "w"))) {
+      int e = errno;
+      snprintf(path, sizeof path, "%s/%s", o->dir, name);
+      output_errno(st, e, path, "cannot write");
+    } else o->nfiles++;
+  }
+  output_publish(&o->opening, 0);
   return f;
 }
 
@@ -144,16 +297,19 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 439 "paper/output.nw"
+#line 656 "paper/output.nw"
 static int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
   if (o->nfiles == OUTPUT_MAX_FILES)
     return status_set(st, STATUS_SYSTEM, "%s: too many output files", o->dir);
   snprintf(path, sizeof path, "%s/%s", o->stage, name);
-  if (output_mkdirs(path, st)) return st->code;
-  snprintf(o->file[o->nfiles++], sizeof o->file[0], "%s/", name);
-  return STATUS_OK;
+  snprintf(o->file[o->nfiles], sizeof o->file[0], "%s/", name);
+  output_publish(&o->opening, 1);
+  int rc = output_mkdirs(path, st);
+  if (!rc) o->nfiles++;
+  output_publish(&o->opening, 0);
+  return rc;
 }
 
 static FILE *output_open_in_folder(Output *o, const char *folder,
@@ -169,7 +325,7 @@ static FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 511 "paper/output.nw"
+#line 763 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -232,8 +388,28 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 480 "paper/output.nw"
-int output_commit(Output *o, Status *st)
+#line 705 "paper/output.nw"
+/* hold SIGINT and SIGTERM (on), or let them through again (off) */
+static void output_hold_signals(int on, sigset_t *saved)
+{
+  sigset_t s;
+  sigemptyset(&s);
+  sigaddset(&s, SIGINT);
+  sigaddset(&s, SIGTERM);
+  if (on) pthread_sigmask(SIG_BLOCK, &s, saved);
+  else pthread_sigmask(SIG_SETMASK, saved, NULL);
+}
+
+void output_abort(Output *o)
+{
+  sigset_t saved;
+  output_hold_signals(1, &saved);
+  output_remove_tree(o->stage);
+  output_publish(&o->staged, 0);
+  output_hold_signals(0, &saved);
+}
+
+static int output_move_into_place(Output *o, Status *st)
 {
   char old[1200];
   struct stat sb;
@@ -247,7 +423,7 @@ int output_commit(Output *o, Status *st)
   else if (rename(o->stage, o->dir)) {
     rc = output_errno(st, errno, o->dir, "cannot move into place");
     if (had) rename(old, o->dir);
-  } else if (had && output_tree_remove(&t, old))
+  } else if (output_publish(&o->staged, 0), had && output_tree_remove(&t, old))
     rc = status_set(st, STATUS_SYSTEM, "%s: the run is in place, but the old "
                     "run's files in %s cannot be removed: %s", o->dir, old,
                     strerror(errno));
@@ -256,20 +432,27 @@ int output_commit(Output *o, Status *st)
   return rc;
 }
 
-void output_abort(Output *o) { output_remove_tree(o->stage); }
-#line 576 "paper/output.nw"
+int output_commit(Output *o, Status *st)
+{
+  sigset_t saved;
+  output_hold_signals(1, &saved);
+  int rc = output_move_into_place(o, st);
+  output_hold_signals(0, &saved);
+  return rc;
+}
+#line 828 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);
   return rc ? rc : output_commit(o, st);
 }
-#line 589 "paper/output.nw"
+#line 841 "paper/output.nw"
 static double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 598 "paper/output.nw"
+#line 850 "paper/output.nw"
 static FILE *output_open_in(Output *o, const char *sub, const char *name,
                             Status *st)
 {
@@ -277,7 +460,7 @@ static FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 608 "paper/output.nw"
+#line 860 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -288,7 +471,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 621 "paper/output.nw"
+#line 873 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -304,19 +487,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 645 "paper/output.nw"
+#line 897 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 636 "paper/output.nw"
+#line 888 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 654 "paper/output.nw"
+#line 906 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -330,7 +513,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 670 "paper/output.nw"
+#line 922 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -348,7 +531,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 708 "paper/output.nw"
+#line 960 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -372,7 +555,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 767 "paper/output.nw"
+#line 1019 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -414,7 +597,7 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 827 "paper/output.nw"
+#line 1079 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -438,7 +621,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 857 "paper/output.nw"
+#line 1109 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -463,7 +646,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 736 "paper/output.nw"
+#line 988 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -486,7 +669,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 886 "paper/output.nw"
+#line 1138 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -513,7 +696,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 917 "paper/output.nw"
+#line 1169 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -525,7 +708,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 933 "paper/output.nw"
+#line 1185 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -544,7 +727,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 954 "paper/output.nw"
+#line 1206 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -554,7 +737,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 967 "paper/output.nw"
+#line 1219 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -567,20 +750,22 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 1012 "paper/output.nw"
+#line 1266 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
+  char v[STATUS_NUMBER];
   if (p->contact == CONTACT_FRICTIONLESS) return;
   fprintf(f, "contact %s\n", problem_contact_name(p->contact));
-  if (p->contact == CONTACT_TRESCA) fprintf(f, "slip_bound %.17g\n", p->slip_bound);
-  else fprintf(f, "friction %.17g\n", p->friction);
+  if (p->contact == CONTACT_TRESCA)
+    fprintf(f, "slip_bound %s\n", status_number(p->slip_bound, v));
+  else fprintf(f, "friction %s\n", status_number(p->friction, v));
   fprintf(f, "friction_energy %.15g\n", md->friction_energy);
   if (p->contact == CONTACT_COULOMB)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 987 "paper/output.nw"
+#line 1239 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -601,7 +786,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1029 "paper/output.nw"
+#line 1285 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -624,16 +809,18 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1060 "paper/output.nw"
+#line 1318 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
   FILE *f = output_open(o, "gradient.dat", st);
   if (!f) return st->code;
   fprintf(f, "# i x1[m] dE/dX_i[J/m^2] finite_difference[J/m^2] relative_error\n");
-  for (int i = 0; i < md->mesh->ncol; i++)
+  for (int k = 0; k < gc->ncheck; k++) {
+    int i = gc->check[k];
     fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i],
             gc->G[i], gc->fd[i], gc->err[i]);
+  }
   return output_close(o, f, st);
 }
 
@@ -644,15 +831,15 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   FILE *f = output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
-             "max_relative_error %.3e\nworst_node %d\n", run->scene,
-          problem_model_name(p->model), p->N, md->energy,
-          gc->err[gc->worst], gc->worst);
+             "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
+          run->scene, problem_model_name(p->model), p->N, md->energy,
+          gc->err[gc->worst], gc->worst, gc->ncheck);
   output_friction(f, md);
   threads_summary(f);
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1266 "paper/output.nw"
+#line 1525 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -663,9 +850,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1156 "paper/output.nw"
-#define ITERATE_VTU "iterate-%04d.vtu"  /* in iterates/, by iteration */
-
+#line 1416 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -679,13 +864,14 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
     }
   snprintf(name, sizeof name, ITERATE_VTU, iteration);
   snprintf(path, sizeof path, "iterates/%s", name);
+  if (iteration + 1 > h->o->iterates) output_publish(&h->o->iterates, iteration + 1);
   FILE *f = output_open_in_folder(h->o, "iterates", name, &h->vtu);
   if (!f) return;
   if (vtu_write(f, h->md, X, &h->vtu)) fclose(f);
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1097 "paper/output.nw"
+#line 1357 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -730,7 +916,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1221 "paper/output.nw"
+#line 1480 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -743,7 +929,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1185 "paper/output.nw"
+#line 1444 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -775,7 +961,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1244 "paper/output.nw"
+#line 1503 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -794,7 +980,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1282 "paper/output.nw"
+#line 1541 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

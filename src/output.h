@@ -1,6 +1,7 @@
-#line 111 "paper/output.nw"
+#line 121 "paper/output.nw"
 #ifndef CONTACTOPT_OUTPUT_H
 #define CONTACTOPT_OUTPUT_H
+#include <signal.h>
 #include <stdio.h>
 #include "status.h"
 #include "model.h"
@@ -8,21 +9,37 @@
 #include "opt.h"
 
 #define OUTPUT_MAX_FILES 64
+#define OUTPUT_PATH 1024              /* room for a path the program writes */
 typedef struct {
-  char dir[1024];                     /* the output folder */
+  char dir[OUTPUT_PATH];              /* the output folder */
   int plot_files;                     /* also nodes.dat, triangles.dat */
   char stage[1100];                   /* the staging folder beside it */
-  int nfiles;                         /* files written so far */
-  char file[OUTPUT_MAX_FILES][128];   /* their names relative to dir */
+  char file[OUTPUT_MAX_FILES][128];   /* the files' names relative to dir */
+  /* what a signal handler may read (output_abort_now): */
+  volatile sig_atomic_t staged;       /* stage is named, and may exist */
+  volatile sig_atomic_t nfiles;       /* files (and folders) staged so far */
+  volatile sig_atomic_t opening;      /* 1 while file[nfiles] is created */
+  volatile sig_atomic_t iterates;     /* iterates/ holds iterate 0 .. this - 1 */
 } Output;
 
-/* STATUS_INPUT if dir is there and not a run's folder (nor empty) */
+/* dir = the folder name given, its trailing slashes dropped; STATUS_INPUT
+   if it is empty, too long, or . or .. (a folder that cannot be replaced) */
+int output_dir_name(const char *given, char *dir, size_t size, Status *st);
+/* STATUS_INPUT if dir is there and not a run's folder (nor empty);
+   STATUS_SYSTEM if it cannot be created or replaced where it is */
 int output_check(const char *dir, Status *st);
+/* for a file written after the commit into dir (the matrix): STATUS_INPUT
+   if its name is empty or too long, STATUS_SYSTEM if it cannot be created
+   (its folder is neither there and writable nor dir itself) */
+int output_check_file(const char *path, const char *dir, Status *st);
 int output_begin(Output *o, const char *dir, Status *st);
 FILE *output_open(Output *o, const char *name, Status *st);
 int output_close(Output *o, FILE *f, Status *st);
 int output_commit(Output *o, Status *st);
 void output_abort(Output *o);
+/* output_abort from a signal handler (o an Output *): async-signal-safe,
+   by the names staged, for a handler that interrupts the program anywhere */
+void output_abort_now(void *o);
 /* commit when rc is STATUS_OK, else abort; returns rc or the commit's */
 int output_end(Output *o, int rc, Status *st);
 /* the files of the state at the model's last design, in folder sub/ */
@@ -31,7 +48,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 152 "paper/output.nw"
+#line 179 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -47,7 +64,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 174 "paper/output.nw"
+#line 201 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -75,7 +92,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 205 "paper/output.nw"
+#line 232 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
@@ -89,5 +106,5 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 146 "paper/output.nw"
+#line 173 "paper/output.nw"
 #endif

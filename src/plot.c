@@ -1,4 +1,4 @@
-#line 129 "paper/figures.nw"
+#line 130 "paper/figures.nw"
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -12,7 +12,7 @@
 #include "plot.h"
 #include "scene.h"
 #include "interrupt.h"
-#line 161 "paper/figures.nw"
+#line 162 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -21,7 +21,7 @@ typedef struct {
   int iterations;          /* its iterations */
   char state[2][1100];     /* the folders of its states: initial, final */
 } Plot;
-#line 179 "paper/figures.nw"
+#line 180 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -49,7 +49,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 219 "paper/figures.nw"
+#line 220 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -69,7 +69,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 242 "paper/figures.nw"
+#line 243 "paper/figures.nw"
 static const char *const state_files[] = {
   "shape.dat", "contact.dat", "nodes.dat", "triangles.dat" };
 
@@ -108,7 +108,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 285 "paper/figures.nw"
+#line 286 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -122,7 +122,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 309 "paper/figures.nw"
+#line 310 "paper/figures.nw"
 /* v in the fewest digits that read back as v; an integer as one (10, not 1e+01) */
 static const char *num(double v)
 {
@@ -139,7 +139,7 @@ static const char *num(double v)
   }
   return s;
 }
-#line 331 "paper/figures.nw"
+#line 332 "paper/figures.nw"
 static const char *real(double v, int digits)
 {
   static char buf[8][40];
@@ -150,7 +150,7 @@ static const char *real(double v, int digits)
   if (!strpbrk(s, ".en")) strcat(s, ".0");
   return s;
 }
-#line 345 "paper/figures.nw"
+#line 346 "paper/figures.nw"
 /* v as enhanced text: -5.75e8 as −5.75·10^{8} */
 static void enhanced_number(double v, char *buf, size_t size)
 {
@@ -168,7 +168,7 @@ static void enhanced_number(double v, char *buf, size_t size)
   else snprintf(buf, size, "%s%s%s10^{%s%d}", minus, strcmp(m, "1") ? m : "",
                 strcmp(m, "1") ? "·" : "", x < 0 ? "−" : "", abs(x));
 }
-#line 369 "paper/figures.nw"
+#line 370 "paper/figures.nw"
 /* s between single quotes for gnuplot; enhanced: its marks escaped */
 static void quote(FILE *f, const char *s, int enhanced)
 {
@@ -180,7 +180,7 @@ static void quote(FILE *f, const char *s, int enhanced)
   }
   fputc('\'', f);
 }
-#line 386 "paper/figures.nw"
+#line 387 "paper/figures.nw"
 #define SLACK 1e-9
 static double nice_down(double x)
 {
@@ -198,7 +198,7 @@ static double nice(double x)
   double d = nice_down(x), u = nice_up(x);
   return x / d <= u / x ? d : u;
 }
-#line 412 "paper/figures.nw"
+#line 413 "paper/figures.nw"
 static void tics_at(FILE *f, const char *axis, double first, double step,
                     double last, int format)
 {
@@ -213,7 +213,7 @@ static void tics(FILE *f, const char *axis, double lo, double hi, double n, int 
   double step = nice((hi - lo) / n);
   tics_at(f, axis, ceil(lo / step - SLACK) * step, step, hi, format);
 }
-#line 477 "paper/figures.nw"
+#line 478 "paper/figures.nw"
 static const char page_lines[] =
   "dpcm = 1600.0 / Wcm; fontpt = 12\n"
   "sx(cm) = cm / Wcm\n"
@@ -235,7 +235,7 @@ static const char terminal_lines[] =
   "  }\n"
   "  set output out.'.'.fmt\n"
   "  unset xlabel; unset ylabel; unset title; unset key\n";
-#line 507 "paper/figures.nw"
+#line 508 "paper/figures.nw"
 /* the head of a script: the figure, the run, and the variables of both */
 static void script_head(FILE *f, const Plot *pl, const char *what, const char *out)
 {
@@ -250,14 +250,14 @@ static void script_head(FILE *f, const Plot *pl, const char *what, const char *o
   fprintf(f, "\na = %s; b = %s; gamma = %s      # the body: a < x1 < b, x2 < gamma\n",
           real(p->a, 0), real(p->b, 0), real(p->gamma, 0));
 }
-#line 525 "paper/figures.nw"
+#line 526 "paper/figures.nw"
 static void place(FILE *f, const char *x, const char *w, const char *y, const char *h)
 {
   fprintf(f, "  set lmargin at screen sx(%s); set rmargin at screen sx(%s + %s)\n"
           "  set tmargin at screen sy(%s); set bmargin at screen sy(%s + %s)\n",
           x, x, w, y, y, h);
 }
-#line 564 "paper/figures.nw"
+#line 565 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
@@ -273,10 +273,10 @@ typedef struct {
   double top;                 /* cm above the upper panel */
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
 } Body_page;
-#line 583 "paper/figures.nw"
+#line 584 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 591 "paper/figures.nw"
+#line 592 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
@@ -301,7 +301,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
-#line 618 "paper/figures.nw"
+#line 619 "paper/figures.nw"
 static void top_support(FILE *f, Bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -316,7 +316,7 @@ static void top_support(FILE *f, Bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 637 "paper/figures.nw"
+#line 638 "paper/figures.nw"
 static double load_reach(const Side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Side *sd, int k)
@@ -328,7 +328,7 @@ static double side_reach(const Side *sd, int k)
   default: return 0;
   }
 }
-#line 653 "paper/figures.nw"
+#line 654 "paper/figures.nw"
 static Body_page body_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -348,7 +348,7 @@ static Body_page body_page(const Plot *pl)
   L.exag = fmax(L.vex, nice(3.52 / ((L.shi - L.slo) * L.ucm)));
   return L;
 }
-#line 685 "paper/figures.nw"
+#line 686 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -377,7 +377,7 @@ static double load_reach(const Side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 716 "paper/figures.nw"
+#line 717 "paper/figures.nw"
 static void load_text(const Side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -387,13 +387,13 @@ static void load_text(const Side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 730 "paper/figures.nw"
+#line 731 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 740 "paper/figures.nw"
+#line 741 "paper/figures.nw"
 static void side_load(FILE *f, const Side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -427,7 +427,7 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 784 "paper/figures.nw"
+#line 785 "paper/figures.nw"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
@@ -455,7 +455,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = L->ext[SIDE_TOP] + ALABEL + 0.396;
   }
 }
-#line 818 "paper/figures.nw"
+#line 819 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -485,7 +485,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low);
 }
-#line 851 "paper/figures.nw"
+#line 852 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low)
 {
   char f1[64], f2[64];
@@ -495,7 +495,7 @@ static void body_force_label(FILE *f, const Problem *p, int low)
           "at a + %s*(b - a), %s*gamma center front\n", f1, f2, low ? "0.7" : "0.65",
           low ? "0.5" : "0.6");
 }
-#line 866 "paper/figures.nw"
+#line 867 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -523,7 +523,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 906 "paper/figures.nw"
+#line 907 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -553,7 +553,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 939 "paper/figures.nw"
+#line 940 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -562,7 +562,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 956 "paper/figures.nw"
+#line 957 "paper/figures.nw"
 static void body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
@@ -597,7 +597,7 @@ static void body_figure(FILE *f, const Plot *pl, const char *out)
   body_strip(f, pl, &L);
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1050 "paper/figures.nw"
+#line 1051 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -615,7 +615,7 @@ static Results_page results_page(const Plot *pl)
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   return L;
 }
-#line 1071 "paper/figures.nw"
+#line 1072 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -626,7 +626,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1087 "paper/figures.nw"
+#line 1088 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
@@ -657,7 +657,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   results_scales(f, pl);
 }
-#line 1123 "paper/figures.nw"
+#line 1124 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -689,7 +689,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1159 "paper/figures.nw"
+#line 1160 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
@@ -712,7 +712,7 @@ static const char *exaggerated(const Results_page *L)
   snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
-#line 1188 "paper/figures.nw"
+#line 1189 "paper/figures.nw"
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -735,7 +735,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
             q->letter, exaggerated(L), k, k, k, k, k, VHEAD);
 }
-#line 1216 "paper/figures.nw"
+#line 1217 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -744,7 +744,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1232 "paper/figures.nw"
+#line 1233 "paper/figures.nw"
 static void energy_graph(FILE *f, const Plot *pl)
 {
   double step = nice_up(fmax(1, pl->iterations / 2.0));
@@ -764,7 +764,7 @@ static void energy_graph(FILE *f, const Plot *pl)
                           : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1264 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -791,7 +791,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
             "pt '◁' ps 1.3 lw 1.2 \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'", c, e);
   fprintf(f, "\n");
 }
-#line 1295 "paper/figures.nw"
+#line 1296 "paper/figures.nw"
 static void results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -811,7 +811,7 @@ static void results_figure(FILE *f, const Plot *pl, const char *out)
   }
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }
-#line 1329 "paper/figures.nw"
+#line 1330 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -843,7 +843,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 1364 "paper/figures.nw"
+#line 1365 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -856,7 +856,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 1381 "paper/figures.nw"
+#line 1382 "paper/figures.nw"
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
   int ws = 0, done;
@@ -874,7 +874,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 1405 "paper/figures.nw"
+#line 1406 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) body_figure(f, pl, out);
@@ -908,7 +908,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1447 "paper/figures.nw"
+#line 1448 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -936,7 +936,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 1484 "paper/figures.nw"
+#line 1485 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -957,7 +957,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1510 "paper/figures.nw"
+#line 1511 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -983,7 +983,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   return STATUS_OK;
 }
-#line 1540 "paper/figures.nw"
+#line 1541 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };
@@ -994,7 +994,9 @@ int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
     figure_name(a, fig[k], d->name[k], sizeof d->name[k]);
     if ((a->figures & fig[k]) && !a->print) rc = writable(d->name[k], st);
   }
-  if (!rc && !a->print) interrupt_catch(1);
+  if (!rc && !a->print)
+    interrupt_catch(1, "contactopt: plot: interrupted: the figures finished are "
+                    "kept, the one being drawn is not\n", NULL, NULL);
   for (int k = 0; k < 2 && !rc; k++) {
     if (!(a->figures & fig[k])) continue;
     if (a->print) write_script(out, &pl, fig[k], d->name[k]);
@@ -1003,7 +1005,7 @@ int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
       rc = status_set(st, STATUS_INTERRUPTED, "plot: interrupted by signal %d after "
                       "%s", interrupt_signal(), d->name[k]);
   }
-  if (!a->print) interrupt_catch(0);
+  if (!a->print) interrupt_catch(0, NULL, NULL, NULL);
   if (!rc && a->print && fflush(out))
     rc = status_set(st, STATUS_SYSTEM, "plot: cannot print the script: %s", strerror(errno));
   scene_free(&pl.s);

@@ -1,6 +1,7 @@
-#line 344 "paper/scene.nw"
+#line 343 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -51,34 +52,14 @@ static const char *name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 434 "paper/scene.nw"
-/* buf = x in %g with the fewest digits that read back as x exactly, its
-   exponent without + and leading zeros (2.15e11, 1e-6) */
-static const char *shortest(double x, char *buf, size_t size)
-{
-  char *e;
-  int digits;
-  for (digits = 1; digits < 17; digits++) {
-    snprintf(buf, size, "%.*g", digits, x);
-    if (strtod(buf, NULL) == x) break;
-  }
-  if (digits == 17) snprintf(buf, size, "%.17g", x);
-  if ((e = strchr(buf, 'e'))) {
-    char *from = e + 1 + (e[1] == '+'), *to = e + 1 + (e[1] == '-');
-    if (*from == '-') from++;
-    while (*from == '0' && from[1]) from++;
-    memmove(to, from, strlen(from) + 1);
-  }
-  return buf;
-}
-#line 463 "paper/scene.nw"
+#line 443 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
 {
   Qp_options d = qp_options_default((Qp_method)k);
   if (strcmp(key, "max_iter") == 0) snprintf(buf, size, "%d", d.max_iter);
-  else shortest(strcmp(key, "tol") == 0 ? d.tol : d.omega, buf, size);
+  else status_number(strcmp(key, "tol") == 0 ? d.tol : d.omega, buf);
   return buf;
 }
 
@@ -90,10 +71,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   if (strcmp(key, "metric") == 0)
     snprintf(buf, size, "%s", opt_metric_name(d.metric));
   else if (strcmp(key, "max_iter") == 0) snprintf(buf, size, "%d", d.max_iter);
-  else shortest(d.tol, buf, size);
+  else status_number(d.tol, buf);
   return buf;
 }
-#line 492 "paper/scene.nw"
+#line 472 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -122,10 +103,10 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 662 "paper/scene.nw"
+#line 642 "paper/scene.nw"
 static const Key keys[] = {
   
-#line 526 "paper/scene.nw"
+#line 506 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -166,9 +147,9 @@ static const Key keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder"},
-#line 664 "paper/scene.nw"
+#line 644 "paper/scene.nw"
   
-#line 569 "paper/scene.nw"
+#line 549 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -184,9 +165,9 @@ static const Key keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 665 "paper/scene.nw"
+#line 645 "paper/scene.nw"
   
-#line 589 "paper/scene.nw"
+#line 569 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -210,9 +191,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 666 "paper/scene.nw"
+#line 646 "paper/scene.nw"
   
-#line 616 "paper/scene.nw"
+#line 596 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -231,9 +212,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 667 "paper/scene.nw"
+#line 647 "paper/scene.nw"
   
-#line 637 "paper/scene.nw"
+#line 617 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -256,10 +237,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "max_iter", KEY_INT, .at = AT(optimizer.max_iter),
  .unit = "-", .by = optimizer_default, .selector = "method",
  .accepted = ">= 1", .meaning = "iteration limit of the optimiser"},
-#line 668 "paper/scene.nw"
+#line 648 "paper/scene.nw"
 };
 enum { NKEYS = sizeof keys / sizeof keys[0] };
-#line 674 "paper/scene.nw"
+#line 654 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 static const Key *key_find(const char *sec, const char *key)
 {
@@ -278,7 +259,7 @@ static int section_known(const char *sec)
     if (strcmp(keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 697 "paper/scene.nw"
+#line 677 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 static const char *key_names(const char *sec, char *buf, size_t size)
 {
@@ -294,7 +275,7 @@ static const char *key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 716 "paper/scene.nw"
+#line 696 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 static int key_means(const Key *k, const char *w)
 {
@@ -306,7 +287,7 @@ static int key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 739 "paper/scene.nw"
+#line 719 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)NKEYS <= (int)TABLE_MAX, "a scene's values fit the loader");
 
@@ -316,7 +297,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 754 "paper/scene.nw"
+#line 734 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -330,13 +311,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 785 "paper/scene.nw"
+#line 765 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 795 "paper/scene.nw"
+#line 775 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -355,7 +336,7 @@ int fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 817 "paper/scene.nw"
+#line 797 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 static void origin(const Loader *L, const char *override, char *buf,
                    size_t size)
@@ -363,7 +344,7 @@ static void origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 828 "paper/scene.nw"
+#line 808 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -373,7 +354,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 841 "paper/scene.nw"
+#line 821 "paper/scene.nw"
 static PRINTF_LIKE(3, 4)
 int bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -393,7 +374,7 @@ int blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 870 "paper/scene.nw"
+#line 850 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Loader *L, Entry *e, const char *sec, const char *key,
                  const char *val)
@@ -401,7 +382,7 @@ static int admit(Loader *L, Entry *e, const char *sec, const char *key,
   char where[640], list[256];
   origin(L, L->override, where, sizeof where);
   
-#line 891 "paper/scene.nw"
+#line 871 "paper/scene.nw"
 if (!*sec)
   return fail(L, "%s: line %d: %s = %s comes before any [section]", where,
               L->line, key, val);
@@ -411,7 +392,7 @@ if (!section_known(sec))
 if (!key_find(sec, key))
   return fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
               key, val, sec, key_names(sec, list, sizeof list));
-#line 877 "paper/scene.nw"
+#line 857 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                 key, (int)sizeof e->val - 1);
@@ -422,7 +403,7 @@ if (!key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 904 "paper/scene.nw"
+#line 884 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 static Entry *find(Loader *L, const char *sec, const char *key)
 {
@@ -432,7 +413,7 @@ static Entry *find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 918 "paper/scene.nw"
+#line 898 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Entry *add(Loader *L, const Entry *e)
 {
@@ -443,14 +424,14 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 970 "paper/scene.nw"
+#line 950 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Loader *L)
 {
   return fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
               "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 990 "paper/scene.nw"
+#line 970 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 static int in_comment(const char *buf, int line)
 {
@@ -475,7 +456,7 @@ static int long_line(Loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 949 "paper/scene.nw"
+#line 929 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -494,7 +475,7 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1021 "paper/scene.nw"
+#line 1001 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -505,7 +486,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1038 "paper/scene.nw"
+#line 1018 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -513,18 +494,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
        L->line, sec, key);
   return 0;
 }
-#line 1031 "paper/scene.nw"
+#line 1011 "paper/scene.nw"
   
-#line 1049 "paper/scene.nw"
+#line 1029 "paper/scene.nw"
 if ((old = find(L, sec, key))) {
   bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
       old->line);
   return 0;
 }
-#line 1032 "paper/scene.nw"
+#line 1012 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1090 "paper/scene.nw"
+#line 1070 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
 static int for_memory(Loader *L, int e)
 {
@@ -533,7 +514,7 @@ static int for_memory(Loader *L, int e)
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1063 "paper/scene.nw"
+#line 1043 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 static int read_scene(Loader *L)
 {
@@ -553,18 +534,18 @@ static int read_scene(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1101 "paper/scene.nw"
+#line 1081 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   fail(L, "%s: line %d: syntax error: expected [section], key = value, "
        "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1082 "paper/scene.nw"
+#line 1062 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1123 "paper/scene.nw"
+#line 1103 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -575,7 +556,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1140 "paper/scene.nw"
+#line 1120 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
@@ -589,7 +570,7 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = find(L, e->sec, keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1159 "paper/scene.nw"
+#line 1139 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 static int apply_override(Loader *L, const char *o)
 {
@@ -602,7 +583,7 @@ static int apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1184 "paper/scene.nw"
+#line 1164 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -614,7 +595,7 @@ if (!sec || !*sec || !*key)
        L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1171 "paper/scene.nw"
+#line 1151 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
@@ -624,7 +605,7 @@ else
   } else if (*e.val) add(L, &e);
   return L->failed;
 }
-#line 1213 "paper/scene.nw"
+#line 1193 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -664,7 +645,7 @@ static const char *to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1256 "paper/scene.nw"
+#line 1236 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -677,7 +658,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1272 "paper/scene.nw"
+#line 1252 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -688,7 +669,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1292 "paper/scene.nw"
+#line 1272 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -703,7 +684,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1309 "paper/scene.nw"
+#line 1289 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 static const Entry *entry(Loader *L, const char *sec, const char *key)
 {
@@ -722,7 +703,7 @@ static const Entry *entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1331 "paper/scene.nw"
+#line 1311 "paper/scene.nw"
 /* x = the number sec.key */
 static int real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -732,7 +713,7 @@ static int real(Loader *L, const char *sec, const char *key, double *x)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1343 "paper/scene.nw"
+#line 1323 "paper/scene.nw"
 /* k = the integer sec.key */
 static int integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -742,7 +723,7 @@ static int integer(Loader *L, const char *sec, const char *key, int *k)
     return blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1355 "paper/scene.nw"
+#line 1335 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 static int word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -753,7 +734,7 @@ static int word(Loader *L, const char *sec, const char *key, int *k)
   return blame(L, "unknown value (accepted: %s)",
                name_list(names, list, sizeof list));
 }
-#line 1371 "paper/scene.nw"
+#line 1351 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 static int refuse_unused(Loader *L, const char *sec, const char *selector,
                          const char *w)
@@ -767,16 +748,30 @@ static int refuse_unused(Loader *L, const char *sec, const char *selector,
       return bad(L, e, "has no effect with %s = %s", selector, w);
   return 0;
 }
-#line 1395 "paper/scene.nw"
+#line 1389 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
+/* the rounding of a ratio of decimals, relative: within it of a bound is on it */
+#define WINDOW_ROUNDING (4 * DBL_EPSILON)
 
-/* whether |x| / unit lies in the window (false if it overflows) */
+/* whether |x| / unit lies in the window, up to the rounding of the ratio
+   (false if it overflows) */
 static int in_window(double x, double unit)
 {
   double r = fabs(x) / unit;
-  return r >= WINDOW_MIN && r <= WINDOW_MAX;
+  return r >= WINDOW_MIN * (1 - WINDOW_ROUNDING)
+         && r <= WINDOW_MAX * (1 + WINDOW_ROUNDING);
+}
+
+/* buf = r, outside the window, with three digits or the fewest more
+   that still read outside it */
+static const char *outside(double r, char *buf)
+{
+  int digits = 3;
+  while (digits < 17 && in_window(strtod(status_digits(r, digits, buf), NULL), 1))
+    digits++;
+  return buf;
 }
 
 /* refuse the load x = the value converted last, times `times`, unless
@@ -784,32 +779,35 @@ static int in_window(double x, double unit)
 static int check_load(Loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
+  char r[STATUS_NUMBER];
   if (x == 0 || in_window(x * times, s->problem.E)) return 0;
-  return blame(L, "%s / E = %.3g: a load must be 0 or lie within [1e-30, "
+  return blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                "1e30] times E, where every product the solvers form is "
-               "finite", what, fabs(x) * times / s->problem.E);
+               "finite", what, outside(fabs(x) * times / s->problem.E, r));
 }
-#line 1425 "paper/scene.nw"
+#line 1434 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
+  char w[STATUS_NUMBER];
   int rc;
   if ((rc = real(L, "geometry", "a", &s->problem.a))
       || (rc = real(L, "geometry", "b", &s->problem.b)))
     return rc;
-  if (!(s->problem.b > s->problem.a)) return blame(L, "must exceed geometry.a = %g", s->problem.a);
+  if (!(s->problem.b > s->problem.a))
+    return blame(L, "must exceed geometry.a = %s", status_number(s->problem.a, w));
   if (!isfinite(s->problem.b - s->problem.a))
     return blame(L, "the width b - a overflows a double");
   if (!in_window(s->problem.b - s->problem.a, 1))
-    return blame(L, "the width b - a = %g must lie in [1e-30, 1e30], where "
+    return blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
                  "every product the solvers form is finite",
-                 s->problem.b - s->problem.a);
+                 outside(s->problem.b - s->problem.a, w));
   if ((rc = real(L, "geometry", "gamma", &s->problem.gamma))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1454 "paper/scene.nw"
+#line 1465 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -824,11 +822,12 @@ static int read_design(Loader *L, Scene *s)
   if (!(s->problem.C2 > 0)) return blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1480 "paper/scene.nw"
+#line 1491 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
+  char v[STATUS_NUMBER];
   int rc, k;
   if ((rc = integer(L, "mesh", "M", &s->problem.M))) return rc;
   if (s->problem.M < 1) return blame(L, "must be >= 1 (moving rows of cells)");
@@ -837,7 +836,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1514 "paper/scene.nw"
+#line 1527 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return bad(L, find(L, "mesh", k > 1 ? "refine" : "R"),
              "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -845,29 +844,32 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
              "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
              "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
              2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1492 "paper/scene.nw"
+#line 1504 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
-    return blame(L, "must exceed design.C0 = %g: the moving boundary must "
-                 "stay below the fixed part of the mesh", s->problem.C0);
+    return blame(L, "must exceed design.C0 = %s: the moving boundary must "
+                 "stay below the fixed part of the mesh", status_number(s->problem.C0, v));
   if (!(s->problem.gamma > s->problem.C0prime))
     return bad(L, find(L, "geometry", "gamma"), "must exceed mesh.C0prime "
-               "= %g: the fixed part of the mesh needs a height", s->problem.C0prime);
+               "= %s: the fixed part of the mesh needs a height",
+               status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1545 "paper/scene.nw"
+#line 1558 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
   double w = s->problem.b - s->problem.a, S = s->problem.gamma * w - s->problem.C2;
   double slack = 1e-12 * s->problem.gamma * w;
+  char v[2][STATUS_NUMBER];
   if (S >= -slack && S <= s->problem.C0 * w + slack) return 0;
   return bad(L, find(L, "design", "C2"), "C0, C1, C2 admit no shape: the "
-             "area under alpha would be S = gamma (b-a) - C2 = %g, outside "
-             "[0, C0 (b-a)] = [0, %g]", S, s->problem.C0 * w);
+             "area under alpha would be S = gamma (b-a) - C2 = %s, outside "
+             "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
+             status_number(s->problem.C0 * w, v[1]));
 }
-#line 1565 "paper/scene.nw"
+#line 1580 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Loader *L, Shape *sh)
 {
@@ -880,7 +882,7 @@ static int read_arc_shape(Loader *L, Shape *sh)
   if (!(sh->radius > 0)) return blame(L, "the radius must be > 0");
   return 0;
 }
-#line 1581 "paper/scene.nw"
+#line 1596 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Loader *L, Shape *sh)
 {
@@ -890,14 +892,14 @@ static int read_line_shape(Loader *L, Shape *sh)
     return rc;
   return real(L, "design", "line_end", &sh->end);
 }
-#line 1593 "paper/scene.nw"
+#line 1608 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Loader *L, Shape *sh)
 {
   sh->kind = SHAPE_CONSTANT;
   return real(L, "design", "constant", &sh->value);
 }
-#line 1605 "paper/scene.nw"
+#line 1620 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Loader *L, Scene *s,
                         int (*read_keys)(Loader *, Shape *))
@@ -908,7 +910,7 @@ static int fill_formula(Loader *L, Scene *s,
     rc = blame(L, "%s", why.msg);
   return rc;
 }
-#line 1620 "paper/scene.nw"
+#line 1635 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 static int resolve(const char *scene, const char *file, char *buf,
                    size_t size)
@@ -919,7 +921,7 @@ static int resolve(const char *scene, const char *file, char *buf,
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 1633 "paper/scene.nw"
+#line 1648 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 static int absolute(const char *path, char *buf, size_t size)
 {
@@ -930,7 +932,7 @@ static int absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 1650 "paper/scene.nw"
+#line 1665 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -958,7 +960,7 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1680 "paper/scene.nw"
+#line 1695 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -981,7 +983,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 1796 "paper/scene.nw"
+#line 1811 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -994,7 +996,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 1753 "paper/scene.nw"
+#line 1768 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Loader *L, Scene *s, const char *path,
@@ -1012,14 +1014,14 @@ static int shape_from_rows(Loader *L, Scene *s, const char *path,
                    "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                    r->x[j - 1]);
   
-#line 1785 "paper/scene.nw"
+#line 1800 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 1770 "paper/scene.nw"
+#line 1785 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -1032,7 +1034,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 1709 "paper/scene.nw"
+#line 1724 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -1063,7 +1065,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 1814 "paper/scene.nw"
+#line 1829 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -1077,20 +1079,22 @@ static int fill_file(Loader *L, Scene *s)
     return blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 1831 "paper/scene.nw"
+#line 1846 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
+  char v[3][STATUS_NUMBER];
   int i;
   for (i = 0; i <= s->problem.N; i++)
     if (!(s->alpha0[i] >= 0 && s->alpha0[i] < s->problem.C0prime))
-      return bad(L, find(L, "design", "initial"), "alpha0 = %g at node %d "
-                 "(x1 = %g) is outside [0, C0prime) = [0, %g)",
-                 s->alpha0[i], i, problem_node_x(&s->problem, i),
-                 s->problem.C0prime);
+      return bad(L, find(L, "design", "initial"), "alpha0 = %s at node %d "
+                 "(x1 = %s) is outside [0, C0prime) = [0, %s)",
+                 status_number(s->alpha0[i], v[0]), i,
+                 status_number(problem_node_x(&s->problem, i), v[1]),
+                 status_number(s->problem.C0prime, v[2]));
   return 0;
 }
-#line 1849 "paper/scene.nw"
+#line 1866 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 static int read_initial(Loader *L, Scene *s)
 {
@@ -1108,7 +1112,7 @@ static int read_initial(Loader *L, Scene *s)
   rc = k == 3 ? fill_file(L, s) : fill_formula(L, s, read_keys[k]);
   return rc ? rc : check_alpha0(L, s);
 }
-#line 1877 "paper/scene.nw"
+#line 1894 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -1128,30 +1132,31 @@ static int read_material(Loader *L, Scene *s)
   s->problem.model = (Plane_model)k;
   return 0;
 }
-#line 1906 "paper/scene.nw"
+#line 1923 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
   const char *sec = side_names[id];
   Side *d = &s->problem.side[id];
+  char v[2][STATUS_NUMBER];
   int rc;
   
-#line 1927 "paper/scene.nw"
+#line 1945 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
   "the part of the side the design never moves, [C0prime, gamma]";
 if ((rc = real(L, sec, "from", &d->from))) return rc;
 if (!(d->from >= lo))
-  return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
-               lo, hi);
+  return blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+               status_number(lo, v[0]), status_number(hi, v[1]));
 if ((rc = real(L, sec, "to", &d->to))) return rc;
 if (!(d->to > d->from))
-  return blame(L, "must exceed %s.from = %g", sec, d->from);
+  return blame(L, "must exceed %s.from = %s", sec, status_number(d->from, v[0]));
 if (!(d->to <= hi))
-  return blame(L, "the loaded interval must lie in %s = [%g, %g]", part,
-               lo, hi);
-#line 1913 "paper/scene.nw"
+  return blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+               status_number(lo, v[0]), status_number(hi, v[1]));
+#line 1931 "paper/scene.nw"
   if ((rc = real(L, sec, "P1", &d->P[0]))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = real(L, sec, "P2", &d->P[1]))
@@ -1162,7 +1167,7 @@ if (!(d->to <= hi))
                "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 1945 "paper/scene.nw"
+#line 1963 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -1174,7 +1179,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
   s->problem.side[id].kind = (Bc_kind)k;
   return k == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2016 "paper/scene.nw"
+#line 2034 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -1183,7 +1188,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return 0;
 }
-#line 1973 "paper/scene.nw"
+#line 1991 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Loader *L, Scene *s)
 {
@@ -1198,17 +1203,17 @@ static int check_held(Loader *L, Scene *s)
     return fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                 "stop the body sliding (singular problem)", L->path, sides);
   
-#line 1993 "paper/scene.nw"
+#line 2011 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
               "friction's bound, its coefficient times the normal forces, "
               "is not known before the solve (their sum is the vertical load "
               "only when no side holds u2); use contact.model = tresca, or "
               "hold u1 on a side", L->path, sides);
-#line 1987 "paper/scene.nw"
+#line 2005 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2002 "paper/scene.nw"
+#line 2020 "paper/scene.nw"
 if (p->contact == CONTACT_TRESCA)
   return fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
               "body: contact.g = %g Pa holds at most g (b - a) = %g N/m "
@@ -1219,9 +1224,9 @@ return fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
             "holds at most %g N/m sideways, not more than the horizontal load "
             "of %g N/m",
             L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 1989 "paper/scene.nw"
+#line 2007 "paper/scene.nw"
 }
-#line 2059 "paper/scene.nw"
+#line 2077 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -1246,7 +1251,7 @@ static int read_contact(Loader *L, Scene *s)
   if (p->max_fixed_point < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2041 "paper/scene.nw"
+#line 2059 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -1261,7 +1266,7 @@ static int read_loads(Loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2092 "paper/scene.nw"
+#line 2110 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -1274,7 +1279,7 @@ static int read_solver(Loader *L, Scene *s)
                  "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                  problem_contact_name(s->problem.contact));
   
-#line 2121 "paper/scene.nw"
+#line 2139 "paper/scene.nw"
 if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -1285,7 +1290,7 @@ if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                problem_bc_name(s->problem.side[0].kind),
                problem_bc_name(s->problem.side[1].kind),
                problem_bc_name(s->problem.side[2].kind));
-#line 2104 "paper/scene.nw"
+#line 2122 "paper/scene.nw"
   if ((rc = real(L, "solver", "tol", &o->tol))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return blame(L, "must lie in (0, 1): it is a relative residual");
@@ -1296,7 +1301,7 @@ if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2143 "paper/scene.nw"
+#line 2161 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
@@ -1321,7 +1326,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->max_iter < 1) return blame(L, "must be >= 1");
   return 0;
 }
-#line 2177 "paper/scene.nw"
+#line 2195 "paper/scene.nw"
 /* the scene = the table, checked */
 static int convert(Loader *L, Scene *s)
 {
@@ -1334,7 +1339,7 @@ static int convert(Loader *L, Scene *s)
     rc = step[i](L, s);
   return rc;
 }
-#line 2194 "paper/scene.nw"
+#line 2212 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -1354,14 +1359,14 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2217 "paper/scene.nw"
+#line 2235 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
   free(s->alpha0);
   s->alpha0 = NULL;
 }
-#line 2234 "paper/scene.nw"
+#line 2252 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -1390,7 +1395,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2266 "paper/scene.nw"
+#line 2284 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -1414,7 +1419,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2294 "paper/scene.nw"
+#line 2312 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -1427,7 +1432,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2312 "paper/scene.nw"
+#line 2330 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -1451,18 +1456,18 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2341 "paper/scene.nw"
+#line 2359 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2335 "paper/scene.nw"
+#line 2353 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
-#line 2358 "paper/scene.nw"
+#line 2376 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Key *k, char *buf,
                                size_t size)
@@ -1472,13 +1477,13 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   int v;
   if (k->at == AT_DEFAULT) return k->dflt;
   if (k->type == KEY_TEXT) return at;
-  if (k->type == KEY_REAL) return memcpy(&x, at, sizeof x), shortest(x, buf, size);
+  if (k->type == KEY_REAL) return memcpy(&x, at, sizeof x), status_number(x, buf);
   memcpy(&v, at, sizeof v);
   if (k->type == KEY_WORD) return k->words[v];
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2381 "paper/scene.nw"
+#line 2399 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

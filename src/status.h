@@ -24,5 +24,14 @@ int status_set(Status *st, Status_code code, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)))
 #endif
   ;
+#line 61 "paper/status.nw"
+/* room for any double written by status_number, its terminator included */
+#define STATUS_NUMBER 32
+/* buf (size >= STATUS_NUMBER) = x in %g with the fewest significant digits
+   that read back as x exactly; returns buf */
+const char *status_number(double x, char *buf);
+/* buf (size >= STATUS_NUMBER) = x in %g to digits (1..17) significant
+   digits, the exponent tidied likewise; returns buf */
+const char *status_digits(double x, int digits, char *buf);
 #line 35 "paper/status.nw"
 #endif

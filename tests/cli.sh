@@ -3,6 +3,7 @@
 # file, nothing written.
 . tests/lib.sh
 scene=data/example-5.1.scene
+top=$PWD      # the package's root, for commands run in another folder
 $BIN --help > $TMP/help; rc=$?
 check "contactopt --help exits 0 and names the solve command" \
   sh -c "[ $rc -eq 0 ] && grep -q solve $TMP/help"
@@ -45,8 +46,8 @@ check "shape.dat has N+1 = 17 rows" sh -c "[ \$(grep -vc '^#' $out/shape.dat) -e
 check "contact.dat: every gap >= 0 and every contact force >= -1e-12 max T" \
   holds 'gap >= -1e-12 && T >= -1e-12 * max(Tmax, 0)' gap="$(rows_min '$4' $out/contact.dat)" \
     T="$(rows_min '$5' $out/contact.dat)" Tmax="$(rows_max '$5' $out/contact.dat)"
-check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $OLDPWD/$scene d/x.scene &&
-  $OLDPWD/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
+check "the default output folder is out/NAME" sh -c "cd $TMP && mkdir -p d && cp $top/$scene d/x.scene &&
+  $top/$BIN solve d/x.scene >/dev/null && test -s out/x/summary.dat"
 
 # one override switches a side, the contact law or the initial shape: the
 # file's keys that the new word makes meaningless are dropped
@@ -57,6 +58,8 @@ $BIN solve data/example-5.1-tresca.scene -o $TMP/coulomb -s contact.model=coulom
   -s contact.friction=0.2 > /dev/null 2> $TMP/err; rc=$?
 check "solve -s contact.model=coulomb on the Tresca scene drops its g: exit 0 ($(cat $TMP/err))" \
   sh -c "[ $rc -eq 0 ] && grep -q '^contact coulomb' $TMP/coulomb/summary.dat"
+check "summary.dat and effective.scene echo friction = 0.2 as given (not 0.20000000000000001)" \
+  sh -c "grep -q '^friction 0.2\$' $TMP/coulomb/summary.dat && grep -q '^friction = 0.2\$' $TMP/coulomb/effective.scene"
 
 # a fine mesh from a coarse optimum: the final shape.dat of an optimisation
 # on N = 16, read on the mesh refined four times, is resampled onto its 65
@@ -101,6 +104,65 @@ $BIN gradcheck $scene -o $TMP/bad --plot-files > /dev/null 2> $TMP/err; rc=$?
 if clean_failure $rc 2 $TMP/err $TMP/bad --plot-files gradcheck; then
   ok "gradcheck refuses --plot-files (it writes no mesh): exit 2, $(cat $TMP/err)"
 else fail "gradcheck --plot-files: exit $rc: $(cat $TMP/err)"; fi
+# every path the command line names is checked before any work: a
+# gradcheck at N = 64 (seconds of work, a line of progress a second) that
+# is refused prints nothing on the standard output, one line on the
+# standard error naming the path and the reason, and writes nothing
+early() { # description exit pattern -- arguments (after "gradcheck SCENE")
+  desc=$1 code=$2 pat=$3; shift 4
+  rm -rf $TMP/bad
+  ( cd $TMP && "$top/$BIN" gradcheck "$top/$scene" -s mesh.refine=4 "$@" > $TMP/stdout 2> $TMP/err ); rc=$?
+  check "$desc: exit $rc at once, one line naming the path and the reason ($(cat $TMP/err))" \
+    at_once $rc $code $TMP/err $TMP/bad "$pat"; }
+# at_once RC CODE ERR DIR PATTERN: clean_failure, no line of work, no staging folder
+at_once() { [ ! -s $TMP/stdout ] && ! ls -a $TMP | grep -q 'partial-' && clean_failure "$@"; }
+early "--matrix-market /nonexistent/A.mtx" 4 \
+  '/nonexistent/A.mtx: cannot create it in /nonexistent: No such file or directory' -- \
+  -o $TMP/bad --matrix-market /nonexistent/A.mtx
+early "-o ''" 2 "-o '': the output folder has an empty name" -- -o ''
+touch $TMP/afile
+early "-o under a file" 4 'afile/bad: cannot create it in .*afile: Not a directory' -- -o $TMP/afile/bad
+early "-o DIR/." 2 'cannot replace the folder \.' -- -o $TMP/bad/.
+early "--matrix-market ''" 2 "--matrix-market '': the file has an empty name" -- -o $TMP/bad --matrix-market ''
+early "--matrix-market a folder" 4 "$TMP: cannot write: Is a directory" -- -o $TMP/bad --matrix-market $TMP
+early "--matrix-market in a folder that is not there" 4 'sub/A.mtx: cannot create it in .*bad/sub: No such file' -- \
+  -o $TMP/bad --matrix-market $TMP/bad/sub/A.mtx
+early "--components beyond N" 2 'example-5.1.scene: command line: --components 65: not a list of nodes .* in 0..N = 0..64' -- \
+  -o $TMP/bad --components 65
+early "--components 3," 2 'command line: --components 3,: not a list' -- -o $TMP/bad --components 3,
+early "--components 4-0" 2 'command line: --components 4-0: not a list' -- -o $TMP/bad --components 4-0
+early "--components 0-8/0" 2 'command line: --components 0-8/0: not a list' -- -o $TMP/bad --components 0-8/0
+$BIN solve $scene -o $TMP/bad --components 1 > /dev/null 2> $TMP/err; rc=$?
+check "solve refuses --components (it checks no gradient): exit 2, $(cat $TMP/err)" \
+  clean_failure $rc 2 $TMP/err $TMP/bad '--components: solve checks no gradient'
+# names that work: a trailing slash (twice: the second replaces the first
+# run), and a matrix in the output folder the run is to make
+$BIN solve $scene -o $TMP/slash/ > /dev/null 2> $TMP/err && $BIN solve $scene -o $TMP/slash/ > /dev/null 2>> $TMP/err; rc=$?
+check "-o DIR/ twice: exit $rc, the run in DIR, nothing beside it $(cat $TMP/err)" \
+  sh -c "[ $rc -eq 0 ] && [ -s $TMP/slash/summary.dat ] && [ \$(ls -d $TMP/slash* | wc -l) -eq 1 ]"
+$BIN solve $scene -o $TMP/new/run --matrix-market $TMP/new/./run/A.mtx > /dev/null 2> $TMP/err; rc=$?
+check "--matrix-market into the output folder the run makes: exit $rc, the matrix there $(cat $TMP/err)" \
+  sh -c "[ $rc -eq 0 ] && [ -s $TMP/new/run/A.mtx ] && [ -s $TMP/new/run/summary.dat ]"
+
+# --components: the nodes listed, a row of gradient.dat each
+$BIN gradcheck $scene -o $TMP/some --components 0,3-9/3,16 > $TMP/stdout 2> $TMP/err; rc=$?
+check "gradcheck --components 0,3-9/3,16: exit $rc, nodes 0 3 6 9 16 in gradient.dat, nodes_checked 5" \
+  test $rc -eq 0 -a "$(awk '!/^#/ { printf "%s ", $1 }' $TMP/some/gradient.dat)" = "0 3 6 9 16 " \
+    -a "$(value nodes_checked $TMP/some)" = 5
+# node 16 lies on the foundation (the arc meets it at x1 = b): its five
+# differences are one-sided, three solves each; the others two each
+check "gradcheck says first how long it will take: 5 of 17 nodes, 57 state solves (4 x 10 + 15, and 2 at the design)" \
+  grep -q '^gradcheck: 5 of 17 nodes, 57 state solves of about .* s: about [0-9]* s$' $TMP/stdout
+check "a short check warns of nothing (stderr empty)" test ! -s $TMP/err
+
+# a state solver's failure names the scene, as every failure does
+$BIN solve $scene -o $TMP/bad -s solver.max_iter=2 > /dev/null 2> $TMP/err; rc=$?
+check "pdas stopped after 2 iterations: exit 3, one line naming the scene first: $(cat $TMP/err)" \
+  clean_failure $rc 3 $TMP/err $TMP/bad "^contactopt: $scene: pdas: not converged after 2 iterations"
+$BIN optimize $scene -o $TMP/bad -s solver.state=cgssor -s solver.max_iter=2 > /dev/null 2> $TMP/err; rc=$?
+check "cgssor stopped after 2 iterations in optimize: exit 3, one line naming the scene first: $(cat $TMP/err)" \
+  clean_failure $rc 3 $TMP/err $TMP/bad "^contactopt: $scene: cgssor: not converged after 2 iterations"
+
 printf '[geometry\na = 0\n' > $TMP/broken.scene
 bad "a syntax error" broken.scene line -- $TMP/broken.scene
 # found by make fuzz (tests/fuzz/): a NUL byte on the last line, which has

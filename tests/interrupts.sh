@@ -1,10 +1,13 @@
 #!/bin/sh
 # interrupts.sh: SIGINT at twenty random moments of an optimisation and of a
-# solve (issue 19).  Each run must end with exit 130, or 0 if it had
-# finished; leave the output folder complete (a new run's, every file of
-# it) or as it was (absent, or the previous run's byte for byte), never
-# half written; and leave nothing beside it (no staging folder
-# DIR.partial-PID, no old run DIR.old-PID).  Odd runs write into a new
+# solve (issue 19), and twice at twenty moments of an optimisation, the
+# second soon after the first (issue 20).  Each run must end with exit 130,
+# or 0 if it had finished; leave the output folder complete (a new run's,
+# every file of it) or as it was (absent, or the previous run's byte for
+# byte), never half written; and leave nothing beside it (no staging folder
+# DIR.partial-PID, no old run DIR.old-PID).  Its standard error holds at
+# most the line the first signal writes at once and, last, the line of a
+# run stopped at an iterate.  Odd runs write into a new
 # folder, even ones into a folder that holds a previous run.  The moments
 # are drawn uniformly from [0, 1.1 T], T the time of an uninterrupted run
 # measured first, by awk's generator from INTERRUPT_SEED (default 19):
@@ -59,9 +62,21 @@ start() { _o=$1; shift; $dflt $BIN "$@" -o $_o > $d/out 2> $d/err & pid=$!; }
 # until_staged DIR: wait (polling) until DIR is staged or the run $pid has ended
 until_staged() { while ! staged $1 && kill -0 $pid 2>/dev/null; do sleep 0.005; done; }
 
+# said FILE: FILE (a run's standard error) holds nothing but, at most once
+# each and in this order, the line of the first signal and the line of a run
+# stopped at an iterate; says=N: it has N lines
+said() { awk 'NR == 1 && /^contactopt: .*: interrupted: .*; interrupt again to stop at once without them$/ { next }
+  /^contactopt: .*: interrupted by signal [0-9]+ at iteration [0-9]+: the files of the best design so far are in / && !last++ { next }
+  { bad = 1 } END { exit bad }' "$1"; }
+# the line of the first signal, and that of a stopped run, in FILE
+first_line() { grep -c 'interrupted: .*interrupt again to stop at once' "$1"; }
+final_line() { grep -c 'interrupted by signal' "$1"; }
+
 # leg NAME ARGS...: RUNS runs of "$BIN ARGS", each interrupted at a moment
 # from its start; with window=1, every other moment is counted from the
-# moment the staging folder appears instead, drawn from the time it exists
+# moment the staging folder appears instead, drawn from the time it exists;
+# with twice=1, a second SIGINT follows the first after a moment drawn
+# from [0, 0.2] s
 leg() { name=$1; shift
   d=$TMP/$name; mkdir -p $d
   t0=$(now); start $d/ref "$@"; until_staged $d/ref; ts=$(now); wait $pid; rc=$?; t1=$(now)
@@ -69,35 +84,42 @@ leg() { name=$1; shift
   T=$(calc 't1 - t0' t0=$t0 t1=$t1) W=$(calc 't1 - ts' ts=$ts t1=$t1)
   awk -v seed=$SEED -v name=$name -v T=$T -v W=$W -v w=${window:-0} -v n=$RUNS 'BEGIN {
     srand(seed + length(name))
-    for (i = 1; i <= n; i++) if (w && i % 2) printf "staged %.3f\n", 1.1 * W * rand()
-                             else printf "start %.3f\n", 1.1 * T * rand() }' > $d/moments
-  : > $d/bad; before=0 after=0 stopped=0 finished=0 i=0
-  while read -r from t; do
+    for (i = 1; i <= n; i++) if (w && i % 2) printf "staged %.3f %.3f\n", 1.1 * W * rand(), 0.2 * rand()
+                             else printf "start %.3f %.3f\n", 1.1 * T * rand(), 0.2 * rand() }' > $d/moments
+  : > $d/bad; before=0 after=0 stopped=0 finished=0 killed=0 i=0
+  while read -r from t t2; do
     i=$((i + 1)); out=$d/run$i; prev=
     if [ $((i % 2)) -eq 0 ]; then cp -R $d/ref $out; prev=$d/prev$i; cp -R $d/ref $prev; fi
     start $out "$@"
     [ $from = staged ] && until_staged $out
-    sleep $t; kill -INT $pid 2>/dev/null; wait $pid; rc=$?
-    lines=$(wc -l < $d/err)
+    sleep $t; kill -INT $pid 2>/dev/null
+    [ "${twice:-0}" = 1 ] && { sleep $t2; kill -INT $pid 2>/dev/null; }
+    wait $pid; rc=$?
+    first=$(first_line $d/err) final=$(final_line $d/err)
     left=$(ls -d $out.* 2>/dev/null | wc -l)
-    if [ $rc -eq 0 ] && [ $lines -eq 0 ] && same_run $d/ref $out; then how=finished
-    elif [ $rc -eq 130 ] && [ $lines -eq 1 ] && grep -q 'interrupted' $d/err && stopped $out $d/ref; then how=stopped
-    elif [ $rc -eq 130 ] && [ $lines -eq 0 ] && untouched "$prev" $out; then how=before
-    elif [ $rc -eq 130 ] && [ $lines -eq 0 ] && same_run $d/ref $out; then how=after
+    if ! said $d/err; then how=
+    elif [ $rc -eq 0 ] && [ $final -eq 0 ] && same_run $d/ref $out; then how=finished
+    elif [ $rc -eq 130 ] && [ $first -eq 1 ] && [ $final -eq 1 -o "${twice:-0}" = 1 ] && stopped $out $d/ref; then how=stopped
+    elif [ $rc -eq 130 ] && [ $first -eq 0 ] && untouched "$prev" $out; then how=before
+    elif [ $rc -eq 130 ] && [ $first -eq 0 ] && same_run $d/ref $out; then how=after
+    elif [ $rc -eq 130 ] && [ "${twice:-0}" = 1 ] && [ $final -eq 0 ] && untouched "$prev" $out; then how=killed
     else how=; fi
     if [ -z "$how" ] || [ $left -ne 0 ]; then
-      echo "run $i at $t s from the $from: exit $rc, $lines lines ($(head -c 150 $d/err | tr '\n' ' ')), $left beside the folder, folder $(ls $out 2>/dev/null | wc -l) entries" >> $d/bad
+      echo "run $i at $t s from the $from: exit $rc, $(wc -l < $d/err) lines ($(head -c 150 $d/err | tr '\n' ' ')), $left beside the folder, folder $(ls $out 2>/dev/null | wc -l) entries" >> $d/bad
     else eval "$how=\$(($how + 1))"; fi
     rm -rf $out $out.* $prev
   done < $d/moments
   span="in [0, $(show %.2f $(calc '1.1 * T' T=$T))] s"
   [ "${window:-0}" = 1 ] && span="$span, every other in [0, $(show %.2f $(calc '1.1 * W' W=$W))] s after the staging folder appeared"
-  check "$name: SIGINT at $RUNS moments $span: exit 130 or 0, the folder complete or as it was, nothing beside it ($before killed before staging, $stopped stopped with their files, $finished finished, $after killed after the commit)" \
+  again=; [ "${twice:-0}" = 1 ] && again=", again after [0, 0.2] s,"
+  check "$name: SIGINT at $RUNS moments $span$again: exit 130 or 0, the folder complete or as it was, nothing beside it ($before killed before staging, $stopped stopped with their files, $finished finished, $after killed after the commit, $killed killed by the second with the folder as it was)" \
     test ! -s $d/bad
   head -5 $d/bad | sed 's/^/# /'
 }
 
 leg optimize optimize $ex -s mesh.refine=8
-window=1
+twice=1
+leg twice optimize $ex -s mesh.refine=8
+twice=0 window=1
 leg solve solve $ex -s mesh.refine=16 --plot-files
 finish

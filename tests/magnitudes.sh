@@ -46,4 +46,16 @@ refused "a body force of 1e300 N/m^3" body_force.F1 'a load must be 0' -- -s bod
 refused "E = 0x10, hexadecimal" material.E 'hexadecimal' -- -s material.E=0x10
 refused "M = 0x2, hexadecimal" mesh.M 'hexadecimal' -- -s mesh.M=0x2
 refused "E = inf" material.E 'not a finite number' -- -s material.E=inf
+# on the bound as the user writes it: |P2| / E = 2e-19 / 2e11 = 1e-30 in
+# decimal, whose doubles' quotient is 9.9999999999999992e-31, is accepted;
+# just outside, the message shows the ratio with the digits that put it
+# outside, not 1e-30
+$BIN solve $ex -o $TMP/bound -s material.E=2e11 -s top.P2=-2e-19 > /dev/null 2> $TMP/err; rc=$?
+check "|P2| / E = 2e-19 / 2e11, on the bound 1e-30 in decimal: accepted (exit $rc $(cat $TMP/err))" \
+  test $rc -eq 0 -a -s $TMP/bound/summary.dat
+$BIN solve $ex -o $TMP/bound -s material.E=4.9e10 -s top.P2=-4.9e40 > /dev/null 2> $TMP/err; rc=$?
+check "|P2| / E = 4.9e40 / 4.9e10, on the bound 1e30 in decimal (the doubles' quotient 1.0000000000000002e30): accepted (exit $rc)" \
+  test $rc -eq 0
+refused "|P2| / E = 1.99999e-19 / 2e11, just below 1e-30" top.P2 '\|P2\| / E = 9\.9999e-31: a load must be 0 or lie within \[1e-30, 1e30\]' -- \
+  -s material.E=2e11 -s top.P2=-1.99999e-19
 finish

@@ -312,15 +312,15 @@ done
 
 # Ctrl-C while gnuplot draws the results: a terminal signals the process
 # group, contactopt and gnuplot; the body figure, finished, stays, the
-# results are removed, exit 130 with one line
+# results are removed, exit 130 with two lines: the signal's at once, the end's
 if command -v setsid > /dev/null && env --default-signal=INT true 2>/dev/null; then
   $BIN solve data/example-5.1.scene -s mesh.refine=16 -o $TMP/big --plot-files > /dev/null
   setsid env --default-signal=INT $BIN plot $TMP/big -o $TMP/big/fig > /dev/null 2> $TMP/err &
   pid=$!
   for i in $(seq 1 3000); do ls $TMP/big/fig-results.partial-* > /dev/null 2>&1 && break; sleep 0.005; done
   kill -INT -$pid; wait $pid; rc=$?
-  check "Ctrl-C while the results are drawn: exit 130, one line, the body kept, nothing of the results ($(cat $TMP/err))" \
-    sh -c "[ $rc -eq 130 ] && [ \$(wc -l < $TMP/err) -eq 1 ] && grep -q 'interrupted by signal 2' $TMP/err &&
+  check "Ctrl-C while the results are drawn: exit 130, two lines, the body kept, nothing of the results ($(cat $TMP/err))" \
+    sh -c "[ $rc -eq 130 ] && [ \$(wc -l < $TMP/err) -eq 2 ] && grep -q 'interrupted: the figures finished are kept' $TMP/err && grep -q 'interrupted by signal 2' $TMP/err &&
            test -s $TMP/big/fig-body.png -a ! -e $TMP/big/fig-results.pdf && ! ls $TMP/big/*.partial-* 2>/dev/null"
 else
   echo "# setsid or env --default-signal is missing: the interruption of plot is not tried"

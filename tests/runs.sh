@@ -1,8 +1,10 @@
 # runs.sh: what a run leaves behind and how it ends (issue "a user's first
 # hour"): a problem too large for the memory is refused before any work
 # (exit 5), memory running out on the way is exit 5 too; Ctrl-C or SIGTERM
-# during optimize writes every file of the best design so far, with
-# stop_reason interrupted, exit 130 and no staging folder; an output folder
+# during optimize says so at once and writes every file of the best design
+# so far, with stop_reason interrupted, exit 130 and no staging folder; a
+# second one stops at once and removes the staging folder; a SIGINT ignored
+# when the program starts stays ignored; an output folder
 # holds exactly one run's files and is replaced as a whole; a folder that
 # is not a run's is never replaced; a killed run's staging folder goes;
 # gradcheck reports progress; --matrix-market works with every command.
@@ -33,15 +35,27 @@ esac
 
 # ---- interrupts ------------------------------------------------------------------
 # SLSQP on N = 256 takes about 10 s: the signal comes after the first
-# iterations are printed.
+# iterations are printed.  A script starts its background jobs with SIGINT
+# ignored (POSIX), which the program keeps: env --default-signal starts
+# them as a terminal does.
+dflt=
+env --default-signal=INT true 2>/dev/null && dflt="env --default-signal=INT"
+[ -n "$dflt" ] || echo "# env --default-signal is missing: SIGINT is sent to runs that ignore it"
+# heard PID: the line of the first signal appears while the run PID works
+heard() { for _t in $(seq 500); do
+    grep -q 'interrupted: the run stops at the next iterate' $TMP/err && break; sleep 0.01; done
+  grep -q 'interrupted: the run stops at the next iterate' $TMP/err && kill -0 $1 2>/dev/null; }
 for sig in INT TERM; do
   d=$TMP/sig$sig
-  $BIN optimize $ex -o $d -s mesh.refine=16 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
+  rm -f $TMP/out $TMP/err
+  $dflt $BIN optimize $ex -o $d -s mesh.refine=16 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
   pid=$!
-  for t in $(seq 300); do grep -q '^   2  E' $TMP/out && break; sleep 0.1; done
+  for t in $(seq 300); do grep -q '^   2  E' $TMP/out 2>/dev/null && break; sleep 0.1; done
   kill -$sig $pid; wait $pid; rc=$?
-  check "SIG$sig during optimize: exit 130, one line saying so" \
-    holds 'rc == 130 && lines == 1' rc=$rc lines="$(wc -l < $TMP/err)"
+  check "SIG$sig during optimize: exit 130, two lines: the first's, that the run stops at the next iterate, and the last saying where the files are" \
+    holds 'rc == 130 && lines == 2 && first && last' rc=$rc lines="$(wc -l < $TMP/err)" \
+      last="$(tail -1 $TMP/err | grep -c "interrupted by signal .* the files of the best design so far are in $d/")" \
+      first="$(head -1 $TMP/err | grep -c 'interrupted: the run stops at the next iterate and writes the files of that design; interrupt again')"
   check "SIG$sig: the files of the best design so far, stop_reason interrupted ($(value stop_reason $d), iteration $(value iterations $d))" \
     test "$(value stop_reason $d)" = interrupted -a -s $d/final/contact.dat -a -s $d/multipliers.dat \
       -a "$(value iterations $d)" -ge 2
@@ -50,6 +64,45 @@ for sig in INT TERM; do
        = "$(awk 'NR > 1 { printf "%.10e\n", $2 }' $d/final/shape.dat | md5sum)"
   check "SIG$sig: no staging folder is left" test -z "$(ls -d $d.partial-* 2>/dev/null)"
 done
+# at N = 512 an iterate of SLSQP takes seconds: the first SIGINT's line
+# comes at once, while the run works on its iterate; a second SIGINT then
+# stops it: the staging folder is removed, the folder that held a
+# previous run is as it was, into a new folder nothing is left.  A first
+# signal that falls in the monitor's writing of iterate 0 stops the run
+# there, and the second then ends it once its files are in place (a
+# complete run, stop_reason interrupted); such a run is tried again, up to
+# three times.
+for into in new old; do
+  d=$TMP/twice-$into
+  for try in 1 2 3; do
+    rm -rf $d $d.prev $TMP/out $TMP/err
+    [ $into = old ] && $BIN solve $ex -o $d >/dev/null 2>&1 && cp -R $d $d.prev
+    $dflt $BIN optimize $ex -o $d -s mesh.refine=32 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
+    pid=$!
+    for t in $(seq 600); do grep -q '^   0  E' $TMP/out 2>/dev/null && break; sleep 0.05; done
+    sleep 0.5; kill -INT $pid; heard $pid; at_once=$?
+    kill -INT $pid; wait $pid; rc=$?
+    if [ $into = new ]; then kept=$([ ! -e $d ] && echo 1 || echo 0)
+    else kept=$(diff -r $d $d.prev >/dev/null 2>&1 && echo 1 || echo 0); fi
+    [ $kept = 1 ] || [ "$(value stop_reason $d 2>/dev/null)" != interrupted ] || [ -n "$(ls -d $d.partial-* 2>/dev/null)" ] || continue
+    break
+  done
+  check "SIGINT at N = 512 ($into folder, try $try): its line at once, while the run works on its iterate" test $at_once -eq 0
+  check "two SIGINTs into the $into folder: exit 130, one line (the first's), no staging folder, the folder as it was (exit $rc, $(wc -l < $TMP/err) lines, $(ls -d $d.partial-* 2>/dev/null | wc -l) staging, kept $kept)" \
+    holds 'rc == 130 && lines == 1 && left == 0 && kept' rc=$rc lines="$(wc -l < $TMP/err)" \
+      left="$(ls -d $d.partial-* 2>/dev/null | wc -l)" kept=$kept
+done
+# SIGINT ignored when the program starts (a script's background job) stays
+# ignored: the optimisation goes on to its end
+d=$TMP/ignored
+rm -f $TMP/out $TMP/err
+sh -c 'trap "" INT; exec "$@"' sh $BIN optimize $ex -o $d -s mesh.refine=8 >$TMP/out 2>$TMP/err &
+pid=$!
+for t in $(seq 300); do grep -q '^   1  E' $TMP/out 2>/dev/null && break; sleep 0.05; done
+kill -INT $pid; wait $pid; rc=$?
+check "SIGINT ignored at the start stays ignored: the run ends by itself (exit $rc, stop_reason $(value stop_reason $d)), no line" \
+  holds 'rc == 0 && lines == 0 && converged' rc=$rc lines="$(wc -l < $TMP/err)" \
+    converged=$([ "$(value stop_reason $d)" = converged ] && echo 1 || echo 0)
 
 # ---- output folders ---------------------------------------------------------------
 d=$TMP/folder
@@ -97,6 +150,24 @@ $BIN gradcheck $ex -o $TMP/gc -s mesh.refine=8 --matrix-market $TMP/gc.mtx >$TMP
 check "gradcheck at N = 128 prints progress lines, the last at node 129 of 129" \
   test "$(grep -c '^gradcheck: node ' $TMP/out)" -ge 2 -a \
        "$(grep '^gradcheck: node ' $TMP/out | tail -1 | awk '{ print $3, $5 }')" = "129 129,"
+check "... each with the time left at the pace so far" \
+  test "$(grep '^gradcheck: node ' $TMP/out | grep -c -v 'about [0-9]* s left$')" -eq 0
+# a long check is announced before it starts: at N = 512 every node (ten
+# state solves each, fifteen on the foundation) takes minutes; the warning
+# names the time and a --components spread that takes under a minute.
+# The run is stopped once it has said so (SIGINT before it stages its folder).
+rm -f $TMP/out $TMP/err
+$dflt $BIN gradcheck $ex -o $TMP/long -s mesh.refine=32 > $TMP/out 2> $TMP/err &
+pid=$!
+for t in $(seq 600); do grep -q 'warning' $TMP/err 2>/dev/null && break; kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+kill -INT $pid 2>/dev/null; wait $pid
+set -- $(sed -n 's/^gradcheck: 513 of 513 nodes, \([0-9]*\) state solves of about \([0-9.e+-]*\) s: about \([0-9]*\) s$/\1 \2 \3/p' $TMP/out)
+check "gradcheck at N = 512 says first: 513 nodes, $1 state solves (between 10 and 15 a node, 2 more), about $3 s" \
+  holds 'solves >= 10 * 513 + 2 && solves <= 15 * 513 + 2 && total >= 0.9 * solves * t' solves="$1" t="$2" total="$3"
+set -- $(sed -n 's/^contactopt: warning: .*example-5.1.scene: gradcheck of 513 nodes will take about \([0-9]*\) s ([0-9]* state solves of [0-9.e+-]* s); --components 0-512\/\([0-9]*\) checks \([0-9]*\) of them in about \([0-9]*\) s$/\1 \2 \3 \4/p' $TMP/err)
+check "... and warns: about $1 s; --components 0-512/$2 checks $3 nodes in about $4 s" \
+  holds 'total > 60 && count == int(512 / step) + 1 && short <= 60 && lines == 1' \
+    total="$1" step="$2" count="$3" short="$4" lines="$(wc -l < $TMP/err)"
 $BIN solve $ex -o $TMP/s128 -s mesh.refine=8 --matrix-market $TMP/s.mtx >/dev/null 2>&1
 check "gradcheck --matrix-market writes A at the design checked: the solve's matrix" cmp -s $TMP/gc.mtx $TMP/s.mtx
 $BIN optimize $ex -o $TMP/opt --matrix-market $TMP/opt.mtx >/dev/null 2>&1
