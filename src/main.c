@@ -150,7 +150,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 492 "paper/main.nw"
+#line 494 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -188,15 +188,17 @@ static int command_optimize(Run *r, Status *st)
                     r->s.path, interrupt_signal(), rep.iterations, r->dir);
   else if (!rc && strcmp(rep.stop_reason, "converged"))
     rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected gradient "
-                    "%.2e > optimizer.tol = %.0e after %d iterations; the files of the last "
-                    "design accepted are in %s/", r->s.path, rep.stop_reason, rep.pgnorm,
-                    r->s.optimizer.tol, rep.iterations, r->dir);
+                    "%.2e > optimizer.tol = %.0e after %d iterations%s%s%s; the files of "
+                    "the last design accepted are in %s/", r->s.path, rep.stop_reason,
+                    rep.pgnorm, r->s.optimizer.tol, rep.iterations,
+                    rep.stop_detail[0] ? " (" : "", rep.stop_detail,
+                    rep.stop_detail[0] ? ")" : "", r->dir);
   free(X);
   output_history_free(h);
   design_multipliers_free(m);
   return rc;
 }
-#line 548 "paper/main.nw"
+#line 552 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -211,7 +213,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 572 "paper/main.nw"
+#line 576 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
