@@ -54,14 +54,14 @@ typedef struct {
   int idle;               /* accepted iterates in a row without measured progress */
 } Evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
-#line 618 "paper/opt.nw"
+#line 633 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 750 "paper/opt.nw"
+#line 765 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -125,7 +125,7 @@ static int report_iterate(Evaluator *ev, int iteration, double pg)
   ev->rep->monitor_seconds += model_clock() - start;
   return stop;
 }
-#line 459 "paper/opt.nw"
+#line 460 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -146,14 +146,14 @@ static void idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 496 "paper/opt.nw"
+#line 511 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_work;
 
-#line 506 "paper/opt.nw"
+#line 521 "paper/opt.nw"
 static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
@@ -164,7 +164,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 525 "paper/opt.nw"
+#line 540 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -172,13 +172,13 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = evaluate(ev, Xn))) return rc;
 *accepted = ev->E <= E0 + 1e-4 * descent;
-#line 516 "paper/opt.nw"
+#line 531 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 537 "paper/opt.nw"
+#line 552 "paper/opt.nw"
 static int projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -191,7 +191,7 @@ static int projgrad(Evaluator *ev, double *X)
     int stop = report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 559 "paper/opt.nw"
+#line 574 "paper/opt.nw"
 int idle = idle_iterates(ev, k, pg, 0);
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
@@ -207,7 +207,7 @@ if (why) {
   else if (!strcmp(why, "no_progress")) idle_detail(ev);
   break;
 }
-#line 549 "paper/opt.nw"
+#line 564 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
@@ -215,7 +215,7 @@ if (why) {
   free(work);
   return rc;
 }
-#line 627 "paper/opt.nw"
+#line 642 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -227,7 +227,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 642 "paper/opt.nw"
+#line 657 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -237,7 +237,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   double X[n], d = B->delta / B->C0;
   metric_design(&q->metric, B->C0, y, X);
   
-#line 662 "paper/opt.nw"
+#line 677 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
   c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
@@ -247,11 +247,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
   c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
 }
-#line 651 "paper/opt.nw"
+#line 666 "paper/opt.nw"
   if (grad)
     for (unsigned j = 0; j < n; j++) {
       
-#line 675 "paper/opt.nw"
+#line 690 "paper/opt.nw"
 for (unsigned i = 0; i < n; i++) {
   grad[2 * i * n + j] = -R[i * n + j];
   grad[(2 * i + 1) * n + j] = R[i * n + j];
@@ -261,11 +261,11 @@ for (unsigned i = 0; i + 1 < n; i++) {
   grad[(2 * n + 2 * i) * n + j] = rise;
   grad[(2 * n + 2 * i + 1) * n + j] = -rise;
 }
-#line 654 "paper/opt.nw"
+#line 669 "paper/opt.nw"
     }
   (void) m;
 }
-#line 688 "paper/opt.nw"
+#line 703 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -283,13 +283,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 767 "paper/opt.nw"
+#line 782 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 776 "paper/opt.nw"
+#line 791 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
@@ -303,20 +303,20 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 799 "paper/opt.nw"
+#line 814 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 789 "paper/opt.nw"
+#line 804 "paper/opt.nw"
   if (ev->E <= q->best + q->best_noise + ev->noise
       && design_violation(ev->B, X) <= OPT_IN_B
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->E / q->metric.scale;
 }
-#line 808 "paper/opt.nw"
+#line 823 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q)
 {
   Evaluator *ev = q->ev;
@@ -338,7 +338,7 @@ static void slsqp_accept(Slsqp *q)
   else if (idle >= OPT_FEW) slsqp_stop(q, "no_progress"), idle_detail(ev);
   q->k++;
 }
-#line 835 "paper/opt.nw"
+#line 850 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -353,7 +353,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 855 "paper/opt.nw"
+#line 870 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -375,11 +375,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 849 "paper/opt.nw"
+#line 864 "paper/opt.nw"
   ev->rep->metric_seconds += model_clock() - start;
   return rc;
 }
-#line 885 "paper/opt.nw"
+#line 900 "paper/opt.nw"
 static int slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -396,7 +396,7 @@ static int slsqp(Evaluator *ev, double *X)
       break;
     }
     
-#line 908 "paper/opt.nw"
+#line 923 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -405,7 +405,7 @@ if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
 if (r > 0) r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 925 "paper/opt.nw"
+#line 940 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 more = !rc && !ev->rep->stop_reason[0]
@@ -414,24 +414,24 @@ if (!rc && !more && !ev->rep->stop_reason[0]) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
   
-#line 942 "paper/opt.nw"
+#line 957 "paper/opt.nw"
 if (r != NLOPT_MAXEVAL_REACHED)
   snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "SLSQP, %s, found no "
            "new iterate: %s%s", ev->rep->iterations ? "restarted from its last iterate"
            : "from the start", r == NLOPT_FORCED_STOP ? "its line search found no design "
            "in B with a lower energy" : "NLopt ended it as ",
            r == NLOPT_FORCED_STOP ? "" : nlopt_result_to_string(r));
-#line 933 "paper/opt.nw"
+#line 948 "paper/opt.nw"
 }
 if (!rc) rc = evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 901 "paper/opt.nw"
+#line 916 "paper/opt.nw"
   }
   free(work);
   return rc;
 }
-#line 985 "paper/opt.nw"
+#line 1000 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *qp;   /* the model problem's solver */
@@ -450,7 +450,7 @@ typedef struct {
   int sick;               /* iterations in a row whose model failed */
   char failure[400];      /* what the last model that failed measured */
 } Newton_run;
-#line 1011 "paper/opt.nw"
+#line 1026 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -475,14 +475,14 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   nr->Ek = ev->E, nr->noisek = ev->noise;
   
-#line 1191 "paper/opt.nw"
+#line 1207 "paper/opt.nw"
 double G2 = 0, rmin = HUGE_VAL;
 for (int i = 0; i < n; i++) G2 += ev->G[i] * ev->G[i], rmin = fmin(rmin, nr->r[i]);
 nr->rho_max = 2 * sqrt(G2) / (DBL_EPSILON * ev->B->C0 * rmin);
-#line 1035 "paper/opt.nw"
+#line 1050 "paper/opt.nw"
   return STATUS_OK;
 }
-#line 1101 "paper/opt.nw"
+#line 1116 "paper/opt.nw"
 /* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
    with the curvature rho r the model was solved with */
 static double model_rounding(const Newton_run *nr)
@@ -501,7 +501,7 @@ static double model_rounding(const Newton_run *nr)
   }
   return DBL_EPSILON * sum;
 }
-#line 1043 "paper/opt.nw"
+#line 1058 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -530,7 +530,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 1222 "paper/opt.nw"
+#line 1238 "paper/opt.nw"
 static void newton_why(const Newton_run *nr)
 {
   char *s = nr->ev->rep->stop_detail;
@@ -547,7 +547,7 @@ static void newton_why(const Newton_run *nr)
     snprintf(s, z, "the model problem failed in %d iterations in a row; "
              "the last: %s", nr->sick, nr->failure);
 }
-#line 1200 "paper/opt.nw"
+#line 1216 "paper/opt.nw"
 /* 1 when the run ends at this trial, its stop reason in the report */
 static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
 {
@@ -567,7 +567,7 @@ static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
   if (!strcmp(why, "no_progress")) newton_why(nr);
   return 1;
 }
-#line 1245 "paper/opt.nw"
+#line 1261 "paper/opt.nw"
 static int newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
@@ -585,7 +585,7 @@ static int newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 1283 "paper/opt.nw"
+#line 1299 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.qp), free(nr.S);
   return rc;
@@ -593,7 +593,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 1262 "paper/opt.nw"
+#line 1278 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
@@ -609,7 +609,7 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   newton_free(nr.qp), free(nr.S);
   return rc;
 }
-#line 1299 "paper/opt.nw"
+#line 1315 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -623,11 +623,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = evaluate(&ev, X))) {
     
-#line 1324 "paper/opt.nw"
+#line 1340 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1312 "paper/opt.nw"
+#line 1328 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? slsqp(&ev, X)
        : o->method == OPT_NEWTON ? newton(&ev, X) : projgrad(&ev, X);
   }
@@ -636,7 +636,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1340 "paper/opt.nw"
+#line 1356 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
