@@ -53,7 +53,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full kernels-table faults bench reference clean
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean
 all: bin/contactopt
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -138,8 +138,13 @@ check-kernels: $(PROGRAM) $(TEST_PROGS)
 kernels-table: $(TEST_PROGS)
 	TESTS=$(B)/tests TABLE=paper/bench-kernels.tex.partial sh tests/kernels/programs.sh; \
 	  mv paper/bench-kernels.tex.partial paper/bench-kernels.tex
-check-kernels-full:
+check-kernels-full: check-fine
 	@$(MAKE) --no-print-directory check-kernels KERNEL_REFINES="1 4 8"
+# The robustness suite's aluminium plate at N = 1024 (tests/kernels/fine.sh):
+# the Newton method under three kernel families and SLSQP once, several
+# minutes; tests/suite.sh runs the plate at N = 256 and 512 in make check.
+check-fine: $(PROGRAM)
+	@BIN=$(PROGRAM) TESTS=/nonexistent SCRIPTS=tests/kernels/fine.sh LOG=build/tests-fine.log sh tests/run
 # Fault injection (tests/faults.sh): an LD_PRELOAD shim that makes the k-th
 # allocation or write of a run fail, built without the sanitizers, so that
 # one shim serves both builds. make check runs the solve's legs; make faults

@@ -256,7 +256,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 738 "paper/main.nw"
+#line 740 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -294,15 +294,17 @@ static int command_optimize(Run *r, Status *st)
                     r->s.path, interrupt_signal(), rep.iterations, r->dir);
   else if (!rc && strcmp(rep.stop_reason, "converged"))
     rc = status_set(st, STATUS_NUMERIC, "%s: not converged (%s): projected gradient "
-                    "%.2e > optimizer.tol = %.0e after %d iterations; the files of the last "
-                    "design accepted are in %s/", r->s.path, rep.stop_reason, rep.pgnorm,
-                    r->s.optimizer.tol, rep.iterations, r->dir);
+                    "%.2e > optimizer.tol = %.0e after %d iterations%s%s%s; the files of "
+                    "the last design accepted are in %s/", r->s.path, rep.stop_reason,
+                    rep.pgnorm, r->s.optimizer.tol, rep.iterations,
+                    rep.stop_detail[0] ? " (" : "", rep.stop_detail,
+                    rep.stop_detail[0] ? ")" : "", r->dir);
   free(X);
   output_history_free(h);
   design_multipliers_free(m);
   return rc;
 }
-#line 793 "paper/main.nw"
+#line 797 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -321,7 +323,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 823 "paper/main.nw"
+#line 827 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -337,7 +339,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 850 "paper/main.nw"
+#line 854 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */

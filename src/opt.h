@@ -1,11 +1,11 @@
-#line 136 "paper/opt.nw"
+#line 148 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_H
 #define CONTACTOPT_OPT_H
 #include "status.h"
 #include "model.h"
 #include "design.h"
 
-#line 154 "paper/opt.nw"
+#line 166 "paper/opt.nw"
 typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
 extern const char *const opt_method_names[]; /* slsqp, projgrad, newton */
@@ -19,7 +19,7 @@ typedef struct {
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 181 "paper/opt.nw"
+#line 193 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -33,7 +33,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 196 "paper/opt.nw"
+#line 208 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -41,6 +41,7 @@ typedef struct {
   double pgnorm;          /* pi at the final design */
   char stop_reason[32];   /* "converged", "max_iter", "no_progress",
                              "interrupted" */
+  char stop_detail[512];  /* with no_progress: what was measured, or "" */
   double seconds;         /* wall time of the whole optimisation */
   double metric_seconds;  /* of it, setting up SLSQP's metric */
   double model_seconds;   /* of it, building and solving Newton's models */
@@ -48,7 +49,7 @@ typedef struct {
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
 } Opt_report;
 
-#line 212 "paper/opt.nw"
+#line 225 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -62,5 +63,5 @@ double opt_memory(const Opt_options *o, int N);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);
-#line 149 "paper/opt.nw"
+#line 161 "paper/opt.nw"
 #endif

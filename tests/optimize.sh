@@ -121,6 +121,34 @@ unconverged "slsqp without progress" no_progress -s optimizer.method=slsqp -s so
   -s solver.tol=1e-4 -s mesh.refine=4
 unconverged "newton without progress" no_progress -s solver.state=cgssor -s solver.tol=1e-4 \
   -s mesh.refine=4
+check "newton without progress: said within 20 iterations, the trust region's step below the design's rounding ($(value iterations $TMP/uc) it)" \
+  holds 'it <= 20 && ok' it="$(value iterations $TMP/uc)" \
+    ok=$(grep -q "below the rounding of the design" $TMP/err && echo 1 || echo 0)
+# a model problem that fails at every iteration: Example 5.1 with E = 1e-6
+# Pa, where the model's interior point ends with a stationarity of 6e-12
+# of its scale against its tolerance 1e-12 (the command line warns of the
+# displacement); the Newton method
+# says so after three such iterations (paper/opt.nw, "The end without
+# progress")
+rm -rf $TMP/uc
+$BIN optimize data/example-5.1.scene -o $TMP/uc -s material.E=1e-6 >/dev/null 2>$TMP/err; rc=$?
+check "newton, its model failing (E = 1e-6 Pa): exit $rc, no_progress after $(value iterations $TMP/uc) iterations, the model's failure named ($(grep -v warning $TMP/err | cut -c1-160)...)" \
+  holds 'rc == 3 && it <= 5 && ok' rc=$rc it="$(value iterations $TMP/uc)" \
+    ok=$([ "$(value stop_reason $TMP/uc)" = no_progress ] && grep -q "the model problem failed in 3 iterations in a row; the last: newton: " $TMP/err && echo 1 || echo 0)
+# a tolerance below what the rounding of E allows (pi reaches about 2e-14
+# under the Newton method, 1e-9 to 2e-8 under SLSQP, 4e-8 to 1.4e-7 under
+# Algorithm 4.1, depending on the kernel): each optimiser stops no_progress
+# once three iterates in a row have changed neither E beyond its rounding
+# nor pi by half (paper/opt.nw, "Progress"), the Newton method within 20
+# iterations, SLSQP within 40 (it converges to 1e-6 in 22), Algorithm 4.1
+# within 120 (in 89); the iteration at which the rounding is met differs by
+# one between kernels, the verdict does not
+for m in newton:20 slsqp:40 projgrad:120; do
+  unconverged "${m%:*} below rounding" no_progress -s optimizer.method=${m%:*} -s optimizer.tol=1e-15
+  check "${m%:*} below rounding: said within ${m#*:} iterations, as the rounding of E ($(value iterations $TMP/uc) it, pi $(value projected_gradient $TMP/uc))" \
+    holds "it <= ${m#*:} && ok" it="$(value iterations $TMP/uc)" \
+      ok=$(grep -q "3 iterates in a row lowered E by no more than its rounding" $TMP/err && echo 1 || echo 0)
+done
 # a state solve that fails inside the optimisation stops it: exit 3, a
 # message naming the solver, nothing written
 rm -rf $TMP/fail

@@ -2,7 +2,8 @@
 # the section "The Newton method" of the paper): scenes unlike the
 # article's (both ends clamped, plane strain with nu = 0.45, a body force
 # only, free sides, a thin body, a tangential traction, a start at a
-# vertex of B, a load that lifts) and Example 5.1 at N = 512.  The Newton
+# vertex of B, a load that lifts, a plate on an arc pushed sideways, also
+# at N = 256 and 512) and Example 5.1 at N = 512.  The Newton
 # method must converge within 100 iterations, keep every iterate in B to
 # 1e-12, and end at a KKT point of the programme; SLSQP, the reference,
 # runs too and must end as documented below: where it converges, the two
@@ -50,6 +51,22 @@ for sc in data/suite/*.scene; do
       holds 'e <= f + 1e-12 * (f < 0 ? -f : f)' e="$(value energy $c)" f="$(value energy $r)"
   fi
   echo "# $n: newton $(value iterations $c) it / $(value evaluations $c) solves, slsqp $(value iterations $r) it / $(value evaluations $r) solves ($(value stop_reason $r))"
+done
+# the aluminium plate refined 8 and 16 times (N = 256, 512), where its
+# projected gradient stalled while the model problems failed (paper/opt.nw,
+# "The end without progress"); make check-fine adds refine 32 (N = 1024)
+sc=data/suite/aluminium-arc.scene
+for r in ${ALUMINIUM_REFINES:-8 16}; do
+  c=$TMP/aluminium-$r-newton
+  if ! $BIN optimize $sc -o $c -s mesh.refine=$r >/dev/null 2>$TMP/err; then
+    fail "aluminium-arc refine $r: newton: $(cat $TMP/err)"; continue
+  fi
+  check "aluminium-arc refine $r: the Newton method converges within 100 iterations ($(value stop_reason $c), $(value iterations $c) it, pi $(value projected_gradient $c))" \
+    holds 'ok && it <= 100' ok=$([ "$(value stop_reason $c)" = converged ] && echo 1 || echo 0) it="$(value iterations $c)"
+  h=$(calc '2 / (32 * r)' r=$r)
+  in_B "aluminium-arc refine $r newton" $c 1e-12 0.02 "$(calc '0.05 * h' h=$h)" 0.01 2 $h
+  kkt_point "aluminium-arc refine $r newton" $c 0.02 "$(calc '0.05 * h' h=$h)" $h
+  echo "# aluminium-arc refine $r: newton $(value iterations $c) it / $(value evaluations $c) solves, E* $(value energy $c), $(value seconds $c) s"
 done
 # one scene at N = 512: Example 5.1 refined 32 times
 c=$TMP/N512-newton
