@@ -1,4 +1,4 @@
-#line 264 "paper/pdas.nw"
+#line 276 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,9 +7,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 420 "paper/pdas.nw"
+#line 432 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 408 "paper/pdas.nw"
+#line 420 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
@@ -18,12 +18,12 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 428 "paper/pdas.nw"
+#line 440 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
-#line 433 "paper/pdas.nw"
+#line 445 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 
-#line 853 "paper/pdas.nw"
+#line 865 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -36,7 +36,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 346 "paper/pdas.nw"
+#line 358 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -58,7 +58,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   free(last), free(perm);
   if (!ok) return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 371 "paper/pdas.nw"
+#line 383 "paper/pdas.nw"
 if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
@@ -68,10 +68,10 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 367 "paper/pdas.nw"
+#line 379 "paper/pdas.nw"
 }
 
-#line 305 "paper/pdas.nw"
+#line 317 "paper/pdas.nw"
 /* the guide's vectors, nc each; nonzero when out of memory */
 static int alloc_guide(Pdas_guide *ip, size_t nc)
 {
@@ -107,7 +107,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 383 "paper/pdas.nw"
+#line 395 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -121,7 +121,7 @@ void pdas_free(Qp_workspace *w)
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 279 "paper/pdas.nw"
+#line 291 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -139,7 +139,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 536 "paper/pdas.nw"
+#line 548 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -153,7 +153,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 556 "paper/pdas.nw"
+#line 568 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -164,7 +164,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 576 "paper/pdas.nw"
+#line 588 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -173,7 +173,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 566 "paper/pdas.nw"
+#line 578 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -182,7 +182,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 589 "paper/pdas.nw"
+#line 601 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -199,7 +199,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 609 "paper/pdas.nw"
+#line 621 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -220,7 +220,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 512 "paper/pdas.nw"
+#line 524 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -243,7 +243,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 648 "paper/pdas.nw"
+#line 660 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -251,7 +251,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 671 "paper/pdas.nw"
+#line 683 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -263,7 +263,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 655 "paper/pdas.nw"
+#line 667 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -274,7 +274,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 701 "paper/pdas.nw"
+#line 713 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -286,13 +286,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 715 "paper/pdas.nw"
+#line 727 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 727 "paper/pdas.nw"
+#line 739 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -306,13 +306,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 720 "paper/pdas.nw"
+#line 732 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 749 "paper/pdas.nw"
+#line 761 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -354,7 +354,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 810 "paper/pdas.nw"
+#line 822 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -373,7 +373,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 835 "paper/pdas.nw"
+#line 847 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -389,7 +389,7 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 875 "paper/pdas.nw"
+#line 887 "paper/pdas.nw"
 /* s, t from (y, T) shifted inside by 1.5 times the largest violation,
    as forces; 0 when there is none (or a value is not finite) */
 static int guide_start(Qp_workspace *w)
@@ -418,7 +418,7 @@ static int guide_start(Qp_workspace *w)
   return 1;
 }
 
-#line 920 "paper/pdas.nw"
+#line 932 "paper/pdas.nw"
 /* the largest alpha in (0, 1] with v + alpha dv >= 0 */
 static double step_to_bound(const double *v, const double *dv, int n)
 {
@@ -479,7 +479,7 @@ static int guide_step(Qp_workspace *w)
   return !inside;
 }
 
-#line 985 "paper/pdas.nw"
+#line 997 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -500,17 +500,17 @@ static void guide(Qp_workspace *w)
   ip->guided = 1;
 }
 
-#line 437 "paper/pdas.nw"
+#line 449 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 463 "paper/pdas.nw"
+#line 475 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 443 "paper/pdas.nw"
+#line 455 "paper/pdas.nw"
   }
   if (w->iter > 0) guide(w);
   if ((code = newton_solve(w)) == SINGULAR && pd->ip.guided) {
@@ -527,7 +527,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 479 "paper/pdas.nw"
+#line 491 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -536,10 +536,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 459 "paper/pdas.nw"
+#line 471 "paper/pdas.nw"
 }
 
-#line 1013 "paper/pdas.nw"
+#line 1025 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -556,7 +556,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 1032 "paper/pdas.nw"
+#line 1044 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -564,7 +564,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 1051 "paper/pdas.nw"
+#line 1063 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -576,7 +576,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 1069 "paper/pdas.nw"
+#line 1081 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -599,11 +599,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 1062 "paper/pdas.nw"
+#line 1074 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 1102 "paper/pdas.nw"
+#line 1114 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

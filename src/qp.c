@@ -335,15 +335,14 @@ int qp_count_active(const Qp_workspace *w)
   return m;
 }
 
-#line 1105 "paper/qp.nw"
+#line 1108 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
 {
-  return status_set(st, STATUS_NUMERIC, "%s: the body is not held (a load "
-    "that lifts it off, with nothing else holding it): %s, with %d of %d "
-    "bounds active, at iteration %d", qp_method_name(w->opt.method), why,
-    active, w->nc, w->iter + 1);
+  return status_set(st, STATUS_NUMERIC, "%s: the body is not held with %d "
+    "of %d bounds active: %s, at iteration %d",
+    qp_method_name(w->opt.method), active, w->nc, why, w->iter + 1);
 }
 
 #line 1083 "paper/qp.nw"
@@ -375,7 +374,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 1137 "paper/qp.nw"
+#line 1139 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Qp_workspace *c = NULL;
