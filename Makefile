@@ -125,7 +125,7 @@ check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) tangle-check $(RUNS)
 KERNEL_SETTINGS ?= OPENBLAS_CORETYPE=Prescott OPENBLAS_NUM_THREADS=1
 KERNEL_REFINES ?= 1 4
 NUMERIC_SCRIPTS := $(patsubst %,tests/%.sh,optimize suite friction hard_cases solvers_agree \
-                     gradcheck convergence flat_punch magnitudes reproducible)
+                     gradcheck convergence flat_punch magnitudes reproducible thin_bodies)
 check-kernels: $(PROGRAM) $(TEST_PROGS)
 	@TESTS=$(B)/tests sh tests/kernels/programs.sh
 	@BIN=$(PROGRAM) REFINES="$(KERNEL_REFINES)" sh tests/kernels/optimize.sh

@@ -1,4 +1,4 @@
-#line 124 "paper/mprgp.nw"
+#line 143 "paper/mprgp.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,13 +7,13 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 134 "paper/mprgp.nw"
+#line 153 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 356 "paper/mprgp.nw"
+#line 375 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
 
-#line 140 "paper/mprgp.nw"
+#line 159 "paper/mprgp.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
@@ -21,7 +21,7 @@ static double dot(int n, const double *u, const double *v)
   return s;
 }
 
-#line 151 "paper/mprgp.nw"
+#line 170 "paper/mprgp.nw"
 int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -33,7 +33,7 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 165 "paper/mprgp.nw"
+#line 184 "paper/mprgp.nw"
 void mprgp_set(Qp_workspace *w)
 {
   w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
@@ -46,7 +46,7 @@ void mprgp_free(Qp_workspace *w)
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
 
-#line 192 "paper/mprgp.nw"
+#line 211 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -66,7 +66,7 @@ static void ssor_free(Qp_workspace *w)
   }
 }
 
-#line 234 "paper/mprgp.nw"
+#line 253 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -81,7 +81,7 @@ static int proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 255 "paper/mprgp.nw"
+#line 274 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -100,7 +100,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 312 "paper/mprgp.nw"
+#line 331 "paper/mprgp.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -111,7 +111,7 @@ static double feasible_step(const Qp_workspace *w)
   return af;
 }
 
-#line 329 "paper/mprgp.nw"
+#line 348 "paper/mprgp.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -125,7 +125,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
 
-#line 360 "paper/mprgp.nw"
+#line 379 "paper/mprgp.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
@@ -141,7 +141,7 @@ static void expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 287 "paper/mprgp.nw"
+#line 306 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -165,7 +165,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 496 "paper/mprgp.nw"
+#line 515 "paper/mprgp.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -193,7 +193,7 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
 
-#line 526 "paper/mprgp.nw"
+#line 545 "paper/mprgp.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
@@ -212,11 +212,11 @@ static void dual_state(Qp_workspace *w)
   dual_hessian(w, r, w->pdas.y);
 }
 
-#line 490 "paper/mprgp.nw"
+#line 509 "paper/mprgp.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 548 "paper/mprgp.nw"
+#line 567 "paper/mprgp.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
@@ -249,7 +249,7 @@ static double norm_inverse(Qp_workspace *w)
   return rho + res;
 }
 
-#line 583 "paper/mprgp.nw"
+#line 602 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
   int code = pdas_condense(w, st);
@@ -262,7 +262,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 598 "paper/mprgp.nw"
+#line 617 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -277,7 +277,7 @@ static int dual_proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 614 "paper/mprgp.nw"
+#line 633 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -288,7 +288,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
   return af;
 }
 
-#line 628 "paper/mprgp.nw"
+#line 647 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -305,7 +305,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   mp->restart = 1;
 }
 
-#line 648 "paper/mprgp.nw"
+#line 667 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -320,7 +320,7 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 682 "paper/mprgp.nw"
+#line 701 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
@@ -334,7 +334,7 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 700 "paper/mprgp.nw"
+#line 719 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -351,7 +351,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 666 "paper/mprgp.nw"
+#line 685 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -366,7 +366,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   else dual_expansion_step(w, af);
 }
 
-#line 724 "paper/mprgp.nw"
+#line 743 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -396,7 +396,7 @@ static double dual_snapped_kkt(Qp_workspace *w)
   return kkt;
 }
 
-#line 757 "paper/mprgp.nw"
+#line 776 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
@@ -406,7 +406,7 @@ static int dual_finish(Qp_workspace *w, Status *st)
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
 
-#line 772 "paper/mprgp.nw"
+#line 791 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
@@ -421,7 +421,7 @@ static int dual_iterate(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 221 "paper/mprgp.nw"
+#line 240 "paper/mprgp.nw"
 int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */

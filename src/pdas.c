@@ -1,4 +1,4 @@
-#line 190 "paper/pdas.nw"
+#line 278 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,9 +7,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 331 "paper/pdas.nw"
+#line 434 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 319 "paper/pdas.nw"
+#line 422 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
@@ -18,10 +18,12 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 339 "paper/pdas.nw"
+#line 442 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
+#line 447 "paper/pdas.nw"
+enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 
-#line 862 "paper/pdas.nw"
+#line 976 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -34,7 +36,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 259 "paper/pdas.nw"
+#line 360 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -56,7 +58,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   free(last), free(perm);
   if (!ok) return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 284 "paper/pdas.nw"
+#line 385 "paper/pdas.nw"
 if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
@@ -66,10 +68,22 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 280 "paper/pdas.nw"
+#line 381 "paper/pdas.nw"
 }
 
-#line 230 "paper/pdas.nw"
+#line 319 "paper/pdas.nw"
+/* the guide's vectors, nc each; nonzero when out of memory */
+static int alloc_guide(Pdas_guide *ip, size_t nc)
+{
+  ip->s = malloc(nc * sizeof *ip->s), ip->t = malloc(nc * sizeof *ip->t);
+  ip->ds = malloc(nc * sizeof *ip->ds), ip->dt = malloc(nc * sizeof *ip->dt);
+  ip->as = malloc(nc * sizeof *ip->as), ip->at = malloc(nc * sizeof *ip->at);
+  ip->h = malloc(nc * sizeof *ip->h);
+  ip->pred = malloc(nc), ip->own = malloc(nc);
+  return !ip->s || !ip->t || !ip->ds || !ip->dt || !ip->as || !ip->at
+         || !ip->h || !ip->pred || !ip->own;
+}
+
 int pdas_alloc(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -85,7 +99,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   pd->Lcc = malloc(nc * nc * sizeof *pd->Lcc);
   pd->S = malloc(nc * nc * sizeof *pd->S), pd->M = malloc(nc * nc * sizeof *pd->M);
   if (!pd->K.x || !pd->act || !pd->tc || !pd->fr || !pd->f || !pd->y || !pd->r
-      || !pd->Lcc || !pd->S || !pd->M)
+      || !pd->Lcc || !pd->S || !pd->M || alloc_guide(&pd->ip, nc))
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
                       "nc = %d)", w->nk);
   memcpy(pd->K.x, A->x, nz * sizeof(double));
@@ -93,24 +107,27 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 296 "paper/pdas.nw"
+#line 397 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   free(pd->K.x), free(pd->act), free(pd->tc), free(pd->fr);
   free(pd->f), free(pd->y), free(pd->r), free(pd->Lcc), free(pd->S), free(pd->M);
+  free(pd->ip.s), free(pd->ip.t), free(pd->ip.ds), free(pd->ip.dt);
+  free(pd->ip.as), free(pd->ip.at), free(pd->ip.h), free(pd->ip.pred), free(pd->ip.own);
   cholmod_free_factor(&pd->Ls, w->cm), cholmod_free_factor(&pd->L, w->cm);
   cholmod_free_dense(&pd->rhs, w->cm), cholmod_free_dense(&pd->sol, w->cm);
   cholmod_free_dense(&pd->Lb, w->cm);
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 205 "paper/pdas.nw"
+#line 293 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
   Pdas_workspace *pd = &w->pdas;
   pd->warm = warm, pd->condensed = 0, pd->stepped = 1;
+  pd->ip.state = GUIDE_OFF, pd->ip.guided = 0;
   for (int c = 0; c < w->nk; c++) pd->act[c] = HELD;
 }
 
@@ -122,7 +139,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 437 "paper/pdas.nw"
+#line 551 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -136,7 +153,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 457 "paper/pdas.nw"
+#line 571 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -147,7 +164,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 477 "paper/pdas.nw"
+#line 591 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -156,7 +173,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 467 "paper/pdas.nw"
+#line 581 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -165,7 +182,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 490 "paper/pdas.nw"
+#line 604 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -182,7 +199,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 510 "paper/pdas.nw"
+#line 624 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -203,7 +220,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 413 "paper/pdas.nw"
+#line 527 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -226,7 +243,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 549 "paper/pdas.nw"
+#line 663 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -234,7 +251,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 572 "paper/pdas.nw"
+#line 686 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -246,7 +263,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 556 "paper/pdas.nw"
+#line 670 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -257,7 +274,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 651 "paper/pdas.nw"
+#line 765 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -276,7 +293,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 673 "paper/pdas.nw"
+#line 787 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -296,7 +313,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 632 "paper/pdas.nw"
+#line 746 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -312,7 +329,7 @@ static int hold_stopping(Qp_workspace *w)
   return held > 0;
 }
 
-#line 710 "paper/pdas.nw"
+#line 824 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -324,13 +341,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 724 "paper/pdas.nw"
+#line 838 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 736 "paper/pdas.nw"
+#line 850 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -344,13 +361,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 729 "paper/pdas.nw"
+#line 843 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 758 "paper/pdas.nw"
+#line 872 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -392,7 +409,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 819 "paper/pdas.nw"
+#line 933 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -411,7 +428,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 844 "paper/pdas.nw"
+#line 958 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -427,20 +444,137 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 343 "paper/pdas.nw"
+#line 998 "paper/pdas.nw"
+/* s, t from (y, T) shifted inside by 1.5 times the largest violation,
+   as forces; 0 when there is none (or a value is not finite) */
+static int guide_start(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  Pdas_guide *ip = &pd->ip;
+  int nk = w->nk;
+  double worst = 0;
+  for (int c = 0; c < nk; c++) {
+    double gap = w->d[w->ik[c]] * (pd->y[c] - w->pos[c]);   /* as a force */
+    worst = fmax(worst, fmax(-gap, -w->T[c]));
+  }
+  double delta = 1.5 * worst;
+  if (!(delta > 0 && isfinite(delta))) return 0;
+  for (int c = 0; c < nk; c++) {
+    const double *Sc = pd->S + (size_t) c * nk;
+    double h = -pd->f[c];
+    for (int e = 0; e < nk; e++) h += Sc[e] * w->pos[e];
+    ip->h[c] = h;
+    ip->s[c] = (pd->y[c] - w->pos[c]) + delta / w->d[w->ik[c]];
+    ip->t[c] = w->T[c] + delta;
+    if (!(ip->s[c] > 0 && ip->t[c] > 0)) return 0;
+  }
+  memcpy(ip->pred, pd->act, (size_t) nk);   /* its first prediction */
+  ip->state = GUIDE_ON;
+  return 1;
+}
+
+#line 1043 "paper/pdas.nw"
+/* the largest alpha in (0, 1] with v + alpha dv >= 0 */
+static double step_to_bound(const double *v, const double *dv, int n)
+{
+  double a = 1;
+  for (int c = 0; c < n; c++) if (dv[c] < 0) a = fmin(a, -v[c] / dv[c]);
+  return a;
+}
+
+/* ds = (S + D)^-1 (-r - t + (sigma mu - c)/s), dt from it; M holds the
+   factor of S + D; c = cs .* ct, or 0 when cs is NULL */
+static void guide_direction(Qp_workspace *w, double sm, const double *cs,
+                            const double *ct, double *ds, double *dt)
+{
+  Pdas_guide *ip = &w->pdas.ip;
+  int nk = w->nk;
+  for (int c = 0; c < nk; c++) {
+    double e = (sm - (cs ? cs[c] * ct[c] : 0)) / ip->s[c];
+    ds[c] = -w->pdas.r[c] - ip->t[c] + e, dt[c] = e;
+  }
+  gsl_matrix_view M = gsl_matrix_view_array(w->pdas.M, nk, nk);
+  gsl_vector_view v = gsl_vector_view_array(ds, nk);
+  gsl_linalg_cholesky_svx(&M.matrix, &v.vector);
+  for (int c = 0; c < nk; c++)
+    dt[c] += -ip->t[c] - ip->t[c] / ip->s[c] * ds[c];
+}
+
+/* one step; nonzero when the factorisation fails or the new point is not
+   strictly inside */
+static int guide_step(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  Pdas_guide *ip = &pd->ip;
+  int nk = w->nk;
+  double mu = 0, mua = 0;
+  for (int c = 0; c < nk; c++) {
+    const double *Sc = pd->S + (size_t) c * nk;
+    double r = ip->h[c] - ip->t[c];
+    for (int e = 0; e < nk; e++) r += Sc[e] * ip->s[e];
+    pd->r[c] = r, mu += ip->s[c] * ip->t[c];
+    memcpy(pd->M + (size_t) c * nk, Sc, (size_t) nk * sizeof *pd->M);
+    pd->M[(size_t) c * nk + c] += ip->t[c] / ip->s[c];
+  }
+  mu /= nk;
+  gsl_matrix_view M = gsl_matrix_view_array(pd->M, nk, nk);
+  if (gsl_linalg_cholesky_decomp1(&M.matrix)) return 1;
+  guide_direction(w, 0, NULL, NULL, ip->as, ip->at);
+  double ap = step_to_bound(ip->s, ip->as, nk), ad = step_to_bound(ip->t, ip->at, nk);
+  for (int c = 0; c < nk; c++) mua += (ip->s[c] + ap * ip->as[c]) * (ip->t[c] + ad * ip->at[c]);
+  double sigma = pow(mua / nk / mu, 3);
+  guide_direction(w, sigma * mu, ip->as, ip->at, ip->ds, ip->dt);
+  double a = fmin(1, 0.995 * fmin(step_to_bound(ip->s, ip->ds, nk),
+                                  step_to_bound(ip->t, ip->dt, nk)));
+  int inside = 1;
+  for (int c = 0; c < nk; c++) {
+    ip->s[c] += a * ip->ds[c], ip->t[c] += a * ip->dt[c];
+    inside &= ip->s[c] > 0 && ip->t[c] > 0 && isfinite(ip->s[c] + ip->t[c]);
+  }
+  return !inside;
+}
+
+#line 1108 "paper/pdas.nw"
+static void guide(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  Pdas_guide *ip = &pd->ip;
+  int nk = w->nk, changed = 0;
+  ip->guided = 0;
+  if (nk > w->nc || ip->state == GUIDE_STOPPED) return;
+  if (ip->state == GUIDE_OFF && !guide_start(w)) return;
+  if (guide_step(w)) { ip->state = GUIDE_STOPPED; return; }
+  for (int c = 0; c < nk; c++) {
+    char a = ip->t[c] > w->d[w->ik[c]] * ip->s[c] ? HELD : FORCE_LO;
+    changed |= a != ip->pred[c];
+    ip->pred[c] = a;
+  }
+  if (!changed) return;
+  memcpy(ip->own, pd->act, (size_t) nk);
+  memcpy(pd->act, ip->pred, (size_t) nk);
+  ip->guided = 1;
+}
+
+#line 451 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 364 "paper/pdas.nw"
+#line 478 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 349 "paper/pdas.nw"
+#line 457 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
-  if ((code = newton_solve(w)) == SINGULAR && w->iter == 0 && pd->warm) {
+  if (w->iter > 0) guide(w);
+  if ((code = newton_solve(w)) == SINGULAR && pd->ip.guided) {
+    memcpy(pd->act, pd->ip.own, (size_t) w->nk);  /* the guide's set: retake */
+    pd->ip.guided = 0;
+    code = newton_solve(w);
+  }
+  if (code == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
     code = newton_solve(w);
   }
@@ -449,7 +583,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 380 "paper/pdas.nw"
+#line 494 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -458,10 +592,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 360 "paper/pdas.nw"
+#line 474 "paper/pdas.nw"
 }
 
-#line 882 "paper/pdas.nw"
+#line 1136 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -478,7 +612,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 901 "paper/pdas.nw"
+#line 1155 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -486,7 +620,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 920 "paper/pdas.nw"
+#line 1174 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -498,7 +632,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 938 "paper/pdas.nw"
+#line 1192 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -521,11 +655,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 931 "paper/pdas.nw"
+#line 1185 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 971 "paper/pdas.nw"
+#line 1225 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

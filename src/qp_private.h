@@ -7,7 +7,20 @@
 #include <math.h>
 #include "qp.h"
 
-#line 247 "paper/qp.nw"
+#line 248 "paper/qp.nw"
+typedef struct {
+  double *s, *t;         /* nk: its gaps y - lo and forces, both > 0 */
+  double *ds, *dt;       /* nk: its step */
+  double *as, *at;       /* nk: its affine (predictor) step */
+  double *h;             /* nk: S lo - f, the forces with every unknown
+                            at its bound */
+  char *pred;            /* nk: the active set it predicted last */
+  char *own;             /* nk: the Newton method's own next set, kept
+                            while the guide's is tried */
+  int state;             /* GUIDE_OFF, GUIDE_ON or GUIDE_STOPPED */
+  int guided;            /* act is the guide's prediction in this step */
+} Pdas_guide;
+
 typedef struct {
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
                             values, stype -1 */
@@ -35,9 +48,10 @@ typedef struct {
                             (pdas, or cgssor's dual) */
   int warm;              /* the first active set is to be guessed from x0 */
   int stepped;           /* y, T come from a Newton step (not a guess) */
+  Pdas_guide ip;         /* the interior point that guides the steps */
 } Pdas_workspace;
 
-#line 281 "paper/qp.nw"
+#line 296 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -76,7 +90,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 524 "paper/qp.nw"
+#line 539 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -135,7 +149,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 676 "paper/qp.nw"
+#line 691 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -148,7 +162,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 696 "paper/qp.nw"
+#line 711 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -164,7 +178,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 297 "paper/qp.nw"
+#line 312 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -179,7 +193,7 @@ int qp_count_active(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 320 "paper/qp.nw"
+#line 335 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);

@@ -218,3 +218,54 @@ same_run() {
     esac
     cmp -s $TMP/same.c $TMP/same.d || return 1
   done < $TMP/same.a; }
+
+# ---- a state: the physics of a solution (tests/hard_cases.sh, tests/thin_bodies.sh)
+# rel A REF: |A - REF| / |REF|, for the descriptions
+rel() { show %.1e "$(calc 'abs(a - ref) / abs(ref)' a="$1" ref="$2")"; }
+# finite DIR: no NaN or Inf (any case, any sign) among the words of any text
+# file; the binary VTU files are skipped (grep -I: their bytes may spell
+# "nan"), their values are those of nodes.dat and contact.dat and the
+# stress from them, which tests/paraview.sh finds finite
+finite() { ! grep -r -q -I -i -E "(^|[[:space:]\"'>=])[-+]?(nan|inf)" "$1"; }
+# udiff DIR1 DIR2 [FACTOR]: max |u - u'/FACTOR| over the nodes (same mesh),
+# relative to umax DIR1 (absolute if that is 0)
+udiff() { paste $1/nodes.dat $2/nodes.dat | rows_max 'max(abs($6 - $13 / f), abs($7 - $14 / f)) / (u > 0 ? u : 1)' - \
+  f=${3:-1} u="$(umax $1)"; }
+# work DIR GAMMA FROM TO P1 P2 [F1 F2]: -1/2 <L, u> + 1/2 sum_i T_i u2_i,
+# from the files alone: at a solution of (4.3), Q'AQ = b'Q + sum T_i Q_i,
+# so that E = 1/2 Q'AQ - b'Q is this (Clapeyron's theorem with the contact
+# forces).  <L, u>: the traction (P1, P2) on [FROM, TO] of the top x2 =
+# GAMMA against the piecewise linear u there, and the body force F against
+# u on every triangle (area/3 times the sum of its vertex values).
+work() {
+  tri=/dev/null; [ "${7:-0}${8:-0}" != 00 ] && tri=$1/triangles.dat
+  awk -v g=$2 -v from=$3 -v to=$4 -v P1=$5 -v P2=$6 -v F1=${7:-0} -v F2=${8:-0} '
+  FILENAME ~ /nodes.dat$/ { if (!/^#/ && $5 == g) { n++; X[n] = $4; U1[n] = $6; U2[n] = $7 }; next }
+  FILENAME ~ /contact.dat$/ { if (!/^#/) tu += $5 * $3; next }
+  /^#/ { next }
+  NF == 0 { k = 0; next }
+  { if (k < 3) { x[k] = $1; y[k] = $2; v1[k] = $3; v2[k] = $4 }
+    if (++k == 3) { A = ((x[1]-x[0]) * (y[2]-y[0]) - (x[2]-x[0]) * (y[1]-y[0])) / 2
+      if (A < 0) A = -A
+      body += A / 3 * (F1 * (v1[0] + v1[1] + v1[2]) + F2 * (v2[0] + v2[1] + v2[2])) } }
+  END {
+    if (n < 2) { print "# work: no nodes on the top x2 = " g > "/dev/stderr"; exit 1 }
+    for (i = 1; i < n; i++) {
+      lo = X[i] > from ? X[i] : from; hi = X[i+1] < to ? X[i+1] : to
+      if (hi <= lo) continue
+      s = (lo - X[i]) / (X[i+1] - X[i]); t = (hi - X[i]) / (X[i+1] - X[i])
+      top += (hi - lo) / 2 * P1 * (2 * U1[i] + (s + t) * (U1[i+1] - U1[i]))
+      top += (hi - lo) / 2 * P2 * (2 * U2[i] + (s + t) * (U2[i+1] - U2[i])) }
+    printf "%.15g\n", -(top + body) / 2 + tu / 2 }' $1/nodes.dat $1/contact.dat $tri; }
+# energy_is_work NAME GAMMA FROM TO P1 P2 [F1 F2]: the summary's E agrees,
+# to WTOL (1e-9 unless set): the identity holds to the residual of the state
+energy_is_work() {
+  _n=$1; shift; _w=$(work $TMP/$_n "$@"); _e=$(value energy $TMP/$_n)
+  check "$_n: E = $_e is the work of the loads and the contact forces, $_w (rel. $(rel "$_w" "$_e") <= ${WTOL:-1e-9})" \
+    near_ref "$_e" "$_w" ${WTOL:-1e-9}; }
+# agrees NAME REF: another solver's state agrees with REF's: E to 1e-9,
+# the displacements to 1e-6 of their largest
+agrees() {
+  _a=$(value energy $TMP/$2); _b=$(value energy $TMP/$1); _d=$(udiff $TMP/$2 $TMP/$1)
+  check "$1: agrees with $2: E $_b (rel. $(rel "$_b" "$_a") <= 1e-9), u (rel. $(show %.1e "$_d") <= 1e-6)" \
+    holds 'abs(b - a) <= 1e-9 * abs(a) && d <= 1e-6' a="$_a" b="$_b" d="$_d"; }

@@ -475,7 +475,7 @@ static void check_not_held(void)
          measured: none of the bounds is active */
       int said = methods[m] == QP_PSOR
                ? has(r.st.msg, "not converged") && has(r.st.msg, ", 0 of ")
-               : has(r.st.msg, "lifts it off");
+               : has(r.st.msg, "not held with 0 of ");
       check(r.code == STATUS_NUMERIC && said
             && !has(r.st.msg, "nan") && all_finite(P[k]->n, x),
             "%s %s: STATUS_NUMERIC \"%s\"", P[k]->name, names[m], r.st.msg);

@@ -1,0 +1,145 @@
+# thin_bodies.sh: the state solvers on thin bodies clamped at both ends
+# (paper/pdas.nw, "Where the active set crawls"), with and without contact:
+# the steel strip of tests/scenes/strip.scene (10 m by 5 cm) and strips of
+# aspect 1:10 to 1:500 made here.  Every solve must end with exit 0 and
+# its state must be the physics':
+# - at rest (no load): u = 0, E = 0 and every contact force 0, exactly;
+# - no contact: no node active, every contact force zero against the
+#   load (1e-6 of it: the residual Ax - b at a free node, which the
+#   solver's tolerance bounds relative to the internal forces, up to 1e8
+#   times the load on these strips), and the displacement that of the linear elastic
+#   body without a foundation.  That reference is another solve: the same
+#   load upwards lifts the body away from the foundation, so that no bound
+#   can act there, and linear elasticity gives u(-P) = -u(P), E(-P) = E(P);
+#   a node held wrongly on either side breaks both;
+# - contact: the Signorini conditions read from contact.dat (gaps >= 0,
+#   forces >= 0 to 1e-6 of the largest, and no force without contact:
+#   the work sum |T| gap at most 1e-5 of |E|; a free node's force is the
+#   rounding of internal forces up to 1e8 times the load, which on the
+#   1:500 strip leaves 1e-8 (pdas) to 1e-7 (cgssor) of the largest force
+#   and 6e-8 to 7e-7 of |E| in that work), E equal to the work of the loads and the contact forces
+#   (Clapeyron; both are sums in which those internal forces cancel, so
+#   to 1e-6 here), and cgssor (psor on the 1:10 strip) agreeing with
+#   pdas;
+# - part of the body lifted: the same, with some nodes in contact and some
+#   lifted.
+# psor runs where it converges within its default 1e5 sweeps: the strip
+# at rest, and the 1:10 strip (its rate falls with the conditioning of a
+# thin body, paper/psor.nw).
+. tests/lib.sh
+strip=tests/scenes/strip.scene
+
+# thin R KIND: $TMP/thin-R-KIND.scene, a steel strip 10 m long and 10/R
+# thick (E = 2e11 Pa, nu = 0.3, plane stress), clamped at both ends,
+# N = 100 columns of 10 cm and 1 + 2 rows; KIND gap: alpha = gamma/20
+# everywhere, a gap of gamma/20 at rest; KIND rest: alpha = 0, resting on
+# the foundation.  The whole top is loaded with P2 = 0 (changed by -s).
+thin() { awk -v r=$1 -v kind=$2 'BEGIN { b = 10; g = b / r; C0 = g / 10
+  c = kind == "gap" ? g / 20 : 0
+  printf "[geometry]\na = 0\nb = %.17g\ngamma = %.17g\n", b, g
+  printf "[design]\nN = 100\nC0 = %.17g\nC1 = 0\nC2 = %.17g\n", C0, g * b - c * b
+  printf "initial = constant\nconstant = %.17g\n", c
+  printf "[mesh]\nM = 1\nR = 2\nC0prime = %.17g\n", g / 5
+  printf "[material]\nE = 2e11\nnu = 0.3\n[left]\nbc = clamped\n[right]\nbc = clamped\n"
+  printf "[top]\nbc = traction\nfrom = 0\nto = 10\nP2 = -1\n" }' > $TMP/thin-$1-$2.scene; }
+# load R FACTOR: the traction P2 (negative: down) under which an
+# Euler-Bernoulli beam of the strip's section, clamped at both ends,
+# would bend by FACTOR times the gap gamma/20 at its middle:
+# w = q L^4 / (384 E I), I = gamma^3 / 12.  Shear makes the body softer
+# than the beam by 12 % at 1:10 and less beyond, and the finite elements
+# (three rows of linear triangles, which lock in bending) stiffer, by a
+# factor of about 30 at 1:500: FACTOR 1/20 leaves the gap open, FACTOR
+# 1000 closes it (the checks below say whether a node touches)
+load() { calc '-f * (g / 20) * 384 * 2e11 * g * g * g / 12 / 1e4' f="$2" g="$(calc '10 / r' r="$1")"; }
+
+# run NAME SCENE ARGS...: solve into $TMP/NAME (with nodes.dat); a check
+# that it ends with exit 0
+run() { _n=$1 _sc=$2; shift 2; rm -rf $TMP/$_n
+  $BIN solve $_sc -o $TMP/$_n --plot-files "$@" >/dev/null 2>$TMP/err; _rc=$?
+  check "$_n: exit 0 (exit $_rc$([ $_rc -eq 0 ] || echo ": $(head -1 $TMP/err)"))" test $_rc -eq 0; }
+# solved NAME: converged, KKT residual <= 1e-10, no NaN or Inf
+solved() { [ -f $TMP/$1/summary.dat ] || return 1
+  _k=$(value kkt_residual $TMP/$1)
+  check "$1: KKT residual $_k <= 1e-10 after $(value iterations $TMP/$1) $(value state_solver $TMP/$1) iterations" le "$_k" 1e-10
+  check "$1: no NaN or Inf in any output file" finite $TMP/$1; }
+# at_rest NAME: no load: u = 0, E = 0, every contact force 0, exactly
+at_rest() { solved $1 || return
+  _u=$(umax $TMP/$1) _t=$(rows_max 'abs($5)' $TMP/$1/contact.dat) _e=$(value energy $TMP/$1)
+  check "$1: at rest: max |u| = $_u, max |T| = $_t, E = $_e, all 0" holds 'u == 0 && t == 0 && e == 0' u="$_u" t="$_t" e="$_e"; }
+# no_contact NAME LOAD: no node active, every |T| <= 1e-6 |LOAD|
+no_contact() { solved $1 || return
+  _a=$(value active_contact_nodes $TMP/$1) _t=$(rows_max 'abs($5)' $TMP/$1/contact.dat)
+  check "$1: no contact: $_a nodes active, max |T| = $(show %.1e "$_t") <= 1e-6 of the load $(show %.3g "$2") N/m" \
+    holds 'a == 0 && t <= 1e-6 * abs(l)' a="$_a" t="$_t" l="$2"; }
+# opposite DOWN UP: u(DOWN) = -u(UP) to 1e-9 of the largest, E equal to 1e-12
+opposite() { [ -f $TMP/$1/summary.dat ] && [ -f $TMP/$2/summary.dat ] || return
+  _d=$(udiff $TMP/$1 $TMP/$2 -1) _a=$(value energy $TMP/$1) _b=$(value energy $TMP/$2)
+  check "$1: the elastic body's state, u = -u($2) (rel. $(show %.1e "$_d") <= 1e-9), E = $_a = E($2) (rel. $(rel "$_b" "$_a") <= 1e-12)" \
+    holds 'd <= 1e-9 && abs(b - a) <= 1e-12 * abs(a)' d="$_d" a="$_a" b="$_b"; }
+# signorini NAME: from contact.dat, with F the largest force: gaps >= 0,
+# forces >= -1e-6 F, and sum |T| gap <= 1e-5 |E| (no force without
+# contact)
+signorini() {
+  _e=$(value energy $TMP/$1) _f=$(rows_max 'abs($5)' $TMP/$1/contact.dat)
+  _gmin=$(rows_min '$4' $TMP/$1/contact.dat) _fmin=$(rows_min '$5' $TMP/$1/contact.dat)
+  _c=$(rows_sum 'abs($5) * $4' $TMP/$1/contact.dat)
+  check "$1: Signorini: gaps >= 0 (min $_gmin), forces >= 0 (min $(show %.1e "$_fmin") of max $(show %.3g "$_f")), sum |T| gap = $(show %.1e "$_c") <= 1e-5 |E|" \
+    holds 'gmin >= 0 && fmin >= -1e-6 * f && c <= 1e-5 * abs(e)' gmin="$_gmin" fmin="$_fmin" f="$_f" e="$_e" c="$_c"; }
+# contact NAME GAMMA P2 [F2]: some node in contact, the Signorini
+# conditions, and E the work of the loads (the whole top loaded)
+contact() { solved $1 || return
+  _a=$(value active_contact_nodes $TMP/$1)
+  check "$1: $_a nodes in contact" holds 'a > 0' a="$_a"
+  signorini $1; WTOL=1e-6; energy_is_work $1 $2 0 10 0 $3 0 ${4:-0}; WTOL=; }
+
+# ---- the strip of the issue: 10 m by 5 cm, N = 200 -----------------------
+# Under 1 kPa it touches (beam theory: 12.5 mm at the middle against a gap
+# of at most 5 mm); with no load, or 1 mPa down or up, it does not.
+run strip-pdas $strip && contact strip-pdas 0.05 -1e3
+run strip-cgssor $strip -s solver.state=cgssor && solved strip-cgssor && agrees strip-cgssor strip-pdas
+run strip-pdas-iter1000 $strip -s solver.max_iter=1000 && solved strip-pdas-iter1000 && agrees strip-pdas-iter1000 strip-pdas
+for s in pdas cgssor psor; do run strip-rest-$s $strip -s top.bc=free -s solver.state=$s && at_rest strip-rest-$s; done
+for s in pdas cgssor; do run strip-down-$s $strip -s top.P2=-1e-3 -s solver.state=$s && no_contact strip-down-$s 1e-2; done
+run strip-up-pdas $strip -s top.P2=1e-3 && no_contact strip-up-pdas 1e-2
+opposite strip-down-pdas strip-up-pdas
+[ -f $TMP/strip-down-cgssor/summary.dat ] && agrees strip-down-cgssor strip-down-pdas
+
+# ---- strips of aspect 1:10 to 1:500 --------------------------------------
+for r in 10 50 100 200 500; do
+  thin $r gap; thin $r rest; sc=$TMP/thin-$r-gap.scene
+  g=$(calc '10 / r' r=$r) p0=$(load $r 0.05) p1=$(load $r 1000)
+  solvers="pdas cgssor"; [ $r -eq 10 ] && solvers="pdas cgssor psor"
+  # at rest, above the foundation and on it
+  for s in pdas cgssor psor; do
+    for k in gap rest; do
+      run thin$r-rest-$k-$s $TMP/thin-$r-$k.scene -s top.bc=free -s solver.state=$s && at_rest thin$r-rest-$k-$s
+    done
+  done
+  # no contact: the load down, and up
+  for s in $solvers; do
+    run thin$r-down-$s $sc -s top.P2=$p0 -s solver.state=$s && no_contact thin$r-down-$s "$(calc '10 * p' p=$p0)"
+  done
+  run thin$r-up-pdas $sc -s top.P2=$(calc '-p' p=$p0) && no_contact thin$r-up-pdas "$(calc '10 * p' p=$p0)"
+  opposite thin$r-down-pdas thin$r-up-pdas
+  for s in $solvers; do [ $s = pdas ] || { [ -f $TMP/thin$r-down-$s/summary.dat ] && agrees thin$r-down-$s thin$r-down-pdas; }; done
+  # contact: the gap closed
+  for s in $solvers; do
+    run thin$r-press-$s $sc -s top.P2=$p1 -s solver.state=$s && contact thin$r-press-$s $g $p1
+  done
+  for s in $solvers; do [ $s = pdas ] || { [ -f $TMP/thin$r-press-$s/summary.dat ] && agrees thin$r-press-$s thin$r-press-pdas; }; done
+  # part lifted: resting on the foundation under its weight (steel,
+  # 7.85e4 N/m^3), the right half pulled up by twice its weight: the
+  # left half pressed, the right half lifted by the same net load
+  up=$(calc '2 * 7.85e4 * g' g=$g)
+  lift="-s top.from=5 -s top.P2=$up -s body_force.F2=-7.85e4"
+  for s in $solvers; do
+    run thin$r-lift-$s $TMP/thin-$r-rest.scene $lift -s solver.state=$s || continue
+    solved thin$r-lift-$s || continue
+    a=$(value active_contact_nodes $TMP/thin$r-lift-$s) n=$(value contact_nodes $TMP/thin$r-lift-$s)
+    check "thin$r-lift-$s: part lifted: $a of $n nodes in contact" holds 'a > 0 && a < n' a="$a" n="$n"
+    signorini thin$r-lift-$s
+    [ $s = pdas ] && { WTOL=1e-6; energy_is_work thin$r-lift-$s $g 5 10 0 $up 0 -7.85e4; WTOL=; }
+    [ $s = pdas ] || agrees thin$r-lift-$s thin$r-lift-pdas
+  done
+done
+finish
