@@ -227,7 +227,8 @@ static int factor_schur(Qp_workspace *w, Status *st)
     return STATUS_OK;
   return status_set(st, STATUS_NUMERIC, "cgssor with friction needs S, the "
     "Schur complement onto the %d contact unknowns, positive definite: it is "
-    "singular here (a body held by its contact alone?); use solver.state = pdas",
+    "its Cholesky factor's squared pivots spread by less than 100 epsilon, "
+    "which is taken for singular; use solver.state = pdas",
     nk);
 }
 
@@ -249,7 +250,7 @@ static double norm_inverse(Qp_workspace *w)
   return rho + res;
 }
 
-#line 602 "paper/mprgp.nw"
+#line 603 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
   int code = pdas_condense(w, st);
@@ -262,7 +263,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 617 "paper/mprgp.nw"
+#line 618 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -277,7 +278,7 @@ static int dual_proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 633 "paper/mprgp.nw"
+#line 634 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -288,7 +289,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
   return af;
 }
 
-#line 647 "paper/mprgp.nw"
+#line 648 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -305,7 +306,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   mp->restart = 1;
 }
 
-#line 667 "paper/mprgp.nw"
+#line 668 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -320,7 +321,7 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 701 "paper/mprgp.nw"
+#line 702 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
@@ -334,7 +335,7 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 719 "paper/mprgp.nw"
+#line 720 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -351,7 +352,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 685 "paper/mprgp.nw"
+#line 686 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -366,7 +367,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   else dual_expansion_step(w, af);
 }
 
-#line 743 "paper/mprgp.nw"
+#line 744 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -396,7 +397,7 @@ static double dual_snapped_kkt(Qp_workspace *w)
   return kkt;
 }
 
-#line 776 "paper/mprgp.nw"
+#line 777 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
@@ -406,7 +407,7 @@ static int dual_finish(Qp_workspace *w, Status *st)
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
 
-#line 791 "paper/mprgp.nw"
+#line 792 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
