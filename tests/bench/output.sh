@@ -65,6 +65,9 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v runs=$runs '
           least(plot, N, $9); bytes[N] = $8; pbytes[N] = $11 }
   END {
     print "% written by make bench (tests/bench/output.sh) on " date ", " cores " cores"
+    N = order[n]; r = wall[N] / ref[N]
+    printf "\\newcommand{\\outputN}{%d}\\newcommand{\\outputwhole}{%.2f}\\newcommand{\\outputref}{%.2f}\n", N, wall[N], ref[N]
+    printf "\\newcommand{\\outputsolve}{%.2f}\\newcommand{\\outputratio}{%.2f}\\newcommand{\\outputverdict}{%s}\n", sec[N], r, N != 1024 ? "not judged" : r <= 1.5 ? "met" : "missed"
     print "\\begin{center}\\small"
     print "\\begin{tabular}{@{}rr r rrr r r rr@{}}\\toprule"
     print "& & & \\multicolumn{5}{c}{\\texttt{contactopt solve}} & \\multicolumn{2}{c}{\\texttt{--plot-files}}\\\\"
