@@ -10,6 +10,8 @@ scenes=$TMP/scenes
 mkdir -p $scenes
 
 # ---- the user's scenes -------------------------------------------------------
+# steel FILE: the mesh and the material three of them share, added to FILE
+steel() { printf '[mesh]\nM = 1\nR = 3\nC0prime = 0.25\n[material]\nE = 2.15e11\nnu = 0.29\n' >> $1; }
 # both sides clamped, 10 m wide: the axes must run from a = 0 to b = 10
 cat > $scenes/clamped.scene <<'EOF'
 [geometry]
@@ -23,13 +25,6 @@ C1 = 0.025
 C2 = 9.75
 initial = constant
 constant = 0.025
-[mesh]
-M = 1
-R = 3
-C0prime = 0.25
-[material]
-E = 2.15e11
-nu = 0.29
 [left]
 bc = clamped
 [right]
@@ -40,6 +35,7 @@ from = 3
 to = 7
 P2 = -1e8
 EOF
+steel $scenes/clamped.scene
 # both sides on rollers, a < 0, the whole top loaded
 cat > $scenes/roller.scene <<'EOF'
 [geometry]
@@ -54,13 +50,6 @@ C2 = 3.91
 initial = line
 line_start = 0.02
 line_end = 0.025
-[mesh]
-M = 1
-R = 3
-C0prime = 0.25
-[material]
-E = 2.15e11
-nu = 0.29
 [left]
 bc = roller
 [right]
@@ -71,6 +60,7 @@ from = -2
 to = 2
 P2 = -2e8
 EOF
+steel $scenes/roller.scene
 # aluminium, the right side free, an oblique load and the body's weight
 cat > $scenes/free.scene <<'EOF'
 [geometry]
@@ -120,13 +110,6 @@ C2 = 3.91
 initial = line
 line_start = 0.05
 line_end = 0
-[mesh]
-M = 1
-R = 3
-C0prime = 0.25
-[material]
-E = 2.15e11
-nu = 0.29
 [left]
 bc = clamped
 [right]
@@ -143,6 +126,7 @@ P2 = -5.75e8
 model = coulomb
 friction = 0.3
 EOF
+steel $scenes/friction.scene
 
 # ---- reading a figure back ----------------------------------------------------
 # png_width FILE: the width in the PNG's header
