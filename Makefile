@@ -100,8 +100,10 @@ $(PROGRAM): $(B)/main.o $(OBJ)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 -include $(wildcard $(B)/*.d $(B)/tests/*.d)
 
-# The fault-injection shim (rules below): named before make check needs it.
+# The fault-injection shim and the shim of a CPU that OpenBLAS does not
+# know (rules below): named before make check needs them.
 FAULT_SHIM := build/faults/inject.so
+UNKNOWN_CPU := build/kernels/unknown_cpu.so
 
 # Test programs link the library modules directly.
 TEST_PROGS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/*.c))
@@ -109,30 +111,38 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) tangle-check $(RUNS)
-	@BIN=$(PROGRAM) TESTS=$(B)/tests sh tests/run
+check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) tangle-check $(RUNS)
+	@BIN=$(PROGRAM) TESTS=$(B)/tests UNKNOWN_CPU=$(UNKNOWN_CPU) sh tests/run
 
 # make check-kernels: what a user's other machine would meet. The test
 # programs under every OpenBLAS kernel family this CPU can execute
 # (tests/kernels/programs.sh), the optimisation of every shipped and suite
 # scene at mesh.refine 1 and 4 under Haswell's, Sandybridge's and Prescott's
 # kernels (tests/kernels/optimize.sh; make check-kernels-full adds refine 8),
-# and the test programs with the scripts that
-# solve and optimise under KERNEL_SETTINGS: Prescott's kernels (the generic
-# ones, which every x86-64 runs) and one thread. A verdict that changes with
-# the kernel then fails here, on the developer's machine, before it fails on
+# and the suite again under each of KERNEL_SETTINGS: unknown-cpu, every
+# test on 16 cores of a CPU that OpenBLAS does not know (its Prescott
+# kernels, chosen by OpenBLAS, not by the user, and the threads OpenBLAS
+# and the program start on 16 cores: the shim UNKNOWN_CPU), as the
+# issue's 16-core Xeon ran it; sixteen-threads, every test with 16 BLAS threads
+# asked for; one-thread, the test programs and the scripts that solve and
+# optimise on one thread. A verdict that changes with the kernel or the
+# threads then fails here, on the developer's machine, before it fails on
 # a user's. CI runs it.
-KERNEL_SETTINGS ?= OPENBLAS_CORETYPE=Prescott OPENBLAS_NUM_THREADS=1
+KERNEL_SETTINGS ?= unknown-cpu sixteen-threads one-thread
+kernel_env.unknown-cpu := OPENBLAS_CORETYPE=Prescott UNKNOWN_CPU_CORES=16 LD_PRELOAD=$(abspath $(UNKNOWN_CPU))
+kernel_env.sixteen-threads := OPENBLAS_NUM_THREADS=16
+kernel_env.one-thread := OPENBLAS_NUM_THREADS=1
+kernel_scripts.one-thread = $(NUMERIC_SCRIPTS)
 KERNEL_REFINES ?= 1 4
 NUMERIC_SCRIPTS := $(patsubst %,tests/%.sh,optimize suite friction hard_cases solvers_agree \
                      gradcheck convergence flat_punch magnitudes reproducible thin_bodies)
-check-kernels: $(PROGRAM) $(TEST_PROGS)
+check-kernels: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) $(RUNS)
 	@TESTS=$(B)/tests sh tests/kernels/programs.sh
 	@BIN=$(PROGRAM) REFINES="$(KERNEL_REFINES)" sh tests/kernels/optimize.sh
-	@for k in $(KERNEL_SETTINGS); do \
-	  env $$k BIN=$(PROGRAM) TESTS=$(B)/tests SCRIPTS="$(NUMERIC_SCRIPTS)" \
-	    LOG=build/tests-$$k.log sh tests/run | tail -n 1 | sed "s/^/check-kernels: $$k: /"; \
-	done; ! grep -l '^FAIL - ' $(KERNEL_SETTINGS:%=build/tests-%.log)
+	@$(foreach k,$(KERNEL_SETTINGS),env $(kernel_env.$(k)) BIN=$(PROGRAM) TESTS=$(B)/tests \
+	    UNKNOWN_CPU=$(UNKNOWN_CPU) SCRIPTS="$(kernel_scripts.$(k))" LOG=build/tests-$(k).log \
+	    sh tests/run | tail -n 1 | sed "s/^/check-kernels: $(k): /";) \
+	  ! grep -l '^FAIL - ' $(KERNEL_SETTINGS:%=build/tests-%.log)
 # The table of the paper's section "Every machine": the test programs under
 # each kernel family this CPU executes (written by the run, committed).
 kernels-table: $(TEST_PROGS)
@@ -149,6 +159,9 @@ check-fine: $(PROGRAM)
 # allocation or write of a run fail, built without the sanitizers, so that
 # one shim serves both builds. make check runs the solve's legs; make faults
 # every leg (a few minutes), make SAN=1 faults with LeakSanitizer on every run.
+$(UNKNOWN_CPU): tests/kernels/unknown_cpu.c
+	@mkdir -p $(@D)
+	$(CC) -O2 -g -std=gnu11 -Wall -Wextra -fPIC -shared -o $@ $< -ldl
 $(FAULT_SHIM): tests/faults/inject.c
 	@mkdir -p $(@D)
 	$(CC) -O2 -g -std=gnu11 -Wall -Wextra -fPIC -shared -o $@ $< -ldl

@@ -245,7 +245,7 @@ static void warm(int threads)
   cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, 1, 1, 1.0, a, 1, 0.0, c, 1);
   if (threads > 1) cblas_daxpy(WARM_N, 1.0, x, 1, x + WARM_N, 1);
 }
-#line 481 "paper/threads.nw"
+#line 488 "paper/threads.nw"
 const char *threads_coretype_advice(const char *kernels, int coretype_set,
                                     int avx2, int avx512)
 {
@@ -257,20 +257,27 @@ const char *threads_coretype_advice(const char *kernels, int coretype_set,
   return avx512 ? "SkylakeX" : "Haswell";
 }
 
-static void advise_kernels(const Threads *t)
+/* the family that fits this CPU where OpenBLAS runs an older one that
+   the user did not choose, else NULL */
+static const char *kernels_advised(const Threads *t)
 {
   __builtin_cpu_init();
   int avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw")
                && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
-  const char *fits = threads_coretype_advice(t->kernels, getenv("OPENBLAS_CORETYPE") != NULL,
-                                             __builtin_cpu_supports("avx2")
-                                             && __builtin_cpu_supports("fma"), avx512);
-  if (fits)
-    fprintf(stderr, "contactopt: note: %s runs its %s kernels, which use no AVX2, on a "
-            "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
-            t->blas, t->kernels, avx512 ? "AVX-512" : "AVX2", fits);
+  return threads_coretype_advice(t->kernels, getenv("OPENBLAS_CORETYPE") != NULL,
+                                 __builtin_cpu_supports("avx2")
+                                 && __builtin_cpu_supports("fma"), avx512);
 }
-#line 524 "paper/threads.nw"
+
+static void advise_kernels(const Threads *t, FILE *f)
+{
+  const char *fits = kernels_advised(t);
+  if (fits)
+    fprintf(f, "contactopt: note: %s runs its %s kernels, which use no AVX2, on a "
+            "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
+            t->blas, t->kernels, strcmp(fits, "SkylakeX") ? "AVX2" : "AVX-512", fits);
+}
+#line 538 "paper/threads.nw"
 __attribute__((constructor))
 static void threads_load(void)
 {
@@ -294,7 +301,7 @@ int threads_start(const char *origin, double need, Status *st)
   }
   if (t->omp_threads == 1 && t->omp_levels) t->omp_levels(0);
   if (t->omp_threads == 1 && !t->omp_levels) t->omp_threads = CHOLMOD_OMP;
-  if (!t->started) advise_kernels(t);
+  if (!t->started && isatty(STDERR_FILENO)) advise_kernels(t, stderr);
   t->started = 1;
   return STATUS_OK;
 }
@@ -310,7 +317,7 @@ void threads_by_size(int most)
   t->set(1);
   t->by_size = 1;
 }
-#line 579 "paper/threads.nw"
+#line 593 "paper/threads.nw"
 int threads_for(double f)
 {
   double k = floor(f / THREADS_WORK);
@@ -330,7 +337,7 @@ static void leave(int n) { if (n) T.set(1); }
 
 #define NEXT(type, name) static type next; \
   if (!next) FIND(next, RTLD_NEXT, name)
-#line 604 "paper/threads.nw"
+#line 618 "paper/threads.nw"
 typedef void (*gemm_f)(const char *, const char *, const int *, const int *,
                        const int *, const double *, const double *, const int *,
                        const double *, const int *, const double *, double *,
@@ -381,7 +388,7 @@ void dpotrf_(const char *uplo, const int *n, double *A, const int *lda, int *inf
   next(uplo, n, A, lda, info);
   leave(use);
 }
-#line 657 "paper/threads.nw"
+#line 671 "paper/threads.nw"
 typedef void (*cgemm_f)(enum CBLAS_ORDER, enum CBLAS_TRANSPOSE,
                         enum CBLAS_TRANSPOSE, int, int, int, double,
                         const double *, int, const double *, int, double,
@@ -425,7 +432,7 @@ void cblas_dtrsm(const enum CBLAS_ORDER order, const enum CBLAS_SIDE side,
   next(order, side, uplo, trans, diag, m, n, alpha, A, lda, B, ldb);
   leave(use);
 }
-#line 705 "paper/threads.nw"
+#line 719 "paper/threads.nw"
 /* the choice made, or, before threads_start, the one it would make */
 static Threads described(void)
 {
@@ -438,8 +445,9 @@ static Threads described(void)
 void threads_summary(FILE *f)
 {
   Threads d = described(), *t = &d;
-  fprintf(f, "blas %s\nblas_library %s\nblas_kernels %s\n", t->blas,
-          t->library, t->kernels);
+  const char *fits = kernels_advised(t);
+  fprintf(f, "blas %s\nblas_library %s\nblas_kernels %s\nblas_kernels_advised %s\n",
+          t->blas, t->library, t->kernels, fits ? fits : "none");
   fprintf(f, "blas_threads %d\nblas_threads_by_size %d\nthreads_chosen_by %s\n",
           t->blas_threads, t->by_size, t->chosen_by);
   fprintf(f, "openmp_threads %d\ncores %d\nphysical_cores %d\nload_average %.2f\n",
@@ -459,5 +467,5 @@ void threads_version(FILE *f)
     fprintf(f, "threads: a BLAS call on %d (%s), CHOLMOD's OpenMP regions on %d; "
             "%d cores, %d physical\n", t->blas_threads, t->asked_by ? t->asked_by
             : "the BLAS's own", t->omp_threads, t->cores, t->physical);
-  advise_kernels(t);
+  advise_kernels(t, f);
 }

@@ -11,6 +11,12 @@ fail() { echo "FAIL - $*"; failures=$((failures + 1)); }
 check() { desc=$1; shift; if "$@"; then ok "$desc"; else fail "$desc"; fi; }
 finish() { rm -rf "$TMP"; [ "$failures" -eq 0 ]; }
 
+# unasked CMD...: CMD with no thread count of the user's in its
+# environment (the variables OpenBLAS and OpenMP read), for the checks of
+# what the program chooses when nobody asks; make check-kernels runs the
+# whole suite with OPENBLAS_NUM_THREADS=16 too
+unasked() { env -u OPENBLAS_NUM_THREADS -u GOTO_NUM_THREADS -u OMP_NUM_THREADS "$@"; }
+
 # ---- the numeric guard ------------------------------------------------------
 # A check compares numbers only: every value it compares must be a finite
 # decimal number (number() below: not empty, not NaN or Inf, not a word),

@@ -15,7 +15,8 @@ ends_cleanly() { _rc=$1 _err=$2
   [ "$_rc" -eq 5 ] && [ "$(wc -l < "$_err")" -eq 1 ] && grep -q '^contactopt: ' "$_err"; }
 limited() { _mb=$1 _t=$2; shift 2
   ( ulimit -v $((_mb * 1000))
-    if [ "$_t" = - ]; then unset OPENBLAS_NUM_THREADS; else export OPENBLAS_NUM_THREADS=$_t; fi
+    unset OPENBLAS_NUM_THREADS GOTO_NUM_THREADS OMP_NUM_THREADS
+    [ "$_t" = - ] || export OPENBLAS_NUM_THREADS=$_t
     exec timeout 60 $BIN "$@" ) > /dev/null 2> $TMP/err; }
 case $BIN in
   */san/*) echo "# skipped under AddressSanitizer: the ulimit -v runs (its shadow memory cannot be reserved under an address-space limit)" ;;
@@ -51,15 +52,15 @@ esac
 # thread counts; the kernels are those OPENBLAS_CORETYPE selects, the file
 # Debian's alternative for libblas.so.3 where there is one, and a user's
 # count is the one recorded (16 on two cores too: honoured, not capped)
-keys='blas blas_library blas_kernels blas_threads blas_threads_by_size threads_chosen_by openmp_threads cores physical_cores load_average'
+keys='blas blas_library blas_kernels blas_kernels_advised blas_threads blas_threads_by_size threads_chosen_by openmp_threads cores physical_cores load_average'
 has_keys() { for _k in $keys; do [ -n "$(value $_k "$1")" ] || return 1; done; }
-$BIN solve $ex -o $TMP/s > /dev/null 2> $TMP/err
-$BIN gradcheck $ex -o $TMP/g > /dev/null 2>> $TMP/err
-$BIN optimize $ex -o $TMP/o > /dev/null 2>> $TMP/err
+unasked $BIN solve $ex -o $TMP/s > /dev/null 2> $TMP/err
+unasked $BIN gradcheck $ex -o $TMP/g > /dev/null 2>> $TMP/err
+unasked $BIN optimize $ex -o $TMP/o > /dev/null 2>> $TMP/err
 for d in s g o; do
   check "summary.dat of $d names $keys" has_keys $TMP/$d
 done
-check "no line on stderr from a run on this CPU's own kernels ($(head -c 200 $TMP/err))" test ! -s $TMP/err
+check "no line on stderr from a run that is not at a terminal ($(head -c 200 $TMP/err))" test ! -s $TMP/err
 alt=/etc/alternatives/libblas.so.3-x86_64-linux-gnu
 if [ -e $alt ]; then
   check "blas_library is the file Debian's alternatives choose ($(value blas_library $TMP/s))" \
@@ -67,18 +68,46 @@ if [ -e $alt ]; then
 fi
 case $(value blas $TMP/s) in
   OpenBLAS-*)
+  # kernels the user chose (no shim of the environment's: see below)
   for k in Prescott Haswell; do
-    OPENBLAS_CORETYPE=$k $BIN solve $ex -o $TMP/k$k > /dev/null 2> $TMP/err
+    env -u LD_PRELOAD OPENBLAS_CORETYPE=$k $BIN solve $ex -o $TMP/k$k > /dev/null 2> $TMP/err
     check "OPENBLAS_CORETYPE=$k: blas_kernels $k, no note on stderr" \
       test "$(value blas_kernels $TMP/k$k)" = $k -a ! -s $TMP/err
   done
+  check "OPENBLAS_CORETYPE=Prescott, the user's choice: blas_kernels_advised none" \
+    test "$(value blas_kernels_advised $TMP/kPrescott)" = none
+  # a CPU that OpenBLAS does not know (the shim tests/kernels/unknown_cpu.c:
+  # its Prescott kernels, chosen by OpenBLAS): the family that fits this
+  # CPU is recorded and in --version, and said on the standard error only
+  # at a terminal (script(1) gives the run one), once
+  fits=$(awk '/^flags/ { for (i = 2; i <= NF; i++) f[$i] = 1; exit }
+    END { print !(f["avx2"] && f["fma"]) ? "none" : \
+      f["avx512f"] && f["avx512bw"] && f["avx512vl"] && f["avx512dq"] ? "SkylakeX" : "Haswell" }' /proc/cpuinfo)
+  shim=$(pwd)/${UNKNOWN_CPU:-build/kernels/unknown_cpu.so}
+  unknown() { env OPENBLAS_CORETYPE=Prescott LD_PRELOAD="$shim" "$@"; }
+  check "the shim of an unknown CPU is built ($shim)" test -f "$shim"
+  unknown $BIN solve $ex -o $TMP/unknown > /dev/null 2> $TMP/err
+  check "an unknown CPU: blas_kernels Prescott, blas_kernels_advised $fits, nothing on stderr ($(head -c 200 $TMP/err))" \
+    test "$(value blas_kernels $TMP/unknown) $(value blas_kernels_advised $TMP/unknown)" = "Prescott $fits" -a ! -s $TMP/err
+  unknown $BIN --version > $TMP/version 2>&1
+  notes=$(grep -c "^contactopt: note: .* runs its Prescott kernels.*OPENBLAS_CORETYPE=$fits selects" $TMP/version)
+  check "an unknown CPU: --version names the family that fits, $([ $fits = none ] && echo 'none due' || echo "$fits"), in $notes note" \
+    test "$notes" -eq "$([ $fits = none ] && echo 0 || echo 1)"
+  if command -v script > /dev/null; then
+    unknown script -qec "$BIN solve $ex -o $TMP/tty" /dev/null > $TMP/tty.out 2>&1; rc=$?
+    notes=$(grep -c "^contactopt: note: .*OPENBLAS_CORETYPE=$fits selects" $TMP/tty.out)
+    check "an unknown CPU at a terminal: exit $rc, the note once ($notes)" \
+      test $rc -eq 0 -a "$notes" -eq "$([ $fits = none ] && echo 0 || echo 1)"
+  else
+    echo "# script(1) is missing: the note at a terminal is not checked"
+  fi
   for t in 1 16; do
     OPENBLAS_NUM_THREADS=$t $BIN solve $ex -o $TMP/t$t > /dev/null 2>&1
     check "OPENBLAS_NUM_THREADS=$t: blas_threads $t, chosen by OPENBLAS_NUM_THREADS, not by size" \
       test "$(value blas_threads $TMP/t$t) $(value threads_chosen_by $TMP/t$t) $(value blas_threads_by_size $TMP/t$t)" \
         = "$t OPENBLAS_NUM_THREADS 0"
   done
-  OMP_NUM_THREADS=3 $BIN solve $ex -o $TMP/omp > /dev/null 2>&1
+  unasked OMP_NUM_THREADS=3 $BIN solve $ex -o $TMP/omp > /dev/null 2>&1
   check "OMP_NUM_THREADS=3 (OpenBLAS reads it): 3 BLAS threads, CHOLMOD's 4 OpenMP threads" \
     test "$(value blas_threads $TMP/omp) $(value openmp_threads $TMP/omp)" = "3 4"
   check "by default CHOLMOD's OpenMP regions run on one thread, the BLAS's calls by size" \
@@ -93,7 +122,8 @@ esac
 # and with the program's choice: the same exit status, iterations,
 # evaluations and stop reason, E* within 1e-12 of the one-thread run's
 for t in 1 2 16 -; do
-  ( if [ $t = - ]; then unset OPENBLAS_NUM_THREADS; else export OPENBLAS_NUM_THREADS=$t; fi
+  ( unset OPENBLAS_NUM_THREADS GOTO_NUM_THREADS OMP_NUM_THREADS
+    [ $t = - ] || export OPENBLAS_NUM_THREADS=$t
     exec $BIN optimize $ex -o $TMP/n$t -s mesh.refine=16 ) > /dev/null 2>&1
   echo $? > $TMP/rc$t
 done
