@@ -1,10 +1,10 @@
-#line 139 "paper/fem.nw"
+#line 140 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
 
-#line 151 "paper/fem.nw"
+#line 152 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
@@ -26,7 +26,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 178 "paper/fem.nw"
+#line 179 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -39,10 +39,10 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 172 "paper/fem.nw"
+#line 173 "paper/fem.nw"
   return d;
 }
-#line 194 "paper/fem.nw"
+#line 195 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -56,7 +56,7 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
   }
 }
 
-#line 210 "paper/fem.nw"
+#line 211 "paper/fem.nw"
 void fem_dofs_free(Dofs *d)
 {
   if (!d) return;
@@ -67,7 +67,7 @@ void fem_dofs_free(Dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 238 "paper/fem.nw"
+#line 239 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -82,7 +82,7 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 293 "paper/fem.nw"
+#line 300 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -101,7 +101,7 @@ void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
 
-#line 314 "paper/fem.nw"
+#line 321 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -112,7 +112,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
 
-#line 327 "paper/fem.nw"
+#line 334 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -124,7 +124,27 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 347 "paper/fem.nw"
+#line 352 "paper/fem.nw"
+double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
+                           int t, long double e[3])
+{
+  double xy[6], q[6], gx[3], gy[3];
+  fem_element_xy(m, t, xy);
+  fem_element_q(m, d, Q, t, q);
+  double a2 = fem_element_gradients(xy, gx, gy);
+  for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
+  fem_element_strain(gx, gy, q, e);
+  return a2;
+}
+
+void fem_element_stress(const Hooke *H, const long double e[3], long double s[3])
+{
+  for (int r = 0; r < 3; r++) {
+    s[r] = 0;
+    for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
+  }
+}
+#line 380 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -137,13 +157,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   return area2;
 }
 
-#line 361 "paper/fem.nw"
+#line 394 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 370 "paper/fem.nw"
+#line 403 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -153,9 +173,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 366 "paper/fem.nw"
+#line 399 "paper/fem.nw"
 }
-#line 423 "paper/fem.nw"
+#line 456 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -171,17 +191,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 445 "paper/fem.nw"
+#line 478 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 438 "paper/fem.nw"
+#line 471 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 453 "paper/fem.nw"
+#line 486 "paper/fem.nw"
 static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
                       int *rows)
 {
@@ -209,7 +229,7 @@ static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 401 "paper/fem.nw"
+#line 434 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -224,7 +244,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 483 "paper/fem.nw"
+#line 516 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -233,7 +253,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 496 "paper/fem.nw"
+#line 529 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static int fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -245,7 +265,7 @@ static int fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 522 "paper/fem.nw"
+#line 555 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -268,7 +288,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
   return 0;
 }
 
-#line 548 "paper/fem.nw"
+#line 581 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -280,17 +300,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 565 "paper/fem.nw"
+#line 598 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 559 "paper/fem.nw"
+#line 592 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 581 "paper/fem.nw"
+#line 614 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -304,7 +324,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 598 "paper/fem.nw"
+#line 631 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
@@ -312,7 +332,7 @@ static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
 
-#line 607 "paper/fem.nw"
+#line 640 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -320,7 +340,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 621 "paper/fem.nw"
+#line 654 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -339,28 +359,20 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 
-#line 670 "paper/fem.nw"
+#line 703 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 685 "paper/fem.nw"
-double xy[6], q[6], gx[3], gy[3];
-long double e[3], De;
-fem_element_xy(m, t, xy);
-fem_element_q(m, d, Q, t, q);
-double a2 = fem_element_gradients(xy, gx, gy);
-long double area2 = a2;
-for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
-fem_element_strain(gx, gy, q, e);      /* now the strain itself */
-for (int r = 0; r < 3; r++) {
-  De = 0;
-  for (int c = 0; c < 3; c++) De += (long double) H->D[r][c] * e[c];
-  U += area2 / 4 * e[r] * De;           /* 1/2 |T| e'De, |T| = area2/2 */
-}
-#line 676 "paper/fem.nw"
+#line 717 "paper/fem.nw"
+long double e[3], sigma[3];
+long double area2 = fem_triangle_strain(m, d, Q, t, e);
+fem_element_stress(H, e, sigma);
+for (int r = 0; r < 3; r++)
+  U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
+#line 709 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -26,7 +26,7 @@ typedef struct { double D[3][3]; } Hooke;
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 279 "paper/fem.nw"
+#line 280 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -37,6 +37,12 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3]);
 /* e = the unnormalised strain 2|T| (e11, e22, 2 e12) of q */
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3]);
+/* e = the strain (e11, e22, 2 e12) of triangle t under the displacement
+   Q, constant on it; returns 2|T| */
+double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
+                           int t, long double e[3]);
+/* s = D e, the stress (s11, s22, s12) of the strain e [Pa when E is] */
+void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]);
 #line 87 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);

@@ -600,18 +600,12 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
 #line 1079 "paper/output.nw"
 static void vtu_triangle_stress(const Model *md, int t, double s[5])
 {
-  double xy[6], q[6], gx[3], gy[3];
-  long double e[3];
-  const double (*D)[3] = md->hooke.D;
-  fem_element_xy(md->mesh, t, xy);
-  fem_element_q(md->mesh, md->dofs, md->Q, t, q);
-  double a2 = fem_element_gradients(xy, gx, gy);
-  for (int k = 0; k < 3; k++) gx[k] /= a2, gy[k] /= a2;
-  fem_element_strain(gx, gy, q, e);      /* the strain itself */
-  for (int r = 0; r < 3; r++)
-    s[r] = (double) (D[r][0] * e[0] + D[r][1] * e[1] + D[r][2] * e[2]);
+  long double e[3], sigma[3];
+  fem_triangle_strain(md->mesh, md->dofs, md->Q, t, e);
+  fem_element_stress(&md->hooke, e, sigma);
+  for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
   s[3] = md->problem->model == MODEL_PLANE_STRAIN
-       ? (double) (D[0][1] * (e[0] + e[1])) : 0.0;
+       ? (double) (md->hooke.D[0][1] * (e[0] + e[1])) : 0.0;
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
@@ -621,7 +615,7 @@ static void vtu_stress(const Vtu_state *s, int which, void *values)
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 1109 "paper/output.nw"
+#line 1103 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -669,7 +663,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 1138 "paper/output.nw"
+#line 1132 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -696,7 +690,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 1169 "paper/output.nw"
+#line 1163 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -708,7 +702,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1185 "paper/output.nw"
+#line 1179 "paper/output.nw"
 static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -727,7 +721,7 @@ static int vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1206 "paper/output.nw"
+#line 1200 "paper/output.nw"
 static int output_vtu(Output *o, const char *sub, const Model *md,
                       const double *X, Status *st)
 {
@@ -737,7 +731,7 @@ static int output_vtu(Output *o, const char *sub, const Model *md,
   int rc_close = output_close(o, f, st);
   return rc ? rc : rc_close;
 }
-#line 1219 "paper/output.nw"
+#line 1213 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
@@ -750,7 +744,7 @@ int output_state(Output *o, const char *sub, const Model *md,
     return rc;
   return STATUS_OK;
 }
-#line 1266 "paper/output.nw"
+#line 1260 "paper/output.nw"
 static void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -765,7 +759,7 @@ static void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1239 "paper/output.nw"
+#line 1233 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -786,7 +780,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1285 "paper/output.nw"
+#line 1279 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -809,7 +803,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1318 "paper/output.nw"
+#line 1312 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -839,7 +833,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }
-#line 1525 "paper/output.nw"
+#line 1519 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  Output_start *start, Status *st)
 {
@@ -850,7 +844,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return STATUS_OK;
 }
-#line 1416 "paper/output.nw"
+#line 1410 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -871,7 +865,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1357 "paper/output.nw"
+#line 1351 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -916,7 +910,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1480 "paper/output.nw"
+#line 1474 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -929,7 +923,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1444 "paper/output.nw"
+#line 1438 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -961,7 +955,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1503 "paper/output.nw"
+#line 1497 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -980,7 +974,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1541 "paper/output.nw"
+#line 1535 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
