@@ -77,23 +77,29 @@ typedef struct {
   Model *md;                /* the discrete problem of s.problem */
   Output_run run;           /* the scene's facts for the summaries */
   char dir[OUTPUT_PATH];    /* the output folder */
-  int optimizing;           /* the command is optimize */
+  int optimizing;           /* the command runs the optimiser */
 } Run;
-static int command_optimize(Run *r, Status *st);
 
-static int run_command(const Args *a, const char *suffix,
-                       int (*command)(Run *r, Status *st),
-                       cholmod_common *cm, Status *st)
+typedef struct {
+  const char *name, *usage, *suffix;  /* the command, its help, its folder */
+  int (*run)(Run *r, Status *st);     /* the command itself */
+  int plot_files;                     /* honours --plot-files */
+  int components;                     /* honours --components */
+  int optimizes;                      /* runs the optimiser (its memory too) */
+} Command;
+
+static int run_command(const Args *a, const Command *c, cholmod_common *cm,
+                       Status *st)
 {
-  Run r = { .a = a, .optimizing = command == command_optimize };
+  Run r = { .a = a, .optimizing = c->optimizes };
   int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
   if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
                          opt_metric_name(r.s.optimizer.metric) };
-  if (!a->outdir) output_default_dir(a->scene, suffix, r.dir, sizeof r.dir);
-  double extra = command == command_optimize ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
+  if (!a->outdir) output_default_dir(a->scene, c->suffix, r.dir, sizeof r.dir);
+  double extra = c->optimizes ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
   if (!(rc = a->outdir ? output_dir_name(a->outdir, r.dir, sizeof r.dir, st) : 0)
       && !(rc = output_check(r.dir, st))                  /* before any work */
       && !(rc = a->matrix_market ? output_check_file(a->matrix_market, r.dir, st) : 0)
@@ -101,14 +107,14 @@ static int run_command(const Args *a, const char *suffix,
       && !(rc = model_fits(&r.s.problem, extra, r.s.path, st))
       && !(rc = threads_start(r.s.path, model_memory(&r.s.problem) + extra, st))) {
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
-    rc = r.md ? command(&r, st) : (int) st->code;
+    rc = r.md ? c->run(&r, st) : (int) st->code;
   }
   if (rc) name_the_scene(st, r.s.path);
   model_free(r.md);
   scene_free(&r.s);
   return rc;
 }
-#line 393 "paper/main.nw"
+#line 399 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -119,7 +125,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 412 "paper/main.nw"
+#line 418 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -154,7 +160,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 449 "paper/main.nw"
+#line 455 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -169,7 +175,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 481 "paper/main.nw"
+#line 487 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -192,7 +198,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 507 "paper/main.nw"
+#line 513 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -211,7 +217,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 535 "paper/main.nw"
+#line 541 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -233,7 +239,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 703 "paper/main.nw"
+#line 709 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -243,7 +249,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 719 "paper/main.nw"
+#line 725 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -256,7 +262,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 740 "paper/main.nw"
+#line 746 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -304,7 +310,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 797 "paper/main.nw"
+#line 803 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -323,7 +329,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 827 "paper/main.nw"
+#line 833 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -339,18 +345,11 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 854 "paper/main.nw"
-typedef struct {
-  const char *name, *usage, *suffix;  /* the command, its help, its folder */
-  int (*run)(Run *r, Status *st);     /* the command itself */
-  int plot_files;                     /* honours --plot-files */
-  int components;                     /* honours --components */
-} Command;
-
+#line 861 "paper/main.nw"
 static const Command commands[] = {
-  { "solve", usage_solve, "", command_solve, 1, 0 },
-  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1 },
-  { "optimize", usage_optimize, "-optimize", command_optimize, 1, 0 },
+  { "solve", usage_solve, "", command_solve, 1, 0, 0 },
+  { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },
+  { "optimize", usage_optimize, "-optimize", command_optimize, 1, 0, 1 },
 };
 
 int main(int argc, char **argv)
@@ -384,7 +383,7 @@ int main(int argc, char **argv)
   if (!rc && a.components && !c->components)
     rc = status_set(&st, STATUS_INPUT, "command line: --components: %s "
                     "checks no gradient", c->name);
-  if (!rc) rc = run_command(&a, c->suffix, c->run, &cm, &st);
+  if (!rc) rc = run_command(&a, c, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
   cholmod_finish(&cm);
   return rc;
