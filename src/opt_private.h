@@ -1,0 +1,43 @@
+#line 267 "paper/opt.nw"
+#ifndef CONTACTOPT_OPT_PRIVATE_H
+#define CONTACTOPT_OPT_PRIVATE_H
+#include "opt.h"
+#line 373 "paper/opt.nw"
+typedef struct {
+  Model *md;              /* the state at the last design evaluated */
+  const Design_set *B;
+  const Opt_options *o;
+  int n;                  /* N+1 */
+  double *X;              /* n: the last design evaluated */
+  double *G;              /* n: grad E there */
+  double E;               /* E there */
+  double noise;           /* the rounding of E there (below) */
+  int have;               /* X, G, E are valid */
+  int solves;             /* state solves so far */
+  double tau;             /* the step of pi, fixed at the start */
+  double start;           /* clock at the start */
+  Opt_monitor monitor;
+  void *data;
+  Opt_report *rep;
+  Status *st;
+  int failed;             /* a status to return after NLopt stops */
+  double last_E, last_noise; /* E and its rounding at the last accepted iterate */
+  double pg_best;         /* the smallest pi of the accepted iterates */
+  int idle;               /* accepted iterates in a row without measured progress */
+} Evaluator;
+enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
+#line 271 "paper/opt.nw"
+/* solve the state at X, then E and grad E, unless X was the last design */
+int opt_evaluate(Evaluator *ev, const double *X);
+/* report the accepted iterate at the evaluator's design; 1 if the
+   monitor asks to stop */
+int opt_report_iterate(Evaluator *ev, int iteration, double pg);
+/* the accepted iterates in a row without measured progress, after k */
+int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
+/* the stop_detail of a run stopped by OPT_FEW idle iterates */
+void opt_idle_detail(Evaluator *ev);
+/* the three methods: from X to the terminal check, X the final design */
+int opt_projgrad(Evaluator *ev, double *X);
+int opt_slsqp(Evaluator *ev, double *X);
+int opt_newton(Evaluator *ev, double *X);
+#endif

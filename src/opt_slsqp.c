@@ -1,0 +1,245 @@
+#line 299 "paper/opt.nw"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <nlopt.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include "opt_private.h"
+#line 678 "paper/opt.nw"
+typedef struct {
+  int n;                  /* N+1 */
+  double *X0;             /* n: the start */
+  double *R;              /* n x n, row-major: X = X0 + C0 R y */
+  double scale;           /* sigma: the objective is E / sigma */
+} Metric;
+#line 810 "paper/opt.nw"
+typedef struct {
+  Evaluator *ev;
+  nlopt_opt opt;
+  Metric metric;
+  double best;            /* the lowest E evaluated */
+  double best_noise;      /* the rounding of E there */
+  double *bestX;          /* n: where; the last accepted iterate */
+  int k;                  /* accepted iterates so far */
+  int stalled;            /* evaluations since the last accepted one */
+  int fresh;              /* iterates accepted since SLSQP (re)started */
+} Slsqp;
+enum { STALL = 10 };
+static const double OPT_IN_B = 1e-12;   /* a violation of B that is rounding */
+#line 687 "paper/opt.nw"
+/* X = X0 + C0 R y, unclipped: the design the constraints see */
+static void metric_design(const Metric *mt, double C0, const double *y,
+                          double *X)
+{
+  int n = mt->n;
+  for (int i = 0; i < n; i++) {
+    double s = 0;
+    for (int j = 0; j < n; j++) s += mt->R[(size_t) i * n + j] * y[j];
+    X[i] = mt->X0[i] + C0 * s;
+  }
+}
+#line 702 "paper/opt.nw"
+static void linear_constraints(unsigned m, double *c, unsigned n,
+                               const double *y, double *grad, void *data)
+{
+  const Slsqp *q = data;
+  const Design_set *B = q->ev->B;
+  const double *R = q->metric.R;
+  double X[n], d = B->delta / B->C0;
+  metric_design(&q->metric, B->C0, y, X);
+  
+#line 722 "paper/opt.nw"
+for (unsigned i = 0; i < n; i++) {
+  c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
+  c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
+}
+for (unsigned i = 0; i + 1 < n; i++) {
+  double rise = (X[i + 1] - X[i]) / B->C0;
+  c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
+  c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
+}
+#line 711 "paper/opt.nw"
+  if (grad)
+    for (unsigned j = 0; j < n; j++) {
+      
+#line 735 "paper/opt.nw"
+for (unsigned i = 0; i < n; i++) {
+  grad[2 * i * n + j] = -R[i * n + j];
+  grad[(2 * i + 1) * n + j] = R[i * n + j];
+}
+for (unsigned i = 0; i + 1 < n; i++) {
+  double rise = R[(i + 1) * n + j] - R[i * n + j];
+  grad[(2 * n + 2 * i) * n + j] = rise;
+  grad[(2 * n + 2 * i + 1) * n + j] = -rise;
+}
+#line 714 "paper/opt.nw"
+    }
+  (void) m;
+}
+#line 748 "paper/opt.nw"
+static double area_constraint(unsigned n, const double *y, double *grad,
+                              void *data)
+{
+  const Slsqp *q = data;
+  const Design_set *B = q->ev->B;
+  double L = B->h * B->N, X[n], sum = 0;
+  metric_design(&q->metric, B->C0, y, X);
+  for (unsigned i = 0; i < n; i++) sum += (i == 0 || i + 1 == n ? 0.5 : 1.0) * X[i];
+  if (grad)
+    for (unsigned j = 0; j < n; j++) {
+      double g = 0;
+      for (unsigned i = 0; i < n; i++)
+        g += (i == 0 || i + 1 == n ? 0.5 : 1.0) * q->metric.R[i * n + j];
+      grad[j] = g * B->h / L;
+    }
+  return (B->h * sum - B->area) / (B->C0 * L);
+}
+#line 827 "paper/opt.nw"
+static void slsqp_stop(Slsqp *q, const char *why)
+{
+  snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
+  nlopt_force_stop(q->opt);
+}
+#line 836 "paper/opt.nw"
+static void slsqp_accept(Slsqp *q);
+static double slsqp_objective(unsigned n, const double *y, double *grad,
+                              void *data)
+{
+  Slsqp *q = data;
+  Evaluator *ev = q->ev;
+  const double *R = q->metric.R;
+  double X[n], C0 = ev->B->C0;
+  metric_design(&q->metric, C0, y, X);
+  for (unsigned i = 0; i < n; i++) X[i] = fmin(fmax(X[i], 0), C0);
+  if ((ev->failed = opt_evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
+  if (grad)
+    
+#line 859 "paper/opt.nw"
+for (unsigned j = 0; j < n; j++) {
+  double g = 0;
+  for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
+  grad[j] = C0 * g / q->metric.scale;
+}
+#line 849 "paper/opt.nw"
+  if (ev->E <= q->best + q->best_noise + ev->noise
+      && design_violation(ev->B, X) <= OPT_IN_B
+      && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
+  else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
+  return ev->E / q->metric.scale;
+}
+#line 868 "paper/opt.nw"
+static void slsqp_accept(Slsqp *q)
+{
+  Evaluator *ev = q->ev;
+  double pg;
+  if (ev->E < q->best) q->best = ev->E, q->best_noise = ev->noise;
+  q->stalled = 0;
+  q->fresh += q->k > 0;
+  if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) {
+    nlopt_force_stop(q->opt);
+    return;
+  }
+  int stop = opt_report_iterate(ev, q->k, pg), idle = opt_idle_iterates(ev, q->k, pg, 0);
+  memcpy(q->bestX, ev->X, ev->n * sizeof *ev->X);
+  ev->rep->iterations = q->k;
+  ev->rep->pgnorm = pg;
+  if (pg <= ev->o->tol) slsqp_stop(q, "converged");
+  else if (stop) slsqp_stop(q, "interrupted");
+  else if (q->k >= ev->o->max_iter) slsqp_stop(q, "max_iter");
+  else if (idle >= OPT_FEW) slsqp_stop(q, "no_progress"), opt_idle_detail(ev);
+  q->k++;
+}
+#line 895 "paper/opt.nw"
+static int metric_setup(Evaluator *ev, Metric *mt)
+{
+  int n = ev->n, rc = STATUS_OK;
+  double C0 = ev->B->C0, Gmax = 0;
+  memset(mt->R, 0, (size_t) n * n * sizeof *mt->R);
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i]));
+  if (ev->o->metric == OPT_METRIC_EUCLIDEAN) {
+    for (int i = 0; i < n; i++) mt->R[(size_t) i * n + i] = 1;
+    mt->scale = C0 * (Gmax > 0 ? Gmax : 1.0);
+    return STATUS_OK;
+  }
+  double start = model_clock();
+  if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
+  
+#line 915 "paper/opt.nw"
+gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
+gsl_matrix *Linv = gsl_matrix_alloc(n, n);
+gsl_vector *g = gsl_vector_alloc(n);
+if (!Linv || !g) rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+else if (gsl_linalg_cholesky_decomp1(&S.matrix))
+  rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
+                  "is not positive definite");
+else {
+  for (int i = 0; i < n; i++) gsl_vector_set(g, i, ev->G[i]);
+  gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, &S.matrix, g);
+  double sigma = pow(gsl_blas_dnrm2(g), 2);
+  mt->scale = sigma > 0 ? sigma : 1.0;
+  gsl_matrix_set_identity(Linv);                    /* Linv = L^{-T} */
+  gsl_blas_dtrsm(CblasLeft, CblasLower, CblasTrans, CblasNonUnit, 1.0,
+                 &S.matrix, Linv);
+  double c = sqrt(mt->scale) / C0;
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) mt->R[(size_t) i * n + j] = c * gsl_matrix_get(Linv, i, j);
+}
+gsl_matrix_free(Linv);
+gsl_vector_free(g);
+#line 909 "paper/opt.nw"
+  ev->rep->metric_seconds += model_clock() - start;
+  return rc;
+}
+#line 945 "paper/opt.nw"
+int opt_slsqp(Evaluator *ev, double *X)
+{
+  int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
+  double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
+  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, 0, X, 0, 0, 0 };
+  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
+  double *y = q.metric.X0 + n, *tol = y + n, f;
+  for (int more = 1; more; ) {
+    memcpy(q.metric.X0, X, n * sizeof *X);
+    if ((rc = opt_evaluate(ev, X)) || (rc = metric_setup(ev, &q.metric))) break;
+    if (!(q.opt = nlopt_create(NLOPT_LD_SLSQP, n))) {
+      rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
+      break;
+    }
+    
+#line 968 "paper/opt.nw"
+for (int i = 0; i < m; i++) tol[i] = 1e-14;
+for (int i = 0; i < n; i++) y[i] = 0;
+nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
+if (r > 0) r = nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
+if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
+if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
+if (r > 0) r = nlopt_optimize(q.opt, y, &f);
+nlopt_destroy(q.opt);
+#line 985 "paper/opt.nw"
+if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
+  rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
+more = !rc && !ev->rep->stop_reason[0]
+       && r != NLOPT_MAXEVAL_REACHED && q.fresh > 0;
+if (!rc && !more && !ev->rep->stop_reason[0]) {
+  snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
+           r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
+  
+#line 1002 "paper/opt.nw"
+if (r != NLOPT_MAXEVAL_REACHED)
+  snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "SLSQP, %s, found no "
+           "new iterate: %s%s", ev->rep->iterations ? "restarted from its last iterate"
+           : "from the start", r == NLOPT_FORCED_STOP ? "its line search found no design "
+           "in B with a lower energy" : "NLopt ended it as ",
+           r == NLOPT_FORCED_STOP ? "" : nlopt_result_to_string(r));
+#line 993 "paper/opt.nw"
+}
+if (!rc) rc = opt_evaluate(ev, X);
+q.fresh = q.stalled = 0;
+(void) f;
+#line 961 "paper/opt.nw"
+  }
+  free(work);
+  return rc;
+}
