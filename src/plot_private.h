@@ -1,0 +1,44 @@
+#line 153 "paper/figures.nw"
+#ifndef CONTACTOPT_PLOT_PRIVATE_H
+#define CONTACTOPT_PLOT_PRIVATE_H
+#include <stdio.h>
+#include "plot.h"
+#include "scene.h"
+#line 223 "paper/figures.nw"
+typedef struct {
+  const Plot_args *args;
+  Scene s;                 /* DIR/effective.scene, alpha0 its first design */
+  int optimize;            /* DIR is optimize's (history.dat, initial/, final/) */
+  int projected;           /* its start was projected onto B */
+  int iterations;          /* its iterations */
+  char state[2][1100];     /* the folders of its states: initial, final */
+} Plot;
+#line 159 "paper/figures.nw"
+#define SLACK 1e-9    /* relative: what a round number may be off by */
+/* the lines that set up the page and the terminal of every script */
+extern const char plot_page_lines[], plot_terminal_lines[];
+/* v as gnuplot reads it back exactly; in a static buffer of 8 */
+const char *plot_num(double v);
+/* v with at most digits significant digits (all of them at 0) */
+const char *plot_real(double v, int digits);
+/* v as enhanced text in buf: -5.75e8 as −5.75·10^{8} */
+void plot_enhanced_number(double v, char *buf, size_t size);
+/* s in gnuplot's quotes; enhanced: its markup escaped */
+void plot_quote(FILE *f, const char *s, int enhanced);
+/* round numbers (1, 2 or 5 times a power of ten) below, above and near x */
+double plot_nice_down(double x);
+double plot_nice_up(double x);
+double plot_nice(double x);
+/* tick marks of axis from first by step to last, and some n tick marks
+   on [lo, hi] at a round step; format: with a fixed number of decimals */
+void plot_tics_at(FILE *f, const char *axis, double first, double step,
+                  double last, int format);
+void plot_tics(FILE *f, const char *axis, double lo, double hi, double n, int format);
+/* the head of a script: the figure, the run, and the variables of both */
+void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out);
+/* a panel's plot area, in centimetres on the page */
+void plot_place(FILE *f, const char *x, const char *w, const char *y, const char *h);
+/* the scripts of the two figures */
+void plot_body_figure(FILE *f, const Plot *pl, const char *out);
+void plot_results_figure(FILE *f, const Plot *pl, const char *out);
+#endif
