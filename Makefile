@@ -10,13 +10,13 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h, and those of the
 # optimiser, which share src/opt_private.h), and the program.
-MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design design_project newton opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
+MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design design_project newton newton_ip opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
-PRIVATE := pdas mprgp psor opt_projgrad opt_slsqp opt_newton plot_text plot_body plot_results design_project
+PRIVATE := pdas mprgp psor opt_projgrad opt_slsqp opt_newton plot_text plot_body plot_results design_project newton_ip
 TANGLED := $(filter-out $(PRIVATE:%=src/%.h),$(MODULES:%=src/%.h)) \
-           src/qp_private.h src/opt_private.h src/plot_private.h src/design_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
+           src/qp_private.h src/opt_private.h src/plot_private.h src/design_private.h src/newton_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)

@@ -4,34 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
-#include "newton.h"
+#include "newton_private.h"
 
-#line 166 "paper/newton.nw"
-struct Newton_workspace {
-  int n, m, p;         /* design nodes, contact unknowns, inequalities */
-  double *z, *s, *lam; /* n+m, p, p: the iterate, slacks, multipliers */
-  double mu;           /* the multiplier of the area equality */
-  double *q, *b;       /* n+m, p: the scaled linear term and bounds */
-  double *Hd;          /* n: the scaled R */
-  double *Hv;          /* m x m: the scaled S */
-  double *w;           /* n: the weights of the area equality */
-  double *W;           /* p: lambda / s */
-  double *Td, *Te;     /* n, n-1: T's pivots and L's subdiagonal */
-  double *c0;          /* n: T's grounding without the contact, T~ 1 */
-  double *Y;           /* n x m: T^-1 P', T^-1 at the contact columns */
-  gsl_matrix *Sig;     /* m x m: Sigma, then its Cholesky factor */
-  double *rd, *rp;     /* n+m, p: dual and primal residuals */
-  double *dz, *ds, *dl;     /* n+m, p, p: the step */
-  double *az, *as, *al;     /* n+m, p, p: the affine step */
-  double *rc;          /* p: the complementarity target of a step */
-  double *t1, *t2;     /* n+m each: scratch of the solves */
-  double *y2;          /* n+m: K^-1 (w, 0), for the area equality */
-  double *zf, *lf;     /* n+m, p: the point of the face and its multipliers */
-  double muf;          /* its multiplier of the area equality */
-  double *rdf, *rpf;   /* n+m, p: its residuals */
-  unsigned char *act, *tried; /* p: the face now indicated, the last tried */
-};
-#line 193 "paper/newton.nw"
+#line 232 "paper/newton.nw"
 Newton_workspace *newton_alloc(int n, int m, Status *st)
 {
   Newton_workspace *w = calloc(1, sizeof *w);
@@ -79,7 +54,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 247 "paper/newton.nw"
+#line 286 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double model_scale(const Newton_model *mdl)
 {
@@ -114,9 +89,9 @@ static void scale_model(Newton_workspace *w, const Newton_model *mdl, double phi
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 285 "paper/newton.nw"
+#line 324 "paper/newton.nw"
 /* out = A z (p values) */
-static void constraints_times(const Newton_workspace *w, const int *col,
+void newton_constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out)
 {
   int n = w->n, m = w->m, N = n - 1;
@@ -130,7 +105,7 @@ static void constraints_times(const Newton_workspace *w, const int *col,
 }
 
 /* out = A' y (n+m values) */
-static void constraints_transposed(const Newton_workspace *w, const int *col,
+void newton_constraints_transposed(const Newton_workspace *w, const int *col,
                                    const double *y, double *out)
 {
   int n = w->n, m = w->m, N = n - 1;
@@ -144,210 +119,7 @@ static void constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 378 "paper/newton.nw"
-/* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
-static void tridiagonal_solve(const Newton_workspace *w, double *x)
-{
-  int n = w->n;
-  for (int i = 1; i < n; i++) x[i] -= w->Te[i - 1] * x[i - 1];
-  for (int i = 0; i < n; i++) x[i] /= w->Td[i];
-  for (int i = n - 2; i >= 0; i--) x[i] -= w->Te[i] * x[i + 1];
-}
-
-/* T = L D L' from the grounding g of each node and the springs between
-   neighbours: D_i = g_i + w_i, g_{i+1} = c_{i+1} + w_i g_i / D_i */
-static void factor_tridiagonal(Newton_workspace *w, const int *col)
-{
-  int n = w->n, m = w->m, N = n - 1;
-  const double *W = w->W;
-  for (int i = 0; i < n; i++) w->c0[i] = w->Hd[i] + W[i] + W[n + i];
-  memcpy(w->Td, w->c0, n * sizeof *w->Td);  /* c: with the contact */
-  for (int c = 0; c < m; c++) w->Td[col[c]] += W[2 * n + 2 * N + c];
-  double g = w->Td[0];
-  for (int i = 0; i < N; i++) {
-    double ws = W[2 * n + i] + W[2 * n + N + i];
-    w->Td[i] = g + ws, w->Te[i] = -ws / w->Td[i];
-    g = w->Td[i + 1] + ws * (g / w->Td[i]);
-  }
-  w->Td[N] = g;
-}
-
-/* Y = T^-1 P' (n x m, row-major) by the substitutions of
-   tridiagonal_solve, a row of all m columns at a time */
-static void contact_columns(Newton_workspace *w, const int *col)
-{
-  int n = w->n, m = w->m;
-  double *Y = w->Y;
-  memset(Y, 0, (size_t) n * m * sizeof *Y);
-  for (int e = 0; e < m; e++) Y[(size_t) col[e] * m + e] = 1;
-  for (int k = 1, live = 0; k < n; k++) {  /* L: columns with i(e) < k */
-    double *y = Y + (size_t) k * m, l = w->Te[k - 1];
-    const double *above = y - m;
-    while (live < m && col[live] < k) live++;
-    for (int e = 0; e < live; e++) y[e] -= l * above[e];
-  }
-  for (int k = n - 1; k >= 0; k--) {       /* D, then L' from below */
-    double *y = Y + (size_t) k * m, d = w->Td[k];
-    for (int e = 0; e < m; e++) y[e] /= d;
-    if (k == n - 1) continue;
-    const double *below = y + m, l = w->Te[k];
-    for (int e = 0; e < m; e++) y[e] -= l * below[e];
-  }
-}
-
-/* Sigma's lower triangle: S^ + M, M's diagonal from its row sums */
-static void fill_sigma(Newton_workspace *w, const int *col, const double *r)
-{
-  int n = w->n, m = w->m;
-  const double *Wc = w->W + 2 * n + 2 * (n - 1);
-  for (int c = 0; c < m; c++) {
-    double *sig = gsl_matrix_ptr(w->Sig, c, 0), sum = 0;
-    const double *hv = w->Hv + (size_t) c * m, *y = w->Y + (size_t) col[c] * m;
-    for (int e = 0; e < m; e++) sum += e == c ? 0 : Wc[e] * y[e];
-    for (int e = 0; e < c; e++) sig[e] = hv[e] - Wc[c] * (Wc[e] * y[e]);
-    sig[c] = hv[c] + Wc[c] * (r[col[c]] + sum);
-  }
-}
-
-static int factor_newton_matrix(Newton_workspace *w, const int *col)
-{
-  int n = w->n, m = w->m;
-  double *r = w->t2;                       /* T^-1 c0 */
-  factor_tridiagonal(w, col);
-  if (m == 0) return 0;
-  contact_columns(w, col);
-  memcpy(r, w->c0, n * sizeof *r);
-  tridiagonal_solve(w, r);
-  fill_sigma(w, col, r);
-  gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
-  return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
-}
-#line 463 "paper/newton.nw"
-/* y = K^-1 r (n+m values); r and y may not alias */
-static void newton_matrix_solve(const Newton_workspace *w, const int *col,
-                                const double *r, double *y)
-{
-  int n = w->n, m = w->m;
-  const double *Wc = w->W + 2 * n + 2 * (n - 1);
-  memcpy(y, r, n * sizeof *y);
-  tridiagonal_solve(w, y);
-  if (m == 0) return;
-  gsl_vector_view yv = gsl_vector_view_array(y + n, m);
-  for (int c = 0; c < m; c++) y[n + c] = r[n + c] - Wc[c] * y[col[c]];
-  gsl_matrix_const_view Sv = gsl_matrix_const_submatrix(w->Sig, 0, 0, m, m);
-  gsl_linalg_cholesky_svx(&Sv.matrix, &yv.vector);
-  memcpy(y, r, n * sizeof *y);
-  for (int c = 0; c < m; c++) y[col[c]] -= Wc[c] * y[n + c];
-  tridiagonal_solve(w, y);
-}
-
-/* dz, dmu: K dz + (w,0) dmu = r, w' dz_d = -re */
-static void bordered_solve(Newton_workspace *w, const int *col, const double *r,
-                           double re, double *dz, double *dmu)
-{
-  double wy1 = 0, wy2 = 0;
-  newton_matrix_solve(w, col, r, dz);
-  for (int i = 0; i < w->n; i++) wy1 += w->w[i] * dz[i], wy2 += w->w[i] * w->y2[i];
-  *dmu = (wy1 + re) / wy2;
-  for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
-}
-#line 507 "paper/newton.nw"
-/* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
-static double step_to_boundary(const double *x, const double *dx, int k)
-{
-  double a = 1;
-  for (int j = 0; j < k; j++)
-    if (dx[j] < 0) a = fmin(a, -0.995 * x[j] / dx[j]);
-  return a;
-}
-
-/* dz, ds, dl, dmu for the complementarity target rc (p values) */
-static void direction(Newton_workspace *w, const int *col, const double *rc,
-                      double re, double *dz, double *ds, double *dl, double *dmu)
-{
-  int p = w->p, nm = w->n + w->m;
-  for (int j = 0; j < p; j++) ds[j] = (rc[j] + w->lam[j] * w->rp[j]) / w->s[j];
-  constraints_transposed(w, col, ds, w->t2);
-  for (int k = 0; k < nm; k++) w->t2[k] = -w->rd[k] - w->t2[k];
-  bordered_solve(w, col, w->t2, re, dz, dmu);
-  constraints_times(w, col, dz, ds);
-  for (int j = 0; j < p; j++) {
-    ds[j] = -w->rp[j] - ds[j];
-    dl[j] = (rc[j] - w->lam[j] * ds[j]) / w->s[j];
-  }
-}
-
-/* at (z, lam, s, mu): rd, rp = A z + s - b (s NULL: A z - b) and *re =
-   w'd; scale[0], scale[1] receive the largest term of rd's design and
-   contact rows (of S v, the sum of the magnitudes of its terms); returns
-   the complementarity s'lam/p (0 if s is NULL) */
-static double residuals(const Newton_workspace *w, const int *col, const double *z,
-                        const double *lam, const double *s, double mu, double *rd,
-                        double *rp, double *re, double scale[2])
-{
-  int n = w->n, m = w->m, p = w->p;
-  constraints_transposed(w, col, lam, rd);
-  scale[0] = scale[1] = 0;
-  for (int i = 0; i < n; i++) {
-    double hz = w->Hd[i] * z[i], mw = mu * w->w[i];
-    scale[0] = fmax(scale[0], fmax(fmax(fabs(rd[i]), fabs(hz)),
-                                   fmax(fabs(w->q[i]), fabs(mw))));
-    rd[i] += hz + w->q[i] + mw;
-  }
-  for (int c = 0; c < m; c++) {
-    double hv = 0, habs = 0;
-    for (int e = 0; e < m; e++) {
-      double t = w->Hv[(size_t) c * m + e] * z[n + e];
-      hv += t, habs += fabs(t);
-    }
-    scale[1] = fmax(scale[1], fmax(fmax(fabs(rd[n + c]), habs), fabs(w->q[n + c])));
-    rd[n + c] += hv + w->q[n + c];
-  }
-  constraints_times(w, col, z, rp);
-  double gap = 0;
-  for (int j = 0; j < p; j++) {
-    rp[j] += (s ? s[j] : 0) - w->b[j];
-    gap += s ? s[j] * lam[j] : 0;
-  }
-  *re = 0;
-  for (int i = 0; i < n; i++) *re += w->w[i] * z[i];
-  return gap / p;
-}
-
-/* factor K for the weights W and find y2 = K^-1 (w, 0); -1 if Sigma
-   is not positive definite */
-static int factor_with_area(Newton_workspace *w, const int *col)
-{
-  int nm = w->n + w->m;
-  if (factor_newton_matrix(w, col)) return -1;
-  memset(w->t1, 0, nm * sizeof *w->t1);
-  for (int i = 0; i < w->n; i++) w->t1[i] = w->w[i];
-  newton_matrix_solve(w, col, w->t1, w->y2);
-  return 0;
-}
-
-static int predictor_corrector(Newton_workspace *w, const int *col, double gap,
-                               double re)
-{
-  int p = w->p, nm = w->n + w->m;
-  double dmu, *rc = w->rc;
-  for (int j = 0; j < p; j++) w->W[j] = w->lam[j] / w->s[j];
-  if (factor_with_area(w, col)) return -1;
-  for (int j = 0; j < p; j++) rc[j] = -w->s[j] * w->lam[j];   /* affine */
-  direction(w, col, rc, re, w->az, w->as, w->al, &dmu);
-  double a = fmin(step_to_boundary(w->s, w->as, p), step_to_boundary(w->lam, w->al, p));
-  double gap_a = 0;
-  for (int j = 0; j < p; j++) gap_a += (w->s[j] + a * w->as[j]) * (w->lam[j] + a * w->al[j]);
-  double sigma = pow(gap_a / p / gap, 3);
-  for (int j = 0; j < p; j++) rc[j] = -w->s[j] * w->lam[j] + sigma * gap - w->as[j] * w->al[j];
-  direction(w, col, rc, re, w->dz, w->ds, w->dl, &dmu);
-  a = fmin(step_to_boundary(w->s, w->ds, p), step_to_boundary(w->lam, w->dl, p));
-  for (int k = 0; k < nm; k++) w->z[k] += a * w->dz[k];
-  for (int j = 0; j < p; j++) w->s[j] += a * w->ds[j], w->lam[j] += a * w->dl[j];
-  w->mu += a * dmu;
-  return 0;
-}
-#line 661 "paper/newton.nw"
+#line 700 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 
 /* how far a point is from the KKT conditions, each relative to its scale:
@@ -409,10 +181,10 @@ static void face_step(Newton_workspace *w, const int *col, double om, double re)
   int p = w->p, nm = w->n + w->m;
   double dmu, *dz = w->az, *adz = w->as, *t = w->ds;
   for (int j = 0; j < p; j++) t[j] = w->act[j] ? om * w->rpf[j] : 0;
-  constraints_transposed(w, col, t, w->t2);
+  newton_constraints_transposed(w, col, t, w->t2);
   for (int k = 0; k < nm; k++) w->t2[k] = -w->rdf[k] - w->t2[k];
-  bordered_solve(w, col, w->t2, re, dz, &dmu);
-  constraints_times(w, col, dz, adz);
+  newton_bordered_solve(w, col, w->t2, re, dz, &dmu);
+  newton_constraints_times(w, col, dz, adz);
   for (int k = 0; k < nm; k++) w->zf[k] += dz[k];
   for (int j = 0; j < p; j++)
     if (w->act[j]) w->lf[j] += om * (adz[j] + w->rpf[j]);
@@ -430,12 +202,12 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
   double best[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   for (int j = 0; j < p; j++)               /* off the face: a contact's proximal weight */
     w->W[j] = w->act[j] ? om : j >= 2 * w->n + 2 * (w->n - 1) ? 1e-14 * om : 0;
-  if (factor_with_area(w, col)) return -1;
+  if (newton_factor_with_area(w, col)) return -1;
   memcpy(w->zf, w->z, nm * sizeof *w->zf);
   for (int j = 0; j < p; j++) w->lf[j] = w->act[j] ? w->lam[j] : 0;
   w->muf = w->mu;
   for (int k = 0;; k++) {
-    residuals(w, col, w->zf, w->lf, NULL, w->muf, w->rdf, w->rpf, &re, sc);
+    newton_residuals(w, col, w->zf, w->lf, NULL, w->muf, w->rdf, w->rpf, &re, sc);
     measure(w, w->rdf, w->rpf, w->lf, NULL, w->act, re, sc, bmax, q);
     double e[3] = { q->dual, q->primal, q->area };
     int better = 0;
@@ -471,7 +243,7 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 844 "paper/newton.nw"
+#line 883 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
@@ -523,7 +295,7 @@ static void interior_start(Newton_workspace *w, const Newton_model *mdl)
   int n = w->n, m = w->m, p = w->p;
   memset(w->z, 0, n * sizeof *w->z);
   for (int c = 0; c < m; c++) w->z[n + c] = mdl->v0[c] / mdl->B->C0;
-  constraints_times(w, mdl->col, w->z, w->s);
+  newton_constraints_times(w, mdl->col, w->z, w->s);
   for (int j = 0; j < p; j++) w->s[j] = fmax(w->b[j] - w->s[j], 1), w->lam[j] = 1;
   w->mu = 0;
 }
@@ -543,11 +315,11 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   int found = 0, faces = 0, singular = 0;
   const char *why = "reached its iteration limit";
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
-    double gap = residuals(w, mdl->col, w->z, w->lam, w->s, w->mu, w->rd, w->rp, &re, scale);
+    double gap = newton_residuals(w, mdl->col, w->z, w->lam, w->s, w->mu, w->rd, w->rp, &re, scale);
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 946 "paper/newton.nw"
+#line 985 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -562,9 +334,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 919 "paper/newton.nw"
+#line 958 "paper/newton.nw"
     
-#line 936 "paper/newton.nw"
+#line 975 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -572,8 +344,8 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 920 "paper/newton.nw"
-    if (predictor_corrector(w, mdl->col, gap, re)) {
+#line 959 "paper/newton.nw"
+    if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
     }
@@ -581,7 +353,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 965 "paper/newton.nw"
+#line 1004 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -593,7 +365,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 928 "paper/newton.nw"
+#line 967 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v);
