@@ -1,4 +1,4 @@
-#line 278 "paper/pdas.nw"
+#line 300 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,9 +7,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 434 "paper/pdas.nw"
+#line 459 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 422 "paper/pdas.nw"
+#line 447 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
@@ -18,12 +18,12 @@ static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 442 "paper/pdas.nw"
+#line 467 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
-#line 447 "paper/pdas.nw"
+#line 472 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 
-#line 976 "paper/pdas.nw"
+#line 1005 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -36,7 +36,7 @@ static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 360 "paper/pdas.nw"
+#line 384 "paper/pdas.nw"
 static int analyse_contact_last(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -58,7 +58,7 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
   free(last), free(perm);
   if (!ok) return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 385 "paper/pdas.nw"
+#line 409 "paper/pdas.nw"
 if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
@@ -68,20 +68,22 @@ for (int t = 0; t < w->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 381 "paper/pdas.nw"
+#line 405 "paper/pdas.nw"
 }
 
-#line 319 "paper/pdas.nw"
+#line 341 "paper/pdas.nw"
 /* the guide's vectors, nc each; nonzero when out of memory */
 static int alloc_guide(Pdas_guide *ip, size_t nc)
 {
   ip->s = malloc(nc * sizeof *ip->s), ip->t = malloc(nc * sizeof *ip->t);
   ip->ds = malloc(nc * sizeof *ip->ds), ip->dt = malloc(nc * sizeof *ip->dt);
   ip->as = malloc(nc * sizeof *ip->as), ip->at = malloc(nc * sizeof *ip->at);
+  ip->b = malloc(nc * sizeof *ip->b), ip->db = malloc(nc * sizeof *ip->db);
+  ip->ab = malloc(nc * sizeof *ip->ab);
   ip->h = malloc(nc * sizeof *ip->h);
   ip->pred = malloc(nc), ip->own = malloc(nc);
   return !ip->s || !ip->t || !ip->ds || !ip->dt || !ip->as || !ip->at
-         || !ip->h || !ip->pred || !ip->own;
+         || !ip->b || !ip->db || !ip->ab || !ip->h || !ip->pred || !ip->own;
 }
 
 int pdas_alloc(Qp_workspace *w, Status *st)
@@ -107,7 +109,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 397 "paper/pdas.nw"
+#line 421 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -115,13 +117,14 @@ void pdas_free(Qp_workspace *w)
   free(pd->f), free(pd->y), free(pd->r), free(pd->Lcc), free(pd->S), free(pd->M);
   free(pd->ip.s), free(pd->ip.t), free(pd->ip.ds), free(pd->ip.dt);
   free(pd->ip.as), free(pd->ip.at), free(pd->ip.h), free(pd->ip.pred), free(pd->ip.own);
+  free(pd->ip.b), free(pd->ip.db), free(pd->ip.ab);
   cholmod_free_factor(&pd->Ls, w->cm), cholmod_free_factor(&pd->L, w->cm);
   cholmod_free_dense(&pd->rhs, w->cm), cholmod_free_dense(&pd->sol, w->cm);
   cholmod_free_dense(&pd->Lb, w->cm);
   cholmod_free_dense(&pd->Y, w->cm), cholmod_free_dense(&pd->E, w->cm);
 }
 
-#line 293 "paper/pdas.nw"
+#line 315 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -139,7 +142,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 551 "paper/pdas.nw"
+#line 577 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -153,7 +156,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 571 "paper/pdas.nw"
+#line 597 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -164,7 +167,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 591 "paper/pdas.nw"
+#line 617 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -173,7 +176,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 581 "paper/pdas.nw"
+#line 607 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -182,7 +185,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 604 "paper/pdas.nw"
+#line 630 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -199,7 +202,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 624 "paper/pdas.nw"
+#line 650 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -220,7 +223,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 527 "paper/pdas.nw"
+#line 553 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -243,7 +246,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 663 "paper/pdas.nw"
+#line 689 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -251,7 +254,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 686 "paper/pdas.nw"
+#line 712 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -263,7 +266,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 670 "paper/pdas.nw"
+#line 696 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -274,7 +277,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 765 "paper/pdas.nw"
+#line 794 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -293,7 +296,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 787 "paper/pdas.nw"
+#line 816 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -313,7 +316,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 746 "paper/pdas.nw"
+#line 775 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -329,7 +332,7 @@ static int hold_stopping(Qp_workspace *w)
   return held > 0;
 }
 
-#line 824 "paper/pdas.nw"
+#line 853 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -341,13 +344,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 838 "paper/pdas.nw"
+#line 867 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 850 "paper/pdas.nw"
+#line 879 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -361,13 +364,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 843 "paper/pdas.nw"
+#line 872 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 872 "paper/pdas.nw"
+#line 901 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -409,7 +412,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 933 "paper/pdas.nw"
+#line 962 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -428,7 +431,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 958 "paper/pdas.nw"
+#line 987 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -444,9 +447,15 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 998 "paper/pdas.nw"
-/* s, t from (y, T) shifted inside by 1.5 times the largest violation,
-   as forces; 0 when there is none (or a value is not finite) */
+#line 1027 "paper/pdas.nw"
+/* c has an interval of positive width for its force: a slip bound */
+static int slips(const Qp_workspace *w, int c)
+{
+  return c >= w->nc && w->fhi[c] > w->flo[c];
+}
+
+/* s, t (and b) from (y, T) shifted inside by 1.5 times the largest
+   violation, as forces; 0 when there is none (or a value is not finite) */
 static int guide_start(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -455,49 +464,127 @@ static int guide_start(Qp_workspace *w)
   double worst = 0;
   for (int c = 0; c < nk; c++) {
     double gap = w->d[w->ik[c]] * (pd->y[c] - w->pos[c]);   /* as a force */
-    worst = fmax(worst, fmax(-gap, -w->T[c]));
+    worst = c < w->nc ? fmax(worst, fmax(-gap, -w->T[c]))
+          : fmax(worst, fmax(w->T[c] - w->fhi[c], w->flo[c] - w->T[c]));
   }
   double delta = 1.5 * worst;
   if (!(delta > 0 && isfinite(delta))) return 0;
   for (int c = 0; c < nk; c++) {
     const double *Sc = pd->S + (size_t) c * nk;
-    double h = -pd->f[c];
+    double h = -pd->f[c], slide = pd->y[c] - w->pos[c];
     for (int e = 0; e < nk; e++) h += Sc[e] * w->pos[e];
-    ip->h[c] = h;
-    ip->s[c] = (pd->y[c] - w->pos[c]) + delta / w->d[w->ik[c]];
-    ip->t[c] = w->T[c] + delta;
-    if (!(ip->s[c] > 0 && ip->t[c] > 0)) return 0;
+    ip->h[c] = h, ip->b[c] = 0;
+    if (c < w->nc) {
+      ip->s[c] = slide + delta / w->d[w->ik[c]];
+      ip->t[c] = w->T[c] + delta;
+      if (!(ip->s[c] > 0 && ip->t[c] > 0)) return 0;
+    } else if (!slips(w, c)) {
+      ip->s[c] = slide, ip->t[c] = w->flo[c];
+    } else {
+      
+#line 1075 "paper/pdas.nw"
+double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
+ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
+ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
+ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
+if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
+#line 1061 "paper/pdas.nw"
+    }
   }
   memcpy(ip->pred, pd->act, (size_t) nk);   /* its first prediction */
   ip->state = GUIDE_ON;
   return 1;
 }
 
-#line 1043 "paper/pdas.nw"
-/* the largest alpha in (0, 1] with v + alpha dv >= 0 */
-static double step_to_bound(const double *v, const double *dv, int n)
+#line 1121 "paper/pdas.nw"
+/* e_s and e_b of a slipping unknown c, and its u, v and D */
+static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
+                      const double *ct, const double *cb, double *es,
+                      double *eb, double *u, double *v, double *D)
 {
+  const Pdas_guide *ip = &w->pdas.ip;
+  *u = ip->t[c] - w->flo[c], *v = w->fhi[c] - ip->t[c];
+  *es = sm - ip->s[c] * *u - (cs ? cs[c] * ct[c] : 0);
+  *eb = sm - ip->b[c] * *v + (cs ? cb[c] * ct[c] : 0);
+  *D = 1 / (ip->s[c] / *u + ip->b[c] / *v);
+}
+
+/* the largest alpha in (0, 1] that keeps the gaps and slides (primal)
+   or the forces' distances to their ends (dual) >= 0 along the step */
+static double guide_to_bound(const Qp_workspace *w, const double *ds,
+                             const double *dt, const double *db, int dual)
+{
+  const Pdas_guide *ip = &w->pdas.ip;
   double a = 1;
-  for (int c = 0; c < n; c++) if (dv[c] < 0) a = fmin(a, -v[c] / dv[c]);
+  for (int c = 0; c < w->nk; c++) {
+    if (c >= w->nc && !slips(w, c)) continue;
+    if (!dual) {
+      if (ds[c] < 0) a = fmin(a, -ip->s[c] / ds[c]);
+      if (c >= w->nc && db[c] < 0) a = fmin(a, -ip->b[c] / db[c]);
+    } else if (c < w->nc) {
+      if (dt[c] < 0) a = fmin(a, -ip->t[c] / dt[c]);
+    } else {
+      if (dt[c] < 0) a = fmin(a, -(ip->t[c] - w->flo[c]) / dt[c]);
+      if (dt[c] > 0) a = fmin(a, (w->fhi[c] - ip->t[c]) / dt[c]);
+    }
+  }
   return a;
 }
 
-/* ds = (S + D)^-1 (-r - t + (sigma mu - c)/s), dt from it; M holds the
-   factor of S + D; c = cs .* ct, or 0 when cs is NULL */
+/* ds = (S + D)^-1 (-r + D E), dt and db from it; M holds the factor of
+   S + D; the corrections from (cs, ct, cb), or 0 when cs is NULL */
 static void guide_direction(Qp_workspace *w, double sm, const double *cs,
-                            const double *ct, double *ds, double *dt)
+                            const double *ct, const double *cb, double *ds,
+                            double *dt, double *db)
 {
   Pdas_guide *ip = &w->pdas.ip;
   int nk = w->nk;
+  double es, eb, u, v, D;
   for (int c = 0; c < nk; c++) {
-    double e = (sm - (cs ? cs[c] * ct[c] : 0)) / ip->s[c];
-    ds[c] = -w->pdas.r[c] - ip->t[c] + e, dt[c] = e;
+    if (c < w->nc) {
+      double e = (sm - (cs ? cs[c] * ct[c] : 0)) / ip->s[c];
+      ds[c] = -w->pdas.r[c] - ip->t[c] + e, dt[c] = e;
+    } else if (!slips(w, c)) ds[c] = -w->pdas.r[c], dt[c] = 0;
+    else {
+      slip_pair(w, c, sm, cs, ct, cb, &es, &eb, &u, &v, &D);
+      dt[c] = es / u - eb / v;                     /* E, for now */
+      ds[c] = -w->pdas.r[c] + D * dt[c];
+    }
   }
   gsl_matrix_view M = gsl_matrix_view_array(w->pdas.M, nk, nk);
-  gsl_vector_view v = gsl_vector_view_array(ds, nk);
-  gsl_linalg_cholesky_svx(&M.matrix, &v.vector);
-  for (int c = 0; c < nk; c++)
-    dt[c] += -ip->t[c] - ip->t[c] / ip->s[c] * ds[c];
+  gsl_vector_view x = gsl_vector_view_array(ds, nk);
+  gsl_linalg_cholesky_svx(&M.matrix, &x.vector);
+  for (int c = 0; c < nk; c++) {
+    db[c] = 0;
+    if (c < w->nc) dt[c] += -ip->t[c] - ip->t[c] / ip->s[c] * ds[c];
+    else if (slips(w, c)) {
+      slip_pair(w, c, sm, cs, ct, cb, &es, &eb, &u, &v, &D);
+      dt[c] = D * (dt[c] - ds[c]);
+      ds[c] = (es - ip->s[c] * dt[c]) / u, db[c] = (eb + ip->b[c] * dt[c]) / v;
+    }
+  }
+}
+
+/* the sum of the complementarity products at (s, t, b) + alpha (ds, dt, db)
+   (alpha_p for the slides, alpha_d for the forces; at (s, t, b) when ds
+   is NULL), and their number */
+static double guide_products(const Qp_workspace *w, double ap, double ad,
+                             const double *ds, const double *dt,
+                             const double *db, int *pairs)
+{
+  const Pdas_guide *ip = &w->pdas.ip;
+  double sum = 0;
+  *pairs = 0;
+  for (int c = 0; c < w->nk; c++) {
+    double s = ds ? ip->s[c] + ap * ds[c] : ip->s[c];
+    double t = ds ? ip->t[c] + ad * dt[c] : ip->t[c];
+    double b = ds ? ip->b[c] + ap * db[c] : ip->b[c];
+    if (c < w->nc) sum += s * t, ++*pairs;
+    else if (slips(w, c))
+      sum += s * (t - w->flo[c]) + b * (w->fhi[c] - t),
+      *pairs += 2;
+  }
+  return sum;
 }
 
 /* one step; nonzero when the factorisation fails or the new point is not
@@ -506,46 +593,56 @@ static int guide_step(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Pdas_guide *ip = &pd->ip;
-  int nk = w->nk;
-  double mu = 0, mua = 0;
+  int nk = w->nk, pairs;
+  double es, eb, u, v, D;
   for (int c = 0; c < nk; c++) {
     const double *Sc = pd->S + (size_t) c * nk;
     double r = ip->h[c] - ip->t[c];
-    for (int e = 0; e < nk; e++) r += Sc[e] * ip->s[e];
-    pd->r[c] = r, mu += ip->s[c] * ip->t[c];
+    for (int e = 0; e < nk; e++) r += Sc[e] * (ip->s[e] - ip->b[e]);
+    pd->r[c] = r;
     memcpy(pd->M + (size_t) c * nk, Sc, (size_t) nk * sizeof *pd->M);
-    pd->M[(size_t) c * nk + c] += ip->t[c] / ip->s[c];
+    if (c < w->nc) pd->M[(size_t) c * nk + c] += ip->t[c] / ip->s[c];
+    else if (slips(w, c)) {
+      slip_pair(w, c, 0, NULL, NULL, NULL, &es, &eb, &u, &v, &D);
+      pd->M[(size_t) c * nk + c] += D;
+    }
   }
-  mu /= nk;
+  double mu = guide_products(w, 0, 0, NULL, NULL, NULL, &pairs) / pairs;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, nk, nk);
   if (gsl_linalg_cholesky_decomp1(&M.matrix)) return 1;
-  guide_direction(w, 0, NULL, NULL, ip->as, ip->at);
-  double ap = step_to_bound(ip->s, ip->as, nk), ad = step_to_bound(ip->t, ip->at, nk);
-  for (int c = 0; c < nk; c++) mua += (ip->s[c] + ap * ip->as[c]) * (ip->t[c] + ad * ip->at[c]);
-  double sigma = pow(mua / nk / mu, 3);
-  guide_direction(w, sigma * mu, ip->as, ip->at, ip->ds, ip->dt);
-  double a = fmin(1, 0.995 * fmin(step_to_bound(ip->s, ip->ds, nk),
-                                  step_to_bound(ip->t, ip->dt, nk)));
+  guide_direction(w, 0, NULL, NULL, NULL, ip->as, ip->at, ip->ab);
+  double ap = guide_to_bound(w, ip->as, ip->at, ip->ab, 0);
+  double ad = guide_to_bound(w, ip->as, ip->at, ip->ab, 1);
+  double mua = guide_products(w, ap, ad, ip->as, ip->at, ip->ab, &pairs);
+  double sigma = pow(mua / pairs / mu, 3);
+  guide_direction(w, sigma * mu, ip->as, ip->at, ip->ab, ip->ds, ip->dt, ip->db);
+  double a = fmin(1, 0.995 * fmin(guide_to_bound(w, ip->ds, ip->dt, ip->db, 0),
+                                  guide_to_bound(w, ip->ds, ip->dt, ip->db, 1)));
   int inside = 1;
   for (int c = 0; c < nk; c++) {
-    ip->s[c] += a * ip->ds[c], ip->t[c] += a * ip->dt[c];
-    inside &= ip->s[c] > 0 && ip->t[c] > 0 && isfinite(ip->s[c] + ip->t[c]);
+    ip->s[c] += a * ip->ds[c], ip->t[c] += a * ip->dt[c], ip->b[c] += a * ip->db[c];
+    inside &= isfinite(ip->s[c] + ip->t[c] + ip->b[c]);
+    if (c < w->nc) inside &= ip->s[c] > 0 && ip->t[c] > 0;
+    else if (slips(w, c))
+      inside &= ip->s[c] > 0 && ip->b[c] > 0 && ip->t[c] > w->flo[c] && ip->t[c] < w->fhi[c];
   }
   return !inside;
 }
 
-#line 1108 "paper/pdas.nw"
+#line 1261 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Pdas_guide *ip = &pd->ip;
   int nk = w->nk, changed = 0;
   ip->guided = 0;
-  if (nk > w->nc || ip->state == GUIDE_STOPPED) return;
+  if (ip->state == GUIDE_STOPPED) return;
   if (ip->state == GUIDE_OFF && !guide_start(w)) return;
   if (guide_step(w)) { ip->state = GUIDE_STOPPED; return; }
   for (int c = 0; c < nk; c++) {
-    char a = ip->t[c] > w->d[w->ik[c]] * ip->s[c] ? HELD : FORCE_LO;
+    double z = ip->t[c] - w->d[w->ik[c]] * (ip->s[c] - ip->b[c]);
+    char a = c < w->nc ? (ip->t[c] > w->d[w->ik[c]] * ip->s[c] ? HELD : FORCE_LO)
+           : !slips(w, c) || z <= w->flo[c] ? FORCE_LO : z > w->fhi[c] ? FORCE_HI : HELD;
     changed |= a != ip->pred[c];
     ip->pred[c] = a;
   }
@@ -555,20 +652,21 @@ static void guide(Qp_workspace *w)
   ip->guided = 1;
 }
 
-#line 451 "paper/pdas.nw"
+#line 476 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 478 "paper/pdas.nw"
+#line 504 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 457 "paper/pdas.nw"
+#line 482 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
+  if (w->qp->slides && pd->ip.guided) hold_stopping(w);
   if ((code = newton_solve(w)) == SINGULAR && pd->ip.guided) {
     memcpy(pd->act, pd->ip.own, (size_t) w->nk);  /* the guide's set: retake */
     pd->ip.guided = 0;
@@ -583,7 +681,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 494 "paper/pdas.nw"
+#line 520 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -592,10 +690,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 474 "paper/pdas.nw"
+#line 500 "paper/pdas.nw"
 }
 
-#line 1136 "paper/pdas.nw"
+#line 1291 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -612,7 +710,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 1155 "paper/pdas.nw"
+#line 1310 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -620,7 +718,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 1174 "paper/pdas.nw"
+#line 1329 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -632,7 +730,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 1192 "paper/pdas.nw"
+#line 1347 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -655,11 +753,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 1185 "paper/pdas.nw"
+#line 1340 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 1225 "paper/pdas.nw"
+#line 1380 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

@@ -9,9 +9,13 @@
 
 #line 248 "paper/qp.nw"
 typedef struct {
-  double *s, *t;         /* nk: its gaps y - lo and forces, both > 0 */
-  double *ds, *dt;       /* nk: its step */
-  double *as, *at;       /* nk: its affine (predictor) step */
+  double *s, *t;         /* nk: its gaps y - lo and forces, both > 0;
+                            with friction, the slide y - pos = s - b and
+                            the force inside (flo, fhi) */
+  double *b;             /* nk: with friction, the slide the other way, > 0
+                            (0 on a bounded unknown) */
+  double *ds, *dt, *db;  /* nk: its step */
+  double *as, *at, *ab;  /* nk: its affine (predictor) step */
   double *h;             /* nk: S lo - f, the forces with every unknown
                             at its bound */
   char *pred;            /* nk: the active set it predicted last */
@@ -51,7 +55,7 @@ typedef struct {
   Pdas_guide ip;         /* the interior point that guides the steps */
 } Pdas_workspace;
 
-#line 296 "paper/qp.nw"
+#line 300 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -90,7 +94,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 541 "paper/qp.nw"
+#line 545 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -149,7 +153,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 693 "paper/qp.nw"
+#line 697 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -162,7 +166,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 713 "paper/qp.nw"
+#line 717 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -178,7 +182,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 312 "paper/qp.nw"
+#line 316 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -193,7 +197,7 @@ int qp_count_active(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 335 "paper/qp.nw"
+#line 339 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);

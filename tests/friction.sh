@@ -151,6 +151,57 @@ check "held by friction: optimize newton converges ($(value iterations $TMP/held
   test "$(value stop_reason $TMP/held-newton)" = converged
 check "held by friction: slsqp's E* agrees with the Newton method's to 1e-9" \
   near_ref "$(value energy $TMP/held-newton)" "$(value energy $TMP/held-slsqp)" 1e-9
+# tresca_kkt FILE G: the Tresca conditions at slip bound G, read from
+# contact.dat alone (omega from the columns x1 and alpha, as omega() does):
+# prints the largest violation of T >= 0, gap >= 0, min(|T|, |gap|) = 0,
+# |Tt| <= G omega (relative to G omega) and G omega |u1| + Tt u1 = 0 (stick
+# where |Tt| < G omega, slide against Tt), each force relative to max T and
+# each displacement to max |u|, as in the solver's residual; then sum T and
+# sum Tt
+tresca_kkt() { awk -v g="$2" '
+  function abs(v) { return v < 0 ? -v : v }
+  function max(p, q) { return p > q ? p : q }
+  function min(p, q) { return p < q ? p : q }
+  function len(i) { return sqrt((x[i + 1] - x[i])^2 + (a[i + 1] - a[i])^2) }
+  NR > 1 && !/^#/ { n++; x[n] = $1; a[n] = $2; gap[n] = $4; T[n] = $5; u[n] = $7; t[n] = $8
+    Tm = max(Tm, T[n]); um = max(um, max(abs($3), abs($7))) }
+  END { for (i = 1; i <= n; i++) {
+      s = g * ((i > 1 ? len(i - 1) : 0) + (i < n ? len(i) : 0)) / 2
+      v = max(v, max(-T[i] / Tm, -gap[i] / um))
+      v = max(v, min(abs(T[i]) / Tm, abs(gap[i]) / um))
+      v = max(v, abs(t[i]) / s - 1)
+      v = max(v, (s * abs(u[i]) + t[i] * u[i]) / (Tm * um))
+      sn += T[i]; st += t[i] }
+    printf "%.3g %.17g %.17g\n", v, sn, st }' "$1"; }
+# N = 16 to 256 and g = 6e6 to 1e9 Pa (capacity 2.4e7 to 4e9 N/m against
+# the load of 2e7): every solve converges and carries the loads, sum T =
+# 1.15e9 and sum Tt = -2e7 N/m, to 1e-9. The default tolerance (1e-10, in
+# the norms of the whole state) lets a node at its threshold slide the
+# wrong way by up to 1.8e-8 m at N = 256, 3e-8 of the largest force times
+# displacement; so Tresca's conditions are checked, to 1e-8, on the same
+# solve at a tolerance of 1e-14, which only the exact set meets
+bad= worst=0 most=0
+for N in 16 32 64 128 256; do
+  for g in 6e6 1e7 2e7 5e7 1e8 5e8 1e9; do
+    d=$TMP/held-$N-$g
+    if $BIN solve $tr -o $d $held -s contact.g=$g -s design.N=$N >/dev/null 2>$TMP/err; then
+      set -- $(tresca_kkt $d/contact.dat $g)
+      holds 'abs(n - 1.15e9) <= 1.15 && abs(t + 2e7) <= 2e-2' n=$2 t=$3 \
+        || bad="$bad N=$N,g=$g(sums $2 $3)"
+      most=$(calc 'max(a, b)' a=$most b="$(value iterations $d)")
+    else bad="$bad N=$N,g=$g(exit $?)"; fi
+    if $BIN solve $tr -o $d-exact $held -s contact.g=$g -s design.N=$N -s solver.tol=1e-14 \
+         >/dev/null 2>$TMP/err; then
+      set -- $(tresca_kkt $d-exact/contact.dat $g)
+      le "$1" 1e-8 || bad="$bad N=$N,g=$g(conditions $1)"
+      worst=$(calc 'max(a, b)' a=$worst b=$1)
+      most=$(calc 'max(a, b)' a=$most b="$(value iterations $d-exact)")
+    else bad="$bad N=$N,g=$g(tol 1e-14: exit $?)"; fi
+    rm -rf $d $d-exact
+  done
+done
+check "held by friction, N = 16..256, g = 6e6..1e9 Pa (35 solves): each converges, sum T and sum Tt carry the loads to 1e-9, Tresca's conditions at tol 1e-14 to $(show %.1e $worst) <= 1e-8, at most $(show %d $most) pdas steps${bad:+; failed:$bad}" \
+  test -z "$bad"
 co_held="$held -s contact.model=coulomb -s contact.g= -s contact.friction=0.2"
 if $BIN solve $tr -o $TMP/held-co $co_held >/dev/null 2>$TMP/err; then
   omega $TMP/held-co/contact.dat > $TMP/held-co.rows

@@ -16,15 +16,10 @@ prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
   /^@( |$)/ { code = 0; sub(/^@ ?/, "") }
   !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
 
-# friction.nw and pdas.nw are excluded while they still narrate history
-# (another change is rewriting them; see its report): remove them from
-# this list once they pass.
-skip=" paper/friction.nw paper/pdas.nw "
 
 # the hand-written LaTeX of the paper (paper/performance.tex), not the
 # tables the bench scripts write (paper/bench-*.tex)
 for f in paper/*.nw paper/performance.tex README.md; do
-  case "$skip" in *" $f "*) continue ;; esac
   case $f in
     *.nw) prose "$f" ;;
     *.tex) grep -v '^%' "$f" | awk -v F="$f" '{ print F ":" FNR ":" $0 }' ;;
