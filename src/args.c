@@ -1,4 +1,4 @@
-#line 214 "paper/main.nw"
+#line 215 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

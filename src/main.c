@@ -1,4 +1,4 @@
-#line 20 "paper/main.nw"
+#line 21 "paper/main.nw"
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
@@ -14,7 +14,7 @@
 #include "args.h"
 #include "threads.h"
 #include "plot.h"
-#line 267 "paper/main.nw"
+#line 268 "paper/main.nw"
 /* st's message = "path: message", unless it begins with the path already */
 static void name_the_scene(Status *st, const char *path)
 {
@@ -25,7 +25,7 @@ static void name_the_scene(Status *st, const char *path)
   if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
     strcpy(st->msg + sizeof st->msg - 4, "...");
 }
-#line 285 "paper/main.nw"
+#line 286 "paper/main.nw"
 /* *v = the number at *p, digits only; *p moves past it */
 static int component_number(const char **p, long *v)
 {
@@ -70,7 +70,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 332 "paper/main.nw"
+#line 333 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -114,7 +114,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 399 "paper/main.nw"
+#line 400 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -125,7 +125,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 418 "paper/main.nw"
+#line 419 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -160,7 +160,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 455 "paper/main.nw"
+#line 456 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -175,7 +175,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 487 "paper/main.nw"
+#line 488 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -198,7 +198,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 513 "paper/main.nw"
+#line 514 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -217,7 +217,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 541 "paper/main.nw"
+#line 542 "paper/main.nw"
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -239,7 +239,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 709 "paper/main.nw"
+#line 710 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -249,7 +249,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 725 "paper/main.nw"
+#line 726 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -262,7 +262,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 746 "paper/main.nw"
+#line 747 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -310,7 +310,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 803 "paper/main.nw"
+#line 804 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -329,7 +329,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 833 "paper/main.nw"
+#line 834 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -345,7 +345,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 861 "paper/main.nw"
+#line 862 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

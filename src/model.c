@@ -1,4 +1,5 @@
 #line 147 "paper/model.nw"
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,7 +8,7 @@
 #include <sys/resource.h>
 #include "model.h"
 
-#line 159 "paper/model.nw"
+#line 160 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -22,7 +23,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 179 "paper/model.nw"
+#line 180 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -35,19 +36,19 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 173 "paper/model.nw"
+#line 174 "paper/model.nw"
   
-#line 194 "paper/model.nw"
+#line 195 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 174 "paper/model.nw"
+#line 175 "paper/model.nw"
   return md;
 }
-#line 210 "paper/model.nw"
+#line 211 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -55,7 +56,7 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-#line 247 "paper/model.nw"
+#line 248 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
@@ -63,7 +64,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 323 "paper/model.nw"
+#line 324 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -72,7 +73,7 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 301 "paper/model.nw"
+#line 302 "paper/model.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
@@ -91,7 +92,7 @@ static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
     md->fixed_point_iterations, md->fixed_point_residual,
     md->fixed_point_tol, md->problem->friction);
 }
-#line 268 "paper/model.nw"
+#line 269 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   const Problem *p = md->problem;
@@ -121,7 +122,7 @@ static int model_coulomb(Model *md, Status *st)
     rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 223 "paper/model.nw"
+#line 224 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -144,13 +145,13 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 345 "paper/model.nw"
+#line 346 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 353 "paper/model.nw"
+#line 354 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -165,7 +166,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 369 "paper/model.nw"
+#line 370 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -176,18 +177,33 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 463 "paper/model.nw"
+#line 464 "paper/model.nw"
+/* the unknowns of the mesh, and the entries of the sparse factor of K */
+static double model_unknowns(const Problem *p)
+{
+  return 2 * (p->N + 1.0) * (p->M + p->R + 1.0);
+}
+
+static double model_factor_entries(const Problem *p)
+{
+  double n = model_unknowns(p);
+  return 5.1 * n * log2(n > 2 ? n : 2);
+}
+
 double model_memory(const Problem *p)
 {
-  double nodes = (p->N + 1.0) * (p->M + p->R + 1.0), n = 2 * nodes;
+  double n = model_unknowns(p);
   double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
-  double factor = 5.1 * n * log2(n > 2 ? n : 2);
-  return 3 * 8 * nk * nk + 12 * factor + 400 * n;
+  return 3 * 8 * nk * nk + 12 * model_factor_entries(p) + 400 * n;
 }
-#line 474 "paper/model.nw"
+#line 496 "paper/model.nw"
 int model_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
-  double need = model_memory(p) + extra;
+  double need = model_memory(p) + extra, entries = model_factor_entries(p);
+  if (entries > INT_MAX)
+    return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs a "
+                      "factor of about %.3g entries, more than CHOLMOD's 32-bit "
+                      "integers index (%d)", origin, p->N, p->M + p->R, entries, INT_MAX);
   double have = (double) sysconf(_SC_PHYS_PAGES) * (double) sysconf(_SC_PAGESIZE);
   struct rlimit lim;
   if (!getrlimit(RLIMIT_AS, &lim) && lim.rlim_cur != RLIM_INFINITY)
@@ -197,14 +213,14 @@ int model_fits(const Problem *p, double extra, const char *origin, Status *st)
                     "about %.3g GB, more than the %.3g GB this process may use",
                     origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
 }
-#line 438 "paper/model.nw"
+#line 439 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 406 "paper/model.nw"
+#line 407 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -217,13 +233,13 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 425 "paper/model.nw"
+#line 426 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 418 "paper/model.nw"
+#line 419 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }

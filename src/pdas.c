@@ -7,23 +7,26 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 
-#line 459 "paper/pdas.nw"
+#line 465 "paper/pdas.nw"
 #define SINGULAR (-1)    /* K or a Newton matrix is singular (not a Status_code) */
-#line 447 "paper/pdas.nw"
+#line 448 "paper/pdas.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int pdas_cholmod_failed(const cholmod_common *cm, const char *what,
                                Status *st)
 {
   if (cm->status == CHOLMOD_OUT_OF_MEMORY)
     return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
+  if (cm->status == CHOLMOD_TOO_LARGE)
+    return status_set(st, STATUS_MEMORY, "%s: the problem is too large for "
+                      "CHOLMOD's 32-bit integers", what);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-#line 467 "paper/pdas.nw"
+#line 473 "paper/pdas.nw"
 enum { FORCE_LO = 0, HELD = 1, FORCE_HI = 2 };
-#line 472 "paper/pdas.nw"
+#line 478 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 
-#line 1005 "paper/pdas.nw"
+#line 1011 "paper/pdas.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through w->pdas.sol */
 static int solve_pair(Qp_workspace *w, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -61,7 +64,8 @@ static int analyse_contact_last(Qp_workspace *w, Status *st)
 #line 409 "paper/pdas.nw"
 if (!(pd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(pd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
-  return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
+  return pdas_cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
+                             "vectors of the solves", st);
 const int *P = pd->Ls->Perm;
 for (int t = 0; t < w->nk; t++)
   if ((pd->tc[t] = w->bnd[P[pd->first + t]]) < 0)
@@ -109,7 +113,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return analyse_contact_last(w, st);
 }
 
-#line 421 "paper/pdas.nw"
+#line 422 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -142,7 +146,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 577 "paper/pdas.nw"
+#line 583 "paper/pdas.nw"
 /* K = A + diag(A_ii) on the bounded unknowns; the values only */
 static void fill_contact_matrix(Qp_workspace *w)
 {
@@ -156,7 +160,7 @@ static void fill_contact_matrix(Qp_workspace *w)
   }
 }
 
-#line 597 "paper/pdas.nw"
+#line 603 "paper/pdas.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Qp_workspace *w)
 {
@@ -167,7 +171,7 @@ static void read_trailing_block(Qp_workspace *w)
   memset(pd->Lcc, 0, (size_t) nc * nc * sizeof *pd->Lcc);
   if (L->is_super) {
     
-#line 617 "paper/pdas.nw"
+#line 623 "paper/pdas.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -176,7 +180,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       pd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 607 "paper/pdas.nw"
+#line 613 "paper/pdas.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < w->n; k++)
@@ -185,7 +189,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 630 "paper/pdas.nw"
+#line 636 "paper/pdas.nw"
 static void schur_complement(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -202,7 +206,7 @@ static void schur_complement(Qp_workspace *w)
     }
 }
 
-#line 650 "paper/pdas.nw"
+#line 656 "paper/pdas.nw"
 static int condensed_load(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -223,7 +227,7 @@ static int condensed_load(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 553 "paper/pdas.nw"
+#line 559 "paper/pdas.nw"
 static int condense(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -246,7 +250,7 @@ static int condense(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 689 "paper/pdas.nw"
+#line 695 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int newton_solve(Qp_workspace *w)
 {
@@ -254,7 +258,7 @@ static int newton_solve(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 712 "paper/pdas.nw"
+#line 718 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (pd->act[c] == HELD) pd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -266,7 +270,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) pd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 696 "paper/pdas.nw"
+#line 702 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(pd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -277,7 +281,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 794 "paper/pdas.nw"
+#line 800 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -296,7 +300,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 816 "paper/pdas.nw"
+#line 822 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -316,7 +320,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 775 "paper/pdas.nw"
+#line 781 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -332,7 +336,7 @@ static int hold_stopping(Qp_workspace *w)
   return held > 0;
 }
 
-#line 853 "paper/pdas.nw"
+#line 859 "paper/pdas.nw"
 static void condensed_forces(Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
@@ -344,13 +348,13 @@ static void condensed_forces(Qp_workspace *w)
   }
 }
 
-#line 867 "paper/pdas.nw"
+#line 873 "paper/pdas.nw"
 static double condensed_kkt(const Qp_workspace *w)
 {
   const Pdas_workspace *pd = &w->pdas;
   double tn = 0, inf = 0, comp = 0, axax = pd->bu2, bb = pd->bu2, yy = 0, ll = 0;
   
-#line 879 "paper/pdas.nw"
+#line 885 "paper/pdas.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -364,13 +368,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += pd->y[c] * pd->y[c];
 }
-#line 872 "paper/pdas.nw"
+#line 878 "paper/pdas.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 901 "paper/pdas.nw"
+#line 907 "paper/pdas.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -412,7 +416,7 @@ static void states_at_x(Qp_workspace *w)
   pd->stepped = 1;
 }
 
-#line 962 "paper/pdas.nw"
+#line 968 "paper/pdas.nw"
 static int expand(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -431,7 +435,7 @@ static int expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 987 "paper/pdas.nw"
+#line 993 "paper/pdas.nw"
 static int refine(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -447,7 +451,7 @@ static int refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 1027 "paper/pdas.nw"
+#line 1033 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -482,13 +486,13 @@ static int guide_start(Qp_workspace *w)
       ip->s[c] = slide, ip->t[c] = w->flo[c];
     } else {
       
-#line 1075 "paper/pdas.nw"
+#line 1081 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 1061 "paper/pdas.nw"
+#line 1067 "paper/pdas.nw"
     }
   }
   memcpy(ip->pred, pd->act, (size_t) nk);   /* its first prediction */
@@ -496,7 +500,7 @@ if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
   return 1;
 }
 
-#line 1121 "paper/pdas.nw"
+#line 1127 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -629,7 +633,7 @@ static int guide_step(Qp_workspace *w)
   return !inside;
 }
 
-#line 1261 "paper/pdas.nw"
+#line 1267 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -652,17 +656,17 @@ static void guide(Qp_workspace *w)
   ip->guided = 1;
 }
 
-#line 476 "paper/pdas.nw"
+#line 482 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!pd->condensed) {
     
-#line 504 "paper/pdas.nw"
+#line 510 "paper/pdas.nw"
 if ((code = pdas_condense(w, st))) return code;
 if (pd->warm) states_at_x(w);
-#line 482 "paper/pdas.nw"
+#line 488 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
@@ -681,7 +685,7 @@ if (pd->warm) states_at_x(w);
   condensed_forces(w);
   w->kkt = condensed_kkt(w);
   
-#line 520 "paper/pdas.nw"
+#line 526 "paper/pdas.nw"
 int same = predict_active_set(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = expand(w, st))) return code;
@@ -690,10 +694,10 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 500 "paper/pdas.nw"
+#line 506 "paper/pdas.nw"
 }
 
-#line 1291 "paper/pdas.nw"
+#line 1297 "paper/pdas.nw"
 /* *c = a workspace of the Newton method for qp, w's problem or a part
    of it, condensed at its current values (NULL when it cannot be
    allocated) */
@@ -710,7 +714,7 @@ int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
   return code;
 }
 
-#line 1310 "paper/pdas.nw"
+#line 1316 "paper/pdas.nw"
 /* S = the Schur complement of w, its diagonal raised by shift A_ii */
 void pdas_schur(const Qp_workspace *w, double shift, double *S)
 {
@@ -718,7 +722,7 @@ void pdas_schur(const Qp_workspace *w, double shift, double *S)
   memcpy(S, w->pdas.S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
 }
-#line 1329 "paper/pdas.nw"
+#line 1335 "paper/pdas.nw"
 int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
                         Status *st)
 {
@@ -730,7 +734,7 @@ int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (pd->act[k] != HELD) fr[m++] = k;
   
-#line 1347 "paper/pdas.nw"
+#line 1353 "paper/pdas.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = pd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = pd->S[(size_t) fr[a] * nk + c];
@@ -753,11 +757,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, pd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 1340 "paper/pdas.nw"
+#line 1346 "paper/pdas.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 1380 "paper/pdas.nw"
+#line 1386 "paper/pdas.nw"
 /* S, f and the factor of K at the current values; a singular K is a
    body that nothing holds */
 int pdas_condense(Qp_workspace *w, Status *st)

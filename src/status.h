@@ -8,7 +8,7 @@ typedef enum {
   STATUS_INPUT = 2,   /* bad scene, bad command line: exit status 2 */
   STATUS_NUMERIC = 3, /* a solver did not converge, a NaN appeared */
   STATUS_SYSTEM = 4,  /* a file that cannot be written, a library failure */
-  STATUS_MEMORY = 5,  /* too large for this machine's memory, or out of it */
+  STATUS_MEMORY = 5,  /* too large for this machine's memory or CHOLMOD's integers, or out of memory */
   STATUS_INTERRUPTED = 130 /* SIGINT or SIGTERM: stopped at a safe point,
                               the files of the best design so far written */
 } Status_code;
