@@ -56,7 +56,7 @@ void newton_free(Newton_workspace *w)
 }
 #line 286 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
-static double model_scale(const Newton_model *mdl)
+static double force_scale(const Newton_model *mdl)
 {
   double C0 = mdl->B->C0, phi = 0;
   for (int i = 0; i < mdl->n; i++)
@@ -66,7 +66,7 @@ static double model_scale(const Newton_model *mdl)
   return phi;
 }
 
-static void scale_model(Newton_workspace *w, const Newton_model *mdl, double phi)
+static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
 {
   int n = w->n, m = w->m, N = n - 1;
   const Design_set *B = mdl->B;
@@ -305,10 +305,10 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
 {
   int rc = check_model(w, mdl, st), n = w->n, m = w->m, p = w->p, k;
   if (rc) return rc;
-  double phi = model_scale(mdl), C0 = mdl->B->C0, re;
+  double phi = force_scale(mdl), C0 = mdl->B->C0, re;
   double tol = fmax(NEWTON_TOL, (n + m) * DBL_EPSILON), bmax = 1, scale[2];
   if (!(phi > 0)) phi = 1;
-  scale_model(w, mdl, phi);
+  scale_by(w, mdl, phi);
   interior_start(w, mdl);
   for (int j = 0; j < p; j++) bmax = fmax(bmax, fabs(w->b[j]));
   Newton_quality q, fq = { 0 };

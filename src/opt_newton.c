@@ -8,7 +8,7 @@
 #line 1045 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
-  Newton_workspace *qp;   /* the model problem's solver */
+  Newton_workspace *solver; /* the model problem's solver */
   Newton_model mdl;       /* the model at the iterate */
   int n, m;               /* design nodes, contact unknowns */
   double rho;             /* the trust in the model, see above */
@@ -83,7 +83,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   int n = nr->n, rc;
   double start = model_clock(), E0 = nr->Ek, noise0 = nr->noisek;
   for (int i = 0; i < n; i++) nr->r[i] *= nr->rho;
-  rc = newton_solve(nr->qp, &nr->mdl, nr->d, nr->v, &nrep, ev->st);
+  rc = newton_solve(nr->solver, &nr->mdl, nr->d, nr->v, &nrep, ev->st);
   for (int i = 0; i < n; i++) nr->r[i] /= nr->rho;
   if (rc == STATUS_NUMERIC) {          /* a model too ill-conditioned: trust less */
     ev->rep->model_seconds += model_clock() - start;
@@ -146,11 +146,11 @@ int opt_newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = ev->md->dofs->nc, rc = STATUS_OK, k = 0, accepted = 1;
   size_t mm = (size_t) (m > 0 ? m : 1);
-  Newton_run nr = { .ev = ev, .qp = newton_alloc(n, m, ev->st), .n = n, .m = m,
+  Newton_run nr = { .ev = ev, .solver = newton_alloc(n, m, ev->st), .n = n, .m = m,
                     .S = malloc((mm * mm + 3 * mm + 5 * (size_t) n) * sizeof(double)) };
-  if (!nr.qp || !nr.S) {
-    newton_free(nr.qp), free(nr.S);
-    if (!nr.qp) return (int) ev->st->code;      /* newton_alloc said why */
+  if (!nr.solver || !nr.S) {
+    newton_free(nr.solver), free(nr.S);
+    if (!nr.solver) return (int) ev->st->code;      /* newton_alloc said why */
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
@@ -161,7 +161,7 @@ int opt_newton(Evaluator *ev, double *X)
   
 #line 1344 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
-  newton_free(nr.qp), free(nr.S);
+  newton_free(nr.solver), free(nr.S);
   return rc;
 }
 double Gmax = 0, Dmean = 0;
@@ -180,6 +180,6 @@ nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
   }
   memcpy(X, nr.Xk, n * sizeof *X);
   if (!rc) rc = opt_evaluate(ev, X);
-  newton_free(nr.qp), free(nr.S);
+  newton_free(nr.solver), free(nr.S);
   return rc;
 }

@@ -252,7 +252,7 @@ static int condense(Qp_workspace *w, Status *st)
 
 #line 695 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
-static int newton_solve(Qp_workspace *w)
+static int pdas_newton_step(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   int nk = w->nk, m = 0;
@@ -671,14 +671,14 @@ if (pd->warm) states_at_x(w);
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
   if (w->qp->slides && pd->ip.guided) hold_stopping(w);
-  if ((code = newton_solve(w)) == SINGULAR && pd->ip.guided) {
+  if ((code = pdas_newton_step(w)) == SINGULAR && pd->ip.guided) {
     memcpy(pd->act, pd->ip.own, (size_t) w->nk);  /* the guide's set: retake */
     pd->ip.guided = 0;
-    code = newton_solve(w);
+    code = pdas_newton_step(w);
   }
   if (code == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), pd->condensed = 1;  /* the guess holds nothing: go cold */
-    code = newton_solve(w);
+    code = pdas_newton_step(w);
   }
   if (code == SINGULAR)
     return qp_not_held(w, st, "the Newton matrix is singular", count_act(w));
