@@ -13,7 +13,8 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design design_project newton newton_ip opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
-           src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp
+           src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
+           src/man.sh src/completion.sh
 PRIVATE := pdas mprgp psor opt_projgrad opt_slsqp opt_newton plot_text plot_body plot_results design_project newton_ip
 TANGLED := $(filter-out $(PRIVATE:%=src/%.h),$(MODULES:%=src/%.h)) \
            src/qp_private.h src/opt_private.h src/plot_private.h src/design_private.h src/newton_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
@@ -48,15 +49,18 @@ CFLAGS  += -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
 LDFLAGS += -fsanitize=address,undefined
 endif
 
-# Debian packages the package needs, and the command that proves each one.
+# Debian packages the package needs, and the command that proves each one
+# (groff-base, man-db, mandoc, bsdextrautils: tests/install.sh renders and
+# lints the manual page).
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
             python3-meshio \
+            groff-base man-db mandoc bsdextrautils \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean
-all: bin/contactopt
+.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean install uninstall
+all: $(PROGRAM) $(B)/contactopt.1 $(B)/contactopt.bash
 
 # ---- dependencies: install what is missing, or say exactly how -------------
 # $(call apt_install,NAME,PACKAGES): the recipe of a target NAME that
@@ -101,6 +105,57 @@ $(PROGRAM): $(B)/main.o $(OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 -include $(wildcard $(B)/*.d $(B)/tests/*.d)
+
+# ---- installing (paper/install.nw) -------------------------------------------------
+# make install copies the program, the manual page contactopt(1), the
+# completion for bash and the example scenes (data/*.scene, which name no
+# other file) under PREFIX, by the GNU conventions; DESTDIR stages the whole
+# tree elsewhere (for a package). make uninstall removes them, and the
+# folders the install created (it lists them in
+# DATADIR/contactopt/installed-dirs), not those it found.
+PREFIX  ?= /usr/local
+BINDIR  ?= $(PREFIX)/bin
+DATADIR ?= $(PREFIX)/share
+MANDIR  ?= $(DATADIR)/man
+INSTALL ?= install
+SHIPPED := $(wildcard data/*.scene)
+INSTALL_DIRS := $(BINDIR) $(MANDIR)/man1 $(DATADIR)/contactopt/examples \
+                $(DATADIR)/bash-completion/completions
+INSTALLED := $(BINDIR)/contactopt $(MANDIR)/man1/contactopt.1 \
+             $(SHIPPED:data/%=$(DATADIR)/contactopt/examples/%) \
+             $(DATADIR)/bash-completion/completions/contactopt
+# The manual page and the completion are written from the program's own
+# texts (src/man.sh, src/completion.sh); the page names DATADIR, which is
+# kept in $(B)/install-paths, rewritten only when it changes. The page's
+# date is that of the last commit (of the program's build outside git).
+.PHONY: install-paths
+$(B)/install-paths: install-paths
+	@mkdir -p $(@D)
+	@echo '$(DATADIR)' > $@.new
+	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
+$(B)/contactopt.1: src/man.sh $(PROGRAM) $(B)/install-paths
+	d=$$(git log -1 --format=%cs 2>/dev/null || date -u -r $(PROGRAM) +%F) && \
+	  sh src/man.sh $(PROGRAM) '$(DATADIR)' "$$d" $(notdir $(SHIPPED)) > $@.partial && mv $@.partial $@
+$(B)/contactopt.bash: src/completion.sh $(PROGRAM)
+	sh src/completion.sh $(PROGRAM) > $@.partial && mv $@.partial $@
+install: $(PROGRAM) $(B)/contactopt.1 $(B)/contactopt.bash
+	@m='$(DESTDIR)$(DATADIR)/contactopt/installed-dirs'; \
+	{ for d in $(INSTALL_DIRS); do \
+	    while [ "$$d" != / ] && [ "$$d" != . ] && [ ! -d "$(DESTDIR)$$d" ]; do \
+	      echo "$$d"; d=$$(dirname "$$d"); done; done; \
+	  [ ! -f "$$m" ] || cat "$$m"; } | sort -u > $(B)/installed-dirs
+	$(INSTALL) -d $(INSTALL_DIRS:%=$(DESTDIR)%)
+	$(INSTALL) -m 755 $(PROGRAM) $(DESTDIR)$(BINDIR)/contactopt
+	$(INSTALL) -m 644 $(B)/contactopt.1 $(DESTDIR)$(MANDIR)/man1/contactopt.1
+	$(INSTALL) -m 644 $(SHIPPED) $(DESTDIR)$(DATADIR)/contactopt/examples
+	$(INSTALL) -m 644 $(B)/contactopt.bash $(DESTDIR)$(DATADIR)/bash-completion/completions/contactopt
+	$(INSTALL) -m 644 $(B)/installed-dirs $(DESTDIR)$(DATADIR)/contactopt/installed-dirs
+uninstall:
+	rm -f $(INSTALLED:%=$(DESTDIR)%)
+	@m='$(DESTDIR)$(DATADIR)/contactopt/installed-dirs'; \
+	dirs=$$([ ! -f "$$m" ] || sort -r "$$m"); rm -f "$$m"; \
+	for d in $$dirs $(DATADIR)/contactopt/examples $(DATADIR)/contactopt; do \
+	  [ ! -d "$(DESTDIR)$$d" ] || rmdir "$(DESTDIR)$$d" 2>/dev/null || true; done
 
 # The fault-injection shim and the shim of a CPU that OpenBLAS does not
 # know (rules below): named before make check needs them.
