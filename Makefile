@@ -10,7 +10,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # Modules tangled into src/ (each has a .c, and a .h but for the methods of
 # the state solver, which share src/qp_private.h, and those of the
 # optimiser, which share src/opt_private.h), and the program.
-MODULES := status problem scene mesh fem qp pdas mprgp psor friction model grad design design_project newton newton_ip opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
+MODULES := status problem scene mesh fem qp condense pdas mprgp psor friction model grad design design_project newton newton_ip opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \

@@ -1,4 +1,4 @@
-#line 143 "paper/mprgp.nw"
+#line 146 "paper/mprgp.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,14 +6,15 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
+#include "condense.h"
 
-#line 153 "paper/mprgp.nw"
+#line 157 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 375 "paper/mprgp.nw"
+#line 379 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
 
-#line 159 "paper/mprgp.nw"
+#line 163 "paper/mprgp.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
@@ -21,7 +22,7 @@ static double dot(int n, const double *u, const double *v)
   return s;
 }
 
-#line 170 "paper/mprgp.nw"
+#line 174 "paper/mprgp.nw"
 int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -33,12 +34,12 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 184 "paper/mprgp.nw"
+#line 188 "paper/mprgp.nw"
 void mprgp_set(Qp_workspace *w)
 {
   w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
   w->mprgp.restart = 1, w->mprgp.factored = 0;
-  w->pdas.condensed = 0;         /* S, if any, is the last values' */
+  if (w->cond) w->cond->condensed = 0;   /* S is the last values' */
 }
 
 void mprgp_free(Qp_workspace *w)
@@ -46,7 +47,7 @@ void mprgp_free(Qp_workspace *w)
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
 
-#line 211 "paper/mprgp.nw"
+#line 215 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -66,7 +67,7 @@ static void ssor_free(Qp_workspace *w)
   }
 }
 
-#line 253 "paper/mprgp.nw"
+#line 257 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -81,7 +82,7 @@ static int proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 274 "paper/mprgp.nw"
+#line 278 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -100,7 +101,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 331 "paper/mprgp.nw"
+#line 335 "paper/mprgp.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -111,7 +112,7 @@ static double feasible_step(const Qp_workspace *w)
   return af;
 }
 
-#line 348 "paper/mprgp.nw"
+#line 352 "paper/mprgp.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -125,7 +126,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
 
-#line 379 "paper/mprgp.nw"
+#line 383 "paper/mprgp.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
@@ -141,7 +142,7 @@ static void expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 306 "paper/mprgp.nw"
+#line 310 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -165,7 +166,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 515 "paper/mprgp.nw"
+#line 519 "paper/mprgp.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -175,7 +176,7 @@ static int dual_free(const Qp_workspace *w, int k)
 /* the gradient of q at T_k: y_k - pos_k */
 static double dual_grad(const Qp_workspace *w, int k)
 {
-  return w->pdas.y[k] - w->pos[k];
+  return w->cond->y[k] - w->pos[k];
 }
 
 /* the chopped gradient: what pulls T_k inward from an end; 0 inside and
@@ -193,11 +194,11 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
 
-#line 545 "paper/mprgp.nw"
+#line 549 "paper/mprgp.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
-  gsl_matrix_const_view L = gsl_matrix_const_view_array(w->pdas.M, w->nk, w->nk);
+  gsl_matrix_const_view L = gsl_matrix_const_view_array(w->cond->M, w->nk, w->nk);
   gsl_vector_view x = gsl_vector_view_array(u, w->nk);
   memcpy(u, v, (size_t) w->nk * sizeof *u);
   gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, &L.matrix, &x.vector);
@@ -208,22 +209,22 @@ static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 static void dual_state(Qp_workspace *w)
 {
   double *r = w->mprgp.z;
-  for (int k = 0; k < w->nk; k++) r[k] = w->pdas.f[k] + w->T[k];
-  dual_hessian(w, r, w->pdas.y);
+  for (int k = 0; k < w->nk; k++) r[k] = w->cond->f[k] + w->T[k];
+  dual_hessian(w, r, w->cond->y);
 }
 
-#line 509 "paper/mprgp.nw"
+#line 513 "paper/mprgp.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 567 "paper/mprgp.nw"
+#line 571 "paper/mprgp.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
   int nk = w->nk;
-  gsl_matrix_view M = gsl_matrix_view_array(w->pdas.M, nk, nk);
-  memcpy(w->pdas.M, w->pdas.S, (size_t) nk * nk * sizeof *w->pdas.M);
-  if (!gsl_linalg_cholesky_decomp1(&M.matrix) && qp_factor_regular(w->pdas.M, nk))
+  gsl_matrix_view M = gsl_matrix_view_array(w->cond->M, nk, nk);
+  memcpy(w->cond->M, w->cond->S, (size_t) nk * nk * sizeof *w->cond->M);
+  if (!gsl_linalg_cholesky_decomp1(&M.matrix) && qp_factor_regular(w->cond->M, nk))
     return STATUS_OK;
   return status_set(st, STATUS_NUMERIC, "cgssor with friction needs S, the "
     "Schur complement onto the %d contact unknowns, positive definite: it is "
@@ -250,10 +251,10 @@ static double norm_inverse(Qp_workspace *w)
   return rho + res;
 }
 
-#line 603 "paper/mprgp.nw"
+#line 607 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
-  int code = pdas_condense(w, st);
+  int code = condense_factor(w, st);
   if (!code) code = factor_schur(w, st);
   if (code) return code;
   w->mprgp.abar = MPRGP_ABAR / norm_inverse(w);
@@ -263,7 +264,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 618 "paper/mprgp.nw"
+#line 622 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -278,7 +279,7 @@ static int dual_proportional(const Qp_workspace *w)
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
 
-#line 634 "paper/mprgp.nw"
+#line 638 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -289,7 +290,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
   return af;
 }
 
-#line 648 "paper/mprgp.nw"
+#line 652 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -301,12 +302,12 @@ static void dual_proportioning_step(Qp_workspace *w)
                       dual_feasible_step(w, mp->z));
   for (int k = 0; k < nk; k++) {
     w->T[k] = dual_proj(w, k, w->T[k] - alpha * mp->z[k]);
-    w->pdas.y[k] -= alpha * mp->q[k];
+    w->cond->y[k] -= alpha * mp->q[k];
   }
   mp->restart = 1;
 }
 
-#line 668 "paper/mprgp.nw"
+#line 672 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -321,21 +322,21 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 702 "paper/mprgp.nw"
+#line 706 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
   Mprgp_workspace *mp = &w->mprgp;
   for (int k = 0; k < w->nk; k++) {
     w->T[k] = dual_proj(w, k, w->T[k] - acg * mp->p[k]);
-    w->pdas.y[k] -= acg * mp->q[k];
+    w->cond->y[k] -= acg * mp->q[k];
   }
   dual_restart(w, mp->z);
   double gamma = dot(w->nk, mp->z, mp->q) / php;
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 720 "paper/mprgp.nw"
+#line 724 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -344,7 +345,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
     double p = mp->p[k], end = p > 0 ? w->flo[k] : w->fhi[k];
     int tie = p != 0 && fabs(w->T[k] - end) <= af * fabs(p) * (1 + TIE);
     w->T[k] = tie ? end : dual_proj(w, k, w->T[k] - af * p);
-    w->pdas.y[k] -= af * mp->q[k];
+    w->cond->y[k] -= af * mp->q[k];
   }
   for (int k = 0; k < w->nk; k++)
     if (dual_free(w, k)) w->T[k] = dual_proj(w, k, w->T[k] - mp->abar * dual_grad(w, k));
@@ -352,7 +353,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 686 "paper/mprgp.nw"
+#line 690 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -367,11 +368,11 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   else dual_expansion_step(w, af);
 }
 
-#line 744 "paper/mprgp.nw"
+#line 748 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
-  double *y = w->pdas.y;
+  double *y = w->cond->y;
   for (int k = 0; k < w->nk; k++)
     if (w->flo[k] == w->fhi[k]) continue;
     else if (dual_free(w, k)) y[k] = w->pos[k];
@@ -382,47 +383,57 @@ static void dual_snap(Qp_workspace *w)
 /* the residual of (y snapped, T = S y - f), left in place if <= tol */
 static double dual_snapped_kkt(Qp_workspace *w)
 {
-  Pdas_workspace *pd = &w->pdas;
-  size_t size = (size_t) w->nk * sizeof *pd->y;
-  gsl_matrix_const_view S = gsl_matrix_const_view_array(pd->S, w->nk, w->nk);
-  gsl_vector_view y = gsl_vector_view_array(pd->y, w->nk),
+  Condense *cd = w->cond;
+  size_t size = (size_t) w->nk * sizeof *cd->y;
+  gsl_matrix_const_view S = gsl_matrix_const_view_array(cd->S, w->nk, w->nk);
+  gsl_vector_view y = gsl_vector_view_array(cd->y, w->nk),
                   T = gsl_vector_view_array(w->T, w->nk);
-  memcpy(w->mprgp.z, pd->y, size), memcpy(w->mprgp.q, w->T, size);
+  memcpy(w->mprgp.z, cd->y, size), memcpy(w->mprgp.q, w->T, size);
   dual_snap(w);
-  memcpy(w->T, pd->f, size);
+  memcpy(w->T, cd->f, size);
   gsl_blas_dgemv(CblasNoTrans, 1.0, &S.matrix, &y.vector, -1.0, &T.vector);
-  double kkt = pdas_condensed_kkt(w);
+  double kkt = condense_kkt(w);
   if (!(kkt <= w->opt.tol))
-    memcpy(pd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
+    memcpy(cd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
   return kkt;
 }
 
-#line 777 "paper/mprgp.nw"
+#line 781 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
-  if ((code = pdas_expand(w, st)) || !met || w->kkt <= w->opt.tol) return code;
+  if ((code = condense_end(w, st)) || !met || w->kkt <= w->opt.tol) return code;
   return status_set(st, STATUS_NUMERIC, "cgssor: the dual's pair met the "
     "tolerance at step %d, and the whole state formed from it, refined once, "
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
 
-#line 792 "paper/mprgp.nw"
+#line 796 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
   if (!w->mprgp.factored && (code = dual_setup(w, st))) return code;
   if (dual_proportional(w)) dual_cg_or_expansion_step(w);
   else dual_proportioning_step(w);
-  w->kkt = pdas_condensed_kkt(w);
-  if (w->kkt <= w->opt.tol) dual_state(w), w->kkt = pdas_condensed_kkt(w);
+  w->kkt = condense_kkt(w);
+  if (w->kkt <= w->opt.tol) dual_state(w), w->kkt = condense_kkt(w);
   if (w->kkt <= w->opt.tol) w->kkt = dual_snapped_kkt(w);
   if (w->kkt <= w->opt.tol || w->iter + 1 >= w->opt.max_iter)
     return dual_finish(w, st);
   return STATUS_OK;
 }
 
-#line 240 "paper/mprgp.nw"
+#line 817 "paper/mprgp.nw"
+/* with friction, S, f and the states at x, if no step condensed them */
+int mprgp_end(Qp_workspace *w, Status *st)
+{
+  int code = STATUS_OK;
+  if (w->nk > w->nc && !w->cond->condensed && !(code = condense_factor(w, st)))
+    condense_states_at_x(w);
+  return code;
+}
+
+#line 244 "paper/mprgp.nw"
 int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */

@@ -1,13 +1,13 @@
-#line 181 "paper/qp.nw"
+#line 188 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
-/* The state solver's own header: qp.c, pdas.c, mprgp.c and psor.c include
-   it, no other module does. */
+/* The state solver's own header: qp.c, condense.c, pdas.c, mprgp.c and
+   psor.c include it, no other module does. */
 #include <float.h>
 #include <math.h>
 #include "qp.h"
 
-#line 248 "paper/qp.nw"
+#line 258 "paper/qp.nw"
 typedef struct {
   double *s, *t;         /* nk: its gaps y - lo and forces, both > 0;
                             with friction, the slide y - pos = s - b and
@@ -26,36 +26,13 @@ typedef struct {
 } Pdas_guide;
 
 typedef struct {
-  cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
-                            values, stype -1 */
-  cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, bounded
-                            unknowns last */
-  cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
-  int first;             /* n - nk: where the bounded unknowns start in L */
-  int *tc;               /* nk: the bounded unknown c at position first + t */
-  double *Lcc;           /* nk x nk, row-major: the trailing block of L */
-  double *S;             /* nk x nk, row-major: the Schur complement of A */
-  double *f;             /* nk: the condensed load */
-  double *y;             /* nk: the condensed iterate x[ik] */
-  double *M;             /* nk x nk: S on the free set, then its factor
-                            (L_cc L_cc' while condensing; for MPRGP
-                            with friction, the factor of the whole S) */
   double *r;             /* nk: a right-hand side on the free set */
   int *fr;               /* nk: the free set, listed */
-  double bu2;            /* ||b_u||^2, for the residual */
-  cholmod_dense *rhs;    /* n x 1: the vector that two solves overwrite */
-  cholmod_dense *sol;    /* n x 1: the vector between the two solves */
-  cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
-  cholmod_dense *Lb;     /* n x 1: z = L \ P b */
-  char *act;             /* nk: each one's state in the next Newton step */
-  int condensed;         /* S, f belong to the current values of A and b
-                            (pdas, or cgssor's dual) */
   int warm;              /* the first active set is to be guessed from x0 */
-  int stepped;           /* y, T come from a Newton step (not a guess) */
   Pdas_guide ip;         /* the interior point that guides the steps */
 } Pdas_workspace;
 
-#line 300 "paper/qp.nw"
+#line 287 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -67,7 +44,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 215 "paper/qp.nw"
+#line 224 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -90,11 +67,13 @@ struct Qp_workspace {
   double *T;             /* nk: the contact forces g[ik[k]] (4.6) */
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
+  struct Condense *cond; /* the condensation (condense.c): pdas, and
+                            cgssor with friction; NULL otherwise */
   Pdas_workspace pdas;   /* method pdas only (pdas.c), zero otherwise */
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 545 "paper/qp.nw"
+#line 520 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -153,7 +132,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 697 "paper/qp.nw"
+#line 672 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -166,7 +145,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 717 "paper/qp.nw"
+#line 692 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -182,43 +161,32 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 316 "paper/qp.nw"
+#line 304 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
                    const double *g, double *T);
 /* g = A x - b, then kkt and T at x */
 void qp_refresh(Qp_workspace *w);
-/* the current values of A, b and lo, read and checked */
-int qp_read_values(Qp_workspace *w, Status *st);
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w);
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 339 "paper/qp.nw"
+#line 322 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
 int pdas_iterate(Qp_workspace *w, Status *st);
 void pdas_free(Qp_workspace *w);
-int pdas_condense_apart(const Qp_workspace *w, const Qp *qp,
-                        Qp_workspace **c, Status *st);
-void pdas_schur(const Qp_workspace *w, double shift, double *S);
-int pdas_schur_friction(const Qp_workspace *w, double shift, double *S,
-                        Status *st);
-/* pdas.c, for MPRGP with friction: S and f, the residual of (y, T), x */
-int pdas_condense(Qp_workspace *w, Status *st);
-int pdas_condense_states(Qp_workspace *w, Status *st);
-double pdas_condensed_kkt(const Qp_workspace *w);
-int pdas_expand(Qp_workspace *w, Status *st);
 /* mprgp.c: MPRGP, CG-SSOR with projection */
 int mprgp_alloc(Qp_workspace *w, Status *st);
 void mprgp_set(Qp_workspace *w);
 int mprgp_iterate(Qp_workspace *w, Status *st);
 void mprgp_free(Qp_workspace *w);
+int mprgp_end(Qp_workspace *w, Status *st);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 204 "paper/qp.nw"
+#line 211 "paper/qp.nw"
 #endif

@@ -1,0 +1,436 @@
+#line 256 "paper/condense.nw"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include "qp_private.h"
+#include "condense.h"
+
+#line 387 "paper/condense.nw"
+#define SINGULAR (-1)    /* K is singular (not a Status_code) */
+#line 372 "paper/condense.nw"
+/* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
+static int cholmod_failed(const cholmod_common *cm, const char *what,
+                          Status *st)
+{
+  if (cm->status == CHOLMOD_OUT_OF_MEMORY)
+    return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
+  if (cm->status == CHOLMOD_TOO_LARGE)
+    return status_set(st, STATUS_MEMORY, "%s: the problem is too large for "
+                      "CHOLMOD's 32-bit integers", what);
+  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
+}
+
+#line 539 "paper/condense.nw"
+/* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
+static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
+                      Status *st)
+{
+  cholmod_common *cm = cd->cm;
+  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->Y, &cd->E, cm)
+      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->Y, &cd->E, cm))
+    return cholmod_failed(cm, "pdas: CHOLMOD failed to solve", st);
+  return STATUS_OK;
+}
+
+#line 275 "paper/condense.nw"
+/* the arrays, K's values copied from A, and at; nonzero when out of memory */
+static int alloc_arrays(Condense *cd, Status *st)
+{
+  const cholmod_sparse *A = cd->A;
+  size_t nz = (size_t) ((const int *) A->p)[cd->n], nc = (size_t) cd->nk + 1;
+  cd->K = *A;                /* the header: p and i are shared with A */
+  cd->K.x = malloc((nz + 1) * sizeof(double));
+  cd->K.nzmax = nz, cd->K.stype = -1;
+  cd->at = malloc(((size_t) cd->n + 1) * sizeof *cd->at);
+  cd->act = malloc(nc), cd->tc = malloc(nc * sizeof *cd->tc);
+  cd->f = malloc(nc * sizeof *cd->f), cd->y = malloc(nc * sizeof *cd->y);
+  cd->Lcc = malloc(nc * nc * sizeof *cd->Lcc);
+  cd->S = malloc(nc * nc * sizeof *cd->S), cd->M = malloc(nc * nc * sizeof *cd->M);
+  if (!cd->K.x || !cd->at || !cd->act || !cd->tc || !cd->f || !cd->y
+      || !cd->Lcc || !cd->S || !cd->M)
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
+                      "nc = %d)", cd->nk);
+  memcpy(cd->K.x, A->x, nz * sizeof(double));
+  for (int i = 0; i < cd->n; i++) cd->at[i] = -1;
+  for (int k = 0; k < cd->nk; k++) cd->at[cd->ik[k]] = k;
+  cd->first = cd->n - cd->nk;
+  return STATUS_OK;
+}
+
+#line 305 "paper/condense.nw"
+static int analyse_contact_last(Condense *cd, Status *st)
+{
+  cholmod_common *cm = cd->cm;
+  size_t n = (size_t) cd->n;
+  int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
+  int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
+  int postorder = cm->postorder, ok = last && perm;
+  if (!ok) {
+    free(last), free(perm);
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)", cd->n);
+  }
+  for (int c = 0; c < cd->nk; c++) last[cd->ik[c]] = 1;
+  cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
+  ok = ok && cholmod_camd(&cd->K, NULL, 0, last, perm, cm)
+          && (cd->Ls = cholmod_analyze_p(&cd->K, perm, NULL, 0, cm));
+  cm->nmethods = nmethods, cm->method[0].ordering = ordering;
+  cm->postorder = postorder;
+  free(last), free(perm);
+  if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
+  
+#line 329 "paper/condense.nw"
+if (!(cd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
+    || !(cd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
+  return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
+                        "vectors of the solves", st);
+const int *P = cd->Ls->Perm;
+for (int t = 0; t < cd->nk; t++)
+  if ((cd->tc[t] = cd->at[P[cd->first + t]]) < 0)
+    return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
+                      "the bounded unknowns last");
+return STATUS_OK;
+#line 325 "paper/condense.nw"
+}
+
+#line 342 "paper/condense.nw"
+Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
+                         cholmod_common *cm, Status *st)
+{
+  Condense *cd = calloc(1, sizeof *cd);
+  if (!cd) { status_set(st, STATUS_MEMORY, "qp_alloc: out of memory"); return NULL; }
+  cd->A = A, cd->cm = cm, cd->n = (int) A->ncol, cd->nk = nk, cd->ik = ik;
+  if (alloc_arrays(cd, st) || analyse_contact_last(cd, st)) {
+    condense_free(cd);
+    return NULL;
+  }
+  return cd;
+}
+
+void condense_free(Condense *cd)
+{
+  if (!cd) return;
+  free(cd->K.x), free(cd->at), free(cd->act), free(cd->tc);
+  free(cd->f), free(cd->y), free(cd->Lcc), free(cd->S), free(cd->M);
+  cholmod_free_factor(&cd->Ls, cd->cm), cholmod_free_factor(&cd->L, cd->cm);
+  cholmod_free_dense(&cd->rhs, cd->cm), cholmod_free_dense(&cd->sol, cd->cm);
+  cholmod_free_dense(&cd->Lb, cd->cm);
+  cholmod_free_dense(&cd->Y, cd->cm), cholmod_free_dense(&cd->E, cd->cm);
+  free(cd);
+}
+
+#line 447 "paper/condense.nw"
+/* K = A + diag(A_ii) on the condensed unknowns; the values only */
+static void fill_contact_matrix(Condense *cd, const double *d)
+{
+  const int *Ap = cd->A->p, *Ai = cd->A->i;
+  double *Kx = cd->K.x;
+  memcpy(Kx, cd->A->x, (size_t) Ap[cd->n] * sizeof *Kx);
+  for (int c = 0; c < cd->nk; c++) {
+    int j = cd->ik[c];
+    for (int k = Ap[j]; k < Ap[j + 1]; k++)
+      if (Ai[k] == j) Kx[k] += d[j];
+  }
+}
+
+#line 467 "paper/condense.nw"
+/* Lcc = the rows and columns first..n-1 of L, row-major, lower */
+static void read_trailing_block(Condense *cd)
+{
+  const cholmod_factor *L = cd->L;
+  const double *Lx = L->x;
+  int nc = cd->nk, first = cd->first;
+  memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
+  if (L->is_super) {
+    
+#line 486 "paper/condense.nw"
+const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
+for (size_t s = 0; s < L->nsuper; s++) {
+  int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
+  for (int k = k1 > first ? k1 : first; k < k2; k++)
+    for (int q = k - k1; q < nrow; q++)
+      cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
+        Lx[px[s] + q + (size_t) (k - k1) * nrow];
+}
+#line 476 "paper/condense.nw"
+  } else {
+    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    for (int k = first; k < cd->n; k++)
+      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
+        cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
+  }
+}
+
+#line 499 "paper/condense.nw"
+static void schur_complement(Condense *cd, const double *d)
+{
+  int nc = cd->nk;
+  if (nc == 0) return;
+  gsl_matrix_view L = gsl_matrix_view_array(cd->Lcc, nc, nc),
+                  LLt = gsl_matrix_view_array(cd->M, nc, nc);
+  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, &L.matrix, 0.0, &LLt.matrix);
+  for (int t = 0; t < nc; t++)
+    for (int u = 0; u <= t; u++) {
+      int a = cd->tc[t], b = cd->tc[u];
+      double v = cd->M[(size_t) t * nc + u] - (t == u ? d[cd->ik[a]] : 0);
+      cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
+    }
+}
+
+#line 518 "paper/condense.nw"
+static int condensed_load(Condense *cd, const double *b, Status *st)
+{
+  memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
+  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
+  cholmod_dense *swap = cd->Lb;
+  cd->Lb = cd->rhs, cd->rhs = swap;      /* keep z, reuse the old vector */
+  const double *z = cd->Lb->x;
+  cd->bu2 = 0;
+  for (int i = 0; i < cd->n; i++)
+    if (cd->at[i] < 0) cd->bu2 += b[i] * b[i];
+  for (int t = 0; t < cd->nk; t++) {
+    double s = 0;
+    for (int u = 0; u <= t; u++) s += cd->Lcc[(size_t) t * cd->nk + u] * z[cd->first + u];
+    cd->f[cd->tc[t]] = s;
+  }
+  return STATUS_OK;
+}
+
+#line 413 "paper/condense.nw"
+/* S, f and the factor of K = A + D_c at the current values of A and b,
+   d the diagonal of A; SINGULAR when K is */
+static int condense(Condense *cd, const double *b, const double *d, Status *st)
+{
+  cholmod_common *cm = cd->cm;
+  int print = cm->print, final_ll = cm->final_ll, ok;
+  fill_contact_matrix(cd, d);
+  cm->print = 0, cm->final_ll = 1;  /* a singular K is our message to give */
+  if (!cd->L) cd->L = cholmod_copy_factor(cd->Ls, cm);
+  ok = cd->L && cholmod_factorize(&cd->K, cd->L, cm) && cm->status >= CHOLMOD_OK;
+  cm->print = print, cm->final_ll = final_ll;
+  if (!ok || cd->L->minor < cd->L->n) {
+    cholmod_free_factor(&cd->L, cm);     /* the next starts from Ls */
+    return ok ? SINGULAR
+              : cholmod_failed(cm, "pdas: CHOLMOD failed to factorise", st);
+  }
+  read_trailing_block(cd);
+  schur_complement(cd, d);
+  int code = condensed_load(cd, b, st);
+  cd->condensed = !code;
+  return code;
+}
+
+/* S, f and the factor of K at the current values; a singular K is a
+   body that nothing holds */
+int condense_factor(Qp_workspace *w, Status *st)
+{
+  int code = condense(w->cond, w->qp->b, w->d, st);
+  return code != SINGULAR ? code : qp_not_held(w, st,
+    "A is singular even with every bound held", w->nc);
+}
+
+#line 568 "paper/condense.nw"
+void condense_forces(Qp_workspace *w)
+{
+  const Condense *cd = w->cond;
+  for (int c = 0; c < w->nk; c++) {
+    const double *Sc = cd->S + (size_t) c * w->nk;
+    double s = -cd->f[c];
+    for (int e = 0; e < w->nk; e++) s += Sc[e] * cd->y[e];
+    w->T[c] = s;
+  }
+}
+
+#line 582 "paper/condense.nw"
+double condense_kkt(const Qp_workspace *w)
+{
+  const Condense *cd = w->cond;
+  double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
+  
+#line 594 "paper/condense.nw"
+for (int c = 0; c < w->nk; c++) {
+  double T = w->T[c], bc = w->qp->b[w->ik[c]];
+  if (c < w->nc) {
+    double gap = cd->y[c] - w->pos[c];
+    if (T < 0) tn += T * T;
+    if (gap < 0) inf += gap * gap;
+    comp += fabs(T) * fabs(gap);
+    ll += w->pos[c] * w->pos[c];
+  } else
+    qp_slip_terms(w->fhi[c], T, cd->y[c], &tn, &comp);
+  bb += bc * bc, axax += (bc + T) * (bc + T);
+  yy += cd->y[c] * cd->y[c];
+}
+#line 587 "paper/condense.nw"
+  double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
+  double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
+  return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
+}
+
+#line 614 "paper/condense.nw"
+/* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
+   held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
+   interval of width 0 (no friction) always gives its one force; after a
+   Newton step, a slide that crossed its place sticks first */
+static char predicted_state(const Qp_workspace *w, int c)
+{
+  const Condense *cd = w->cond;
+  if (cd->stepped && cd->act[c] != CONDENSE_HELD && w->fhi[c] < INFINITY
+      && w->flo[c] != w->fhi[c])
+    return cd->act[c] == CONDENSE_LO
+           ? (cd->y[c] < w->pos[c] ? CONDENSE_HELD : CONDENSE_LO)
+           : (cd->y[c] > w->pos[c] ? CONDENSE_HELD : CONDENSE_HI);
+  double z = w->T[c] + w->d[w->ik[c]] * (w->pos[c] - cd->y[c]);
+  if (z <= w->flo[c] || w->flo[c] == w->fhi[c]) return CONDENSE_LO;
+  return z > w->fhi[c] ? CONDENSE_HI : CONDENSE_HELD;
+}
+
+/* act = the states that y and T call for; 1 if none changed */
+int condense_predict(Qp_workspace *w)
+{
+  Condense *cd = w->cond;
+  int same = 1;
+  for (int c = 0; c < w->nk; c++) {
+    char a = predicted_state(w, c);
+    same &= a == cd->act[c];
+    cd->act[c] = a;
+  }
+  return same;
+}
+
+/* y from x, T = S y - f, and the states they call for (no Newton step
+   behind them): the guess of a warm start */
+void condense_states_at_x(Qp_workspace *w)
+{
+  Condense *cd = w->cond;
+  for (int c = 0; c < w->nk; c++) cd->y[c] = w->x[w->ik[c]];
+  condense_forces(w);
+  cd->stepped = 0;
+  condense_predict(w);
+  cd->stepped = 1;
+}
+
+#line 676 "paper/condense.nw"
+int condense_expand(Qp_workspace *w, Status *st)
+{
+  Condense *cd = w->cond;
+  double *v = cd->rhs->x;
+  memcpy(v, cd->Lb->x, (size_t) w->n * sizeof *v);
+  for (int t = 0; t < w->nk; t++) {
+    double s = 0;
+    for (int u = t; u < w->nk; u++)
+      s += cd->Lcc[(size_t) u * w->nk + t] * cd->y[cd->tc[u]];
+    v[cd->first + t] = s;
+  }
+  if (solve_pair(cd, CHOLMOD_Lt, CHOLMOD_Pt, &cd->rhs, st)) return st->code;
+  memcpy(w->x, cd->rhs->x, (size_t) w->n * sizeof *w->x);
+  for (int c = 0; c < w->nk; c++) w->x[w->ik[c]] = cd->y[c];
+  qp_refresh(w);
+  return STATUS_OK;
+}
+
+#line 701 "paper/condense.nw"
+int condense_refine(Qp_workspace *w, Status *st)
+{
+  Condense *cd = w->cond;
+  double *v = cd->rhs->x;
+  for (int i = 0; i < w->n; i++) v[i] = cd->at[i] < 0 ? -w->g[i] : 0;
+  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
+  v = cd->rhs->x;
+  memset(v + cd->first, 0, (size_t) w->nk * sizeof *v);
+  if (solve_pair(cd, CHOLMOD_Lt, CHOLMOD_Pt, &cd->rhs, st)) return st->code;
+  v = cd->rhs->x;
+  for (int i = 0; i < w->n; i++) if (cd->at[i] < 0) w->x[i] += v[i];
+  qp_refresh(w);
+  return STATUS_OK;
+}
+
+#line 726 "paper/condense.nw"
+/* the states that (y, T) call for, then x from y by back substitution,
+   refined once if kkt > tol; kkt and T recomputed at x */
+int condense_end(Qp_workspace *w, Status *st)
+{
+  w->cond->stepped = 0;
+  condense_predict(w);
+  w->cond->stepped = 1;
+  int code = condense_expand(w, st);
+  if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
+  return code;
+}
+
+#line 748 "paper/condense.nw"
+/* S = the Schur complement of cd, its diagonal raised by shift d_i */
+static void schur_copy(const Condense *cd, const double *d, double shift,
+                       double *S)
+{
+  int nc = cd->nk;
+  memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
+  for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
+}
+#line 768 "paper/condense.nw"
+/* S = the Schur complement of S onto the bounded unknowns, the sticking
+   tangential ones held and the sliding ones eliminated */
+static int schur_friction(const Qp_workspace *w, double shift, double *S,
+                          Status *st)
+{
+  const Condense *cd = w->cond;
+  int nc = w->nc, nk = w->nk, m = 0, code = STATUS_OK;
+  int *fr = malloc((size_t) (nk - nc + 1) * sizeof *fr);
+  double *SFF = malloc((size_t) (nk - nc) * (nk - nc) * sizeof *SFF + 1);
+  double *SFn = malloc((size_t) (nk - nc) * nc * sizeof *SFn + 1);
+  if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
+  for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
+  
+#line 788 "paper/condense.nw"
+for (int a = 0; !code && a < m; a++) {
+  for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
+  for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
+}
+if (!code && m > 0) {
+  gsl_matrix_view F = gsl_matrix_view_array(SFF, m, m), B = gsl_matrix_view_array(SFn, m, nc);
+  if (gsl_linalg_cholesky_decomp1(&F.matrix))
+    code = status_set(st, STATUS_NUMERIC, "qp_schur: the sliding nodes' "
+                      "stiffness is singular: nothing holds them");
+  else {
+    gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, &F.matrix, &B.matrix);
+    for (int c = 0; c < nc; c++)
+      for (int e = 0; e < nc; e++) {
+        double v = cd->S[(size_t) c * nk + e];
+        for (int a = 0; a < m; a++) v -= SFn[(size_t) a * nc + c] * SFn[(size_t) a * nc + e];
+        S[(size_t) c * nc + e] = v;
+      }
+  }
+} else if (!code)
+  for (int c = 0; c < nc; c++)
+    memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
+for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
+#line 781 "paper/condense.nw"
+  free(fr), free(SFF), free(SFn);
+  return code;
+}
+#line 817 "paper/condense.nw"
+/* S of w's problem without friction, condensed apart, its diagonal
+   raised by shift A_ii */
+static int schur_apart(const Qp_workspace *w, double shift, double *S,
+                       Status *st)
+{
+  Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
+  if (!cd) return st->code;
+  int code = condense(cd, w->qp->b, w->d, st);
+  if (code == SINGULAR)
+    code = status_set(st, STATUS_NUMERIC, "qp_schur: A is singular even "
+                      "with every bounded unknown held");
+  if (!code) schur_copy(cd, w->d, shift, S);
+  condense_free(cd);
+  return code;
+}
+#line 837 "paper/condense.nw"
+int condense_schur(const Qp_workspace *w, double shift, double *S,
+                   Status *st)
+{
+  if (!w->cond || !w->cond->condensed) return schur_apart(w, shift, S, st);
+  if (w->nk > w->nc) return schur_friction(w, shift, S, st);
+  schur_copy(w->cond, w->d, shift, S);
+  return STATUS_OK;
+}

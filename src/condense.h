@@ -1,0 +1,80 @@
+#line 92 "paper/condense.nw"
+#ifndef CONTACTOPT_CONDENSE_H
+#define CONTACTOPT_CONDENSE_H
+/* The state problem condensed onto its contact unknowns: qp.c, pdas.c,
+   mprgp.c and condense.c include this header, no other file does. */
+#include <cholmod.h>
+#include "qp.h"
+
+#line 114 "paper/condense.nw"
+/* free at the lower end of its force's interval, held, free at the upper */
+enum { CONDENSE_LO = 0, CONDENSE_HELD = 1, CONDENSE_HI = 2 };
+
+#line 125 "paper/condense.nw"
+typedef struct Condense {
+  const cholmod_sparse *A; /* the problem's A (borrowed): its pattern, and
+                            its values at each condensation */
+  cholmod_common *cm;    /* the caller's CHOLMOD environment */
+  int n;                 /* A is n x n */
+  int nk;                /* the number of unknowns condensed onto */
+  const int *ik;         /* nk: which they are (borrowed) */
+  int *at;               /* n: k when unknown i = ik[k], -1 otherwise */
+  cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
+                            values, stype -1 */
+  cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, the
+                            condensed unknowns last */
+  cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
+  int first;             /* n - nk: where the condensed unknowns start in L */
+  int *tc;               /* nk: the condensed unknown c at position first + t */
+  double *Lcc;           /* nk x nk, row-major: the trailing block of L */
+  double *S;             /* nk x nk, row-major: the Schur complement of A */
+  double *f;             /* nk: the condensed load */
+  double *y;             /* nk: the condensed iterate x[ik] */
+  double *M;             /* nk x nk: L_cc L_cc' while condensing, then its
+                            user's (the Newton matrix of pdas, the factor
+                            of S for MPRGP with friction) */
+  double bu2;            /* ||b_u||^2, for the residual */
+  cholmod_dense *rhs;    /* n x 1: the vector that two solves overwrite */
+  cholmod_dense *sol;    /* n x 1: the vector between the two solves */
+  cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
+  cholmod_dense *Lb;     /* n x 1: z = L \ P b */
+  char *act;             /* nk: the state of each, CONDENSE_HELD, _LO, _HI */
+  int stepped;           /* y, T come from a Newton step (not a guess) */
+  int condensed;         /* S, f belong to the current values of A and b */
+} Condense;
+
+#line 163 "paper/condense.nw"
+/* the condensation of A onto its unknowns ik[0..nk-1], analysed; NULL
+   (and st) on failure */
+Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
+                         cholmod_common *cm, Status *st);
+/* S, f and the factor of K at w's current values */
+int condense_factor(Qp_workspace *w, Status *st);
+/* frees cd and all it owns (NULL: nothing) */
+void condense_free(Condense *cd);
+
+#line 176 "paper/condense.nw"
+/* T = S y - f */
+void condense_forces(Qp_workspace *w);
+/* the relative KKT residual of y and T */
+double condense_kkt(const Qp_workspace *w);
+/* act = the states that y and T call for; 1 if none changed */
+int condense_predict(Qp_workspace *w);
+/* y from x, T = S y - f, and the states they call for (no step behind) */
+void condense_states_at_x(Qp_workspace *w);
+
+#line 190 "paper/condense.nw"
+/* x from y by back substitution; g, kkt and T recomputed at x */
+int condense_expand(Qp_workspace *w, Status *st);
+/* x_u refined by one step with the factor; g, kkt, T recomputed */
+int condense_refine(Qp_workspace *w, Status *st);
+/* the states that (y, T) call for, then x, refined once if kkt > tol */
+int condense_end(Qp_workspace *w, Status *st);
+
+#line 200 "paper/condense.nw"
+/* what qp_schur hands over: S of the last condensation (with friction,
+   sticking held and sliding eliminated), or of one made apart */
+int condense_schur(const Qp_workspace *w, double shift, double *S,
+                   Status *st);
+#line 110 "paper/condense.nw"
+#endif
