@@ -30,7 +30,7 @@ static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
   cholmod_common *cm = cd->cm;
   if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->Y, &cd->E, cm)
       || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->Y, &cd->E, cm))
-    return cholmod_failed(cm, "pdas: CHOLMOD failed to solve", st);
+    return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
   return STATUS_OK;
 }
 
@@ -50,7 +50,7 @@ static int alloc_arrays(Condense *cd, Status *st)
   cd->S = malloc(nc * nc * sizeof *cd->S), cd->M = malloc(nc * nc * sizeof *cd->M);
   if (!cd->K.x || !cd->at || !cd->act || !cd->tc || !cd->f || !cd->y
       || !cd->Lcc || !cd->S || !cd->M)
-    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
+    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (condensed onto the contact, "
                       "nc = %d)", cd->nk);
   memcpy(cd->K.x, A->x, nz * sizeof(double));
   for (int i = 0; i < cd->n; i++) cd->at[i] = -1;
@@ -212,7 +212,7 @@ static int condense(Condense *cd, const double *b, const double *d, Status *st)
   if (!ok || cd->L->minor < cd->L->n) {
     cholmod_free_factor(&cd->L, cm);     /* the next starts from Ls */
     return ok ? SINGULAR
-              : cholmod_failed(cm, "pdas: CHOLMOD failed to factorise", st);
+              : cholmod_failed(cm, "condense: CHOLMOD failed to factorise K", st);
   }
   read_trailing_block(cd);
   schur_complement(cd, d);
