@@ -1,4 +1,5 @@
-#line 147 "paper/model.nw"
+#line 158 "paper/model.nw"
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -8,7 +9,7 @@
 #include <sys/resource.h>
 #include "model.h"
 
-#line 160 "paper/model.nw"
+#line 172 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -23,7 +24,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 180 "paper/model.nw"
+#line 192 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -36,19 +37,19 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 174 "paper/model.nw"
+#line 186 "paper/model.nw"
   
-#line 195 "paper/model.nw"
+#line 207 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 175 "paper/model.nw"
+#line 187 "paper/model.nw"
   return md;
 }
-#line 211 "paper/model.nw"
+#line 223 "paper/model.nw"
 double model_clock(void)
 {
   struct timespec t;
@@ -56,7 +57,7 @@ double model_clock(void)
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-#line 248 "paper/model.nw"
+#line 260 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
@@ -64,7 +65,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 324 "paper/model.nw"
+#line 336 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -73,7 +74,7 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 302 "paper/model.nw"
+#line 314 "paper/model.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
@@ -92,7 +93,7 @@ static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
     md->fixed_point_iterations, md->fixed_point_residual,
     md->fixed_point_tol, md->problem->friction);
 }
-#line 269 "paper/model.nw"
+#line 281 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   const Problem *p = md->problem;
@@ -122,7 +123,7 @@ static int model_coulomb(Model *md, Status *st)
     rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 224 "paper/model.nw"
+#line 236 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = model_clock();
@@ -145,13 +146,13 @@ int model_solve(Model *md, const double *X, Status *st)
   return rc;
 }
 
-#line 346 "paper/model.nw"
+#line 358 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 354 "paper/model.nw"
+#line 366 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -166,7 +167,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 370 "paper/model.nw"
+#line 382 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -177,7 +178,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 464 "paper/model.nw"
+#line 512 "paper/model.nw"
 /* the unknowns of the mesh, and the entries of the sparse factor of K */
 static double model_unknowns(const Problem *p)
 {
@@ -196,7 +197,7 @@ double model_memory(const Problem *p)
   double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
   return 3 * 8 * nk * nk + 12 * model_factor_entries(p) + 400 * n;
 }
-#line 496 "paper/model.nw"
+#line 544 "paper/model.nw"
 int model_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
   double need = model_memory(p) + extra, entries = model_factor_entries(p);
@@ -213,14 +214,14 @@ int model_fits(const Problem *p, double extra, const char *origin, Status *st)
                     "about %.3g GB, more than the %.3g GB this process may use",
                     origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
 }
-#line 439 "paper/model.nw"
+#line 487 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 407 "paper/model.nw"
+#line 455 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -233,13 +234,37 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 426 "paper/model.nw"
+#line 474 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 419 "paper/model.nw"
+#line 467 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
+}
+#line 424 "paper/model.nw"
+int model_contact_count(const Model *md) { return md->dofs->nc; }
+
+const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
+
+int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
+{
+  int m = md->dofs->nc, rc;
+  if (m > 0 && (rc = qp_schur(md->solver, 0, S, st))) return rc;
+  for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
+  return STATUS_OK;
+}
+#line 441 "paper/model.nw"
+/* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
+double model_energy_rounding(const Model *md)
+{
+  long double W = 0, Wabs = 0;
+  for (int i = 0; i < md->dofs->n; i++) {
+    long double bq = (long double) md->b[i] * md->Q[i];
+    W += bq, Wabs += fabsl(bq);
+  }
+  long double U = md->energy - md->friction_energy + W;
+  return DBL_EPSILON * (double) (fabsl(U) + Wabs + fabs(md->friction_energy));
 }

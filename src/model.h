@@ -59,6 +59,15 @@ int model_solve(Model *md, const double *X, Status *st);
 /* S (N+1 x N+1, row-major): the stiffness of the body seen from its
    contact nodes at the last design solved (see below) */
 int model_contact_stiffness(Model *md, double *S, Status *st);
+/* the contact unknowns m and, for each, the design node it moves with */
+int model_contact_count(const Model *md);
+const int *model_contact_columns(const Model *md);
+/* at the last design solved, over the m contact unknowns: S (m x m,
+   row-major) the state solver's contact stiffness at its current sets,
+   v the displacements, T the contact forces */
+int model_contact_state(Model *md, double *S, double *v, double *T, Status *st);
+/* the rounding of E at the last design solved (see the optimiser) */
+double model_energy_rounding(const Model *md);
 void model_free(Model *md);
 #line 52 "paper/model.nw"
 #endif

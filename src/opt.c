@@ -26,19 +26,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 449 "paper/opt.nw"
-/* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
-static double energy_rounding(const Model *md)
-{
-  long double W = 0, Wabs = 0;
-  for (int i = 0; i < md->dofs->n; i++) {
-    long double bq = (long double) md->b[i] * md->Q[i];
-    W += bq, Wabs += fabsl(bq);
-  }
-  long double U = md->energy - md->friction_energy + W;
-  return DBL_EPSILON * (double) (fabsl(U) + Wabs + fabs(md->friction_energy));
-}
-#line 401 "paper/opt.nw"
+#line 400 "paper/opt.nw"
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -52,11 +40,11 @@ int opt_evaluate(Evaluator *ev, const double *X)
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
   ev->E = ev->md->energy;
-  ev->noise = energy_rounding(ev->md);
+  ev->noise = model_energy_rounding(ev->md);
   ev->have = 1;
   return STATUS_OK;
 }
-#line 463 "paper/opt.nw"
+#line 452 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -65,7 +53,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 474 "paper/opt.nw"
+#line 463 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -76,7 +64,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->rep->monitor_seconds += model_clock() - start;
   return stop;
 }
-#line 505 "paper/opt.nw"
+#line 494 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -97,7 +85,7 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1360 "paper/opt.nw"
+#line 1346 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -111,11 +99,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1385 "paper/opt.nw"
+#line 1371 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1373 "paper/opt.nw"
+#line 1359 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
   }
@@ -124,7 +112,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1401 "paper/opt.nw"
+#line 1387 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
