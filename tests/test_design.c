@@ -243,7 +243,7 @@ static void test_brute_force(int tied)
       bad += rc != 0 || e > 1e-12;
       notkkt += !kkt_ok(k, 1e-12);
     }
-    check(bad == 0, "N = %d: %d %s projections equal the brute-force "
+    check(bad == 0, "N = %d: %d %s projections onto B (4.4) equal the brute-force "
           "least distance over all active sets (worst %.1e relative)",
           N, cases, tied ? "tied" : "random", worst);
     check(notkkt == 0, "N = %d: their multipliers satisfy the KKT conditions "
@@ -281,7 +281,7 @@ static void test_properties(void)
     design_project(&B, XX, X2, NULL, &st);
     for (int i = 0; i < n; i++) fixed = fmax(fixed, fabs(X2[i] - XX[i]) / B.C0);
   }
-  check(fixed <= 1e-14, "P(X) = X for the constant X = S/(b-a) in B (200 sets, "
+  check(fixed <= 1e-14, "P(X) = X for the constant X = S/(b-a) in B (4.4) (200 sets, "
         "N = 64; worst %.1e relative to C0)", fixed);
   check(idem, "P(P(Y)) = P(Y) to 1e-13 (200 random Y)");
   check(nonexp, "||P(Y1) - P(Y2)|| <= ||Y1 - Y2|| (200 random pairs)");
@@ -307,7 +307,7 @@ static void test_example_51(void)
     Y[i] = R1 - sqrt(R1 * R1 - (x - 4) * (x - 4));
   }
   check(fabs(area_of(&B, Y) - 0.0667) < 1e-3 && design_violation(&B, Y) > 0.1,
-        "the arc of Example 5.1 has area %.6f, not 0.09: not in B",
+        "the arc of Example 5.1 has area %.6f, not 0.09: not in B (4.4)",
         area_of(&B, Y));
   int rc;
   Kkt k = project_checked(&B, Y, X, &rc);
@@ -316,7 +316,7 @@ static void test_example_51(void)
         k.feas, k.sign, k.comp, k.stat);
   check(fabs(design_area(&B, X) - 0.09) <= 1e-12
         && design_violation(&B, X) <= 1e-12,
-        "its projection is in B, with area 0.09 (%.17g)", design_area(&B, X));
+        "its projection is in B (4.4), with area 0.09 (%.17g)", design_area(&B, X));
   check(X[0] == 0.05 && X[16] > 0, "the projection keeps alpha_0 = C0 and "
         "lifts alpha_16 off the foundation (%.6f)", X[16]);
 }
@@ -517,7 +517,7 @@ static void test_feasible_start(void)
   v = design_violation(&B, Y);
   rc = design_feasible_start(&B, Y, v, X, NULL, &moved, NULL);
   check(rc == 0 && !memcmp(X, Y, sizeof X) && moved == 0,
-        "feasible start: a point of B (violation %.1e = tol) is kept, bit "
+        "feasible start: a point of B (4.4) (violation %.1e = tol) is kept, bit "
         "for bit, moved 0", v);
   Y[3] += 1e-3;
   v = design_violation(&B, Y);

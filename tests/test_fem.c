@@ -1,10 +1,9 @@
-/* test_fem: the moving mesh and the P1 elasticity operator.
+/* test_fem: the P1 elasticity operator (paper/fem.nw), the matrix A of (4.3).
    Patch test: a linear displacement field has constant stress, so the
    assembled operator applied to it vanishes at interior nodes and equals
    the consistent nodal forces of the boundary tractions sigma.n elsewhere;
-   rigid motions have zero stiffness; the article's mesh has the sizes of
-   Fig. 5.2a; the pattern of A is that of 36 triplets per element summed
-   by CHOLMOD, entry for entry. */
+   rigid motions have zero stiffness; the pattern of A is that of 36
+   triplets per element summed by CHOLMOD, entry for entry.  The mesh itself: test_mesh.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -147,7 +146,7 @@ static void patch_test(Plane_model model)
   boundary_forces(m, &H, grad, f);
   double scale = norm_inf(f, d->n), err = 0;
   for (int k = 0; k < d->n; k++) err = fmax(err, fabs(r[k] - f[k]));
-  check(err <= 1e-12 * scale, "%s patch test: |A u_lin - f_boundary| / |f| = %.2e",
+  check(err <= 1e-12 * scale, "%s patch test of A (4.3): |A u_lin - f_boundary| / |f| = %.2e",
         model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", err / scale);
   for (int mode = 0; mode < 3; mode++) {         /* two translations, a rotation */
     for (int k = 0; k < m->nnodes; k++) {
@@ -167,48 +166,6 @@ static void patch_test(Plane_model model)
   fem_dofs_free(d);
   mesh_free(m);
   cholmod_finish(&cm);
-}
-
-/* Fig. 5.2a: 128 triangles, 17 contact nodes; orientation; (4.2) */
-static void article_mesh(void)
-{
-  Problem s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
-  Status st = { 0, "" };
-  Mesh *m = mesh_new(&s, &st);
-  double X[17];
-  design(16, X);
-  mesh_move(m, X, &st);
-  check(m->ntri == 128 && m->ncol == 17, "article mesh: %d triangles, %d contact nodes",
-        m->ntri, m->ncol);
-  int positive = 1;
-  for (int t = 0; t < m->ntri; t++) positive &= mesh_area(m, t) > 0;
-  check(positive, "article mesh: every triangle positively oriented");
-  double area = 0;
-  for (int t = 0; t < m->ntri; t++) area += mesh_area(m, t);
-  double trapez = 0;
-  for (int i = 0; i < 16; i++) trapez += 0.25 * (X[i] + X[i + 1]) / 2;
-  check(fabs(area - (4.0 - trapez)) < 1e-13, "mesh area = gamma(b-a) - h sum trapezoids");
-  mesh_free(m);
-
-  s = free_body(8, 4, 2, MODEL_PLANE_STRESS);
-  m = mesh_new(&s, &st);
-  double Y[9] = { 0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.1, 0.0, 0.03 };
-  mesh_move(m, Y, &st);
-  int ok = 1;
-  for (int i = 0; i <= 8; i++)
-    for (int j = 0; j <= 4; j++) {
-      double want = Y[i] + (0.25 - Y[i]) * j / 4.0;
-      ok &= fabs(m->xy[2 * (j * 9 + i) + 1] - want) < 1e-15;
-      ok &= fabs(mesh_motion(m, j * 9 + i) - (1 - j / 4.0)) < 1e-15;
-    }
-  check(ok, "moving nodes follow (4.2): x2 = alpha + (C0' - alpha) j/M, rate 1 - j/M");
-  Y[5] = 0.25;
-  check(mesh_move(m, Y, &st) == STATUS_INPUT && strstr(st.msg, "inverted"),
-        "alpha = C0prime is refused: %s", st.msg);
-  Y[5] = -0.01;
-  check(mesh_move(m, Y, &st) == STATUS_INPUT && strstr(st.msg, "alpha_5"),
-        "alpha < 0 is refused: %s", st.msg);
-  mesh_free(m);
 }
 
 /* a consistent traction load sums to P times the loaded length, also when
@@ -297,7 +254,6 @@ int main(void)
   pattern(64, 4, 12, BC_CLAMPED, BC_ROLLER, BC_ROLLER);
   patch_test(MODEL_PLANE_STRESS);
   patch_test(MODEL_PLANE_STRAIN);
-  article_mesh();
   traction_load();
   return check_done();
 }

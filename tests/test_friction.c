@@ -356,7 +356,7 @@ static void test_gradcheck(const char *g, const char *shape)
   int rc = grad_check(c.md, c.s.alpha0, gc, NULL, NULL, &c.st);
   check(rc == 0 && gc->err[gc->worst] <= 1e-6 && stick > 0 && slip > 0,
         "gradcheck g = %s%s%s: %d sticking, %d slipping nodes: largest error "
-        "%.1e of max|G| (node %d)", g, shape ? ", " : "", shape ? shape : "",
+        "of (4.8) %.1e of max|G| (node %d)", g, shape ? ", " : "", shape ? shape : "",
         stick, slip, gc->err[gc->worst], gc->worst);
   grad_check_free(gc);
   close_case(&c);
@@ -416,7 +416,7 @@ static void test_threshold(void)
          ef10 = fabs(D[2] - G[i]) / Gmax, eb10 = fabs(D[3] - G[i]) / Gmax;
   check(ef <= 1e-3 && eb <= 1e-3 && ef10 <= 0.2 * ef + 1e-9 && eb10 <= 0.2 * eb + 1e-9,
         "threshold: the forward and backward differences in X_%d tend to G_%d "
-        "at the rate of their step: %.1e -> %.1e and %.1e -> %.1e of max|G| "
+        "of (4.8) at the rate of their step: %.1e -> %.1e and %.1e -> %.1e of max|G| "
         "(h = %.0e, h/10)", i, i, ef, ef10, eb, eb10, h);
   free(G), free(X);
   close_case(&c);

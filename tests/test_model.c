@@ -1,4 +1,6 @@
-/* test_metric: the stiffness of the body seen from its contact nodes,
+/* test_model.c: the model (paper/model.nw).  First the energy E of two
+   solvers' states, equal to rounding, the same to 1e-15 (from
+   test_hard.c).  Then the stiffness of the body seen from its contact nodes,
    S = A_cc - A_ci A_ii^-1 A_ic (model_contact_stiffness, from the trailing
    block of a CAMD-ordered Cholesky factor), against the same Schur
    complement formed independently: A as a dense matrix, A_ii factorised by
@@ -24,6 +26,7 @@
 #include "grad.h"
 #include "design.h"
 #include "opt.h"
+#include "weakly_active.h"
 
 /* the dense Schur complement of A onto the contact unknowns, ordered by
    contact number c, the contact diagonals multiplied by 1 + shift */
@@ -171,7 +174,7 @@ static void curvature(void)
   for (int c = 0; ok && c < md->dofs->nc; c++)
     active += md->Q[md->dofs->contact[c]] <= md->lo[c] && md->T[c] > 0;
   ok = ok && !fd_hessian(md, X, n, 1e-7 * s.problem.C0, H);
-  if (check(ok, "5.1: optimum, S and the difference Hessian (%d nodes in contact)", active)) {
+  if (check(ok, "5.1: optimum, S and the difference Hessian of (4.8) (%d nodes in contact)", active)) {
     gsl_matrix_view Hv = gsl_matrix_view_array(H, n, n), Sv = gsl_matrix_view_array(S, n, n);
     gsl_vector *ev = gsl_vector_alloc(n);
     gsl_eigen_gensymm_workspace *w = gsl_eigen_gensymm_alloc(n);
@@ -192,8 +195,34 @@ static void curvature(void)
   cholmod_finish(&cm);
 }
 
+/* The energy is evaluated accurately enough that two solvers' states,
+   equal to rounding, give the same E to 1e-15: as 1/2 Q'AQ - b'Q in double
+   the quadratic form loses about three digits to cancellation and the
+   rounding of A (1.4e-14 apart here, 7e-14 at N = 256). */
+static void energy_agreement(const char *path, int N)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  test_start(&cm);
+  if (!check(load_refined(&s, path, N / 16, &st) == 0, "load %s at N = %d", path, N)) return;
+  s.solver.tol = 1e-12;
+  Model *a = solve_cold(&s, QP_PDAS, s.alpha0, &cm, &st);
+  Model *b = a ? solve_cold(&s, QP_CGSSOR, s.alpha0, &cm, &st) : NULL;
+  if (check(a && b, "%s N = %d: pdas and cgssor converge to kkt 1e-12%s%s", path,
+            N, a && b ? "" : ": ", a && b ? "" : st.msg)) {
+    double rel = fabs(a->energy - b->energy) / fabs(a->energy);
+    check(rel <= 1e-15, "%s N = %d: E of pdas %.17g and of cgssor %.17g agree "
+          "to %.1e <= 1e-15", path, N, a->energy, b->energy, rel);
+  }
+  model_free(a), model_free(b);
+  scene_free(&s);
+  cholmod_finish(&cm);
+}
+
 int main(void)
 {
+  energy_agreement("data/example-5.1.scene", 128);
   compare("data/example-5.1.scene", 16, QP_PDAS);
   compare("data/example-5.1.scene", 32, QP_PDAS);
   compare("data/example-5.1.scene", 32, QP_CGSSOR);

@@ -1,4 +1,10 @@
-/* test_friction_cgssor: MPRGP on the dual (solver.state = cgssor with
+/* test_mprgp.c: MPRGP (solver.state = cgssor, paper/mprgp.nw) on the
+   small problems of qp_problems.h: against the enumeration and pdas,
+   invariant under scaling, warm starts, its failures; then at a weakly
+   active node of Examples 5.1 and 5.2 (weakly_active.h), where it must
+   agree with pdas.  (From tests/test_qp.c, test_hard.c and
+   test_friction_cgssor.c.)
+   Then MPRGP on the dual (solver.state = cgssor with
    friction, paper/mprgp.nw) against the active set method on Example 5.1:
    - given friction at g = 1e7, 2.5e8, 1e9 Pa on N = 16 and 64, and Coulomb
      friction F = 0.2: E to 1e-10 relative, the normal and tangential
@@ -15,13 +21,10 @@
    - max_iter = 1 fails with the state it reached; a tolerance below the
      rounding of the whole state (1e-15, 1e-300) converges to pdas's state,
      exact to rounding (the residual counts only what exceeds rounding);
-   - psor, which cannot take friction, is refused by qp_alloc. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
-#include "check.h"
+   (psor, which cannot take friction, refused by qp_alloc: test_qp.c.) */
+#include "qp_problems.h"
+#include "weakly_active.h"
 #include "case.h"
-
 
 /* the case solved by pdas (k = 0) and by cgssor (k = 1): the overrides
    ov and the method's */
@@ -254,25 +257,13 @@ static void test_tol_below_rounding(const char *tol)
   close_case(&c), close_case(&p);
 }
 
-/* psor with friction: qp_alloc refuses it, naming the two that take it */
-static void test_psor_refused(void)
-{
-  char *ov[] = { "contact.model=tresca", "contact.g=2.5e8", "solver.state=cgssor" };
-  Case c;
-  if (check(open_case(&c, 3, ov) == 0, "psor: the problem solved by cgssor: %s",
-            c.st.msg)) {
-    Qp_options opt = qp_options_default(QP_PSOR);
-    Status st = { STATUS_OK, "" };
-    Qp_workspace *w = qp_alloc(&c.md->qp, &opt, &c.cm, &st);
-    check(!w && st.code == STATUS_INPUT && strstr(st.msg, "psor")
-          && strstr(st.msg, "pdas or cgssor"), "psor: refused: %s", st.msg);
-    qp_free(w);
-  }
-  close_case(&c);
-}
-
 int main(void)
 {
+  cholmod_start(&cm);
+  gsl_set_error_handler_off();
+  check_method(2);
+  cholmod_finish(&cm);
+  weakly_active_nodes(QP_CGSSOR);
   static const char *g[] = { "1e7", "2.5e8", "1e9" };
   int mixed = 0;
   for (int r = 0; r < 2; r++)
@@ -288,6 +279,5 @@ int main(void)
   test_max_iter();
   test_tol_below_rounding("1e-15");
   test_tol_below_rounding("1e-300");
-  test_psor_refused();
   return check_done();
 }

@@ -1,4 +1,5 @@
-/* test_gradient: formula (4.8) at a weakly active node, one that touches
+/* test_grad.c: the gradient (paper/grad.nw).  Formula (4.8) at a weakly
+   active node, one that touches
    the foundation with zero contact force.  Q is not differentiable there,
    E is: the analytic derivative must agree with the one-sided differences
    from both sides (the node leaves contact on one side, presses on the
@@ -55,7 +56,7 @@ static void weakly_active(const char *path, Plane_model model)
   for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
   for (int k = 0; k <= s.problem.N; k++) Gmax = fmax(Gmax, fabs(G[k]));
   check(gap <= 1e-12 * s.problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
-        "%s: node %d touches (gap %.1e m) with force %.1e max T: weakly active",
+        "%s: node %d touches (gap %.1e m) with force %.1e max T (4.6): weakly active",
         path, i, gap, fabs(md->T[c]) / Tmax);
   double x0 = X[i], E0 = md->energy, h = 1e-5 * s.problem.C0, Ep, Ep2, Em, Em2;
   X[i] = x0 + h; Ep = energy(md, X);
@@ -66,10 +67,10 @@ static void weakly_active(const char *path, Plane_model model)
   double forward = (-3 * E0 + 4 * Ep - Ep2) / (2 * h);
   double backward = (3 * E0 - 4 * Em + Em2) / (2 * h);
   check(fabs(forward - G[i]) <= 1e-6 * Gmax,
-        "%s: dE/dX_%d = %.9g agrees with the forward difference %.9g (%.1e)",
+        "%s: dE/dX_%d = %.9g by (4.8) agrees with the forward difference %.9g (%.1e)",
         path, i, G[i], forward, fabs(forward - G[i]) / Gmax);
   check(fabs(backward - G[i]) <= 1e-6 * Gmax,
-        "%s: dE/dX_%d agrees with the backward difference %.9g (%.1e)",
+        "%s: dE/dX_%d by (4.8) agrees with the backward difference %.9g (%.1e)",
         path, i, backward, fabs(backward - G[i]) / Gmax);
   free(X); free(G);
   model_free(md);
@@ -104,11 +105,11 @@ static void check_grad_check(const char *path)
   int rc = grad_check(md, s.alpha0, gc, progress, &p, &st);
   for (int i = 0; i <= N; i++) worst = fmax(worst, gc->err[i]);
   check(rc == 0 && !memcmp(G, gc->G, (N + 1) * sizeof *G),
-        "%s: grad_check's G is grad_energy's at alpha0, bit for bit", path);
+        "%s: grad_check's G (4.8) is grad_energy's at alpha0, bit for bit", path);
   check(p.calls == N + 1 && p.in_order, "%s: progress called once per node, "
         "in order (%d calls for %d nodes)", path, p.calls, N + 1);
   check(worst < 1e-6 && gc->err[gc->worst] == worst,
-        "%s: largest relative error %.2e < 1e-6, at node worst = %d", path,
+        "%s: largest relative error of (4.8) %.2e < 1e-6, at node worst = %d", path,
         worst, gc->worst);
   if (s.alpha0[0] == 0)
     check(gc->err[0] < 1e-6, "%s: node 0 on the foundation (alpha_0 = 0), "
