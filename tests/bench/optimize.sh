@@ -49,6 +49,15 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" '
   !/^#/ { n++; N[n] = $1; m[n] = $2; wall[n] = $3; it[n] = $4; ev[n] = $5
           sec[n] = $6 - $10; st[n] = $7; stop[n] = $8; ref[n] = $9; mon[n] = $10 }
   END {
+    # the numbers the prose quotes: \optimizebench{METHOD}{N}{COLUMN}, a cell
+    # of the table below (iterations, solves, whole, state, outside,
+    # monitor, cholmod, ratio; an unknown one stops LaTeX)
+    print "% written by make bench (tests/bench/optimize.sh) on " date ", " cores " cores"
+    print "\\providecommand{\\optimizebench}[3]{\\ifcsname optimize:#1:#2:#3\\endcsname\\csname optimize:#1:#2:#3\\endcsname\\else\\errmessage{paper/bench-optimize.tex has no #1 #2 #3}\\fi}"
+    for (i = 1; i <= n; i++) {
+      k = "\\expandafter\\def\\csname optimize:" m[i] ":" N[i] ":"
+      printf "%siterations\\endcsname{%d}%ssolves\\endcsname{%d}%swhole\\endcsname{%.3g}%sstate\\endcsname{%.3g}\n", k, it[i], k, ev[i], k, wall[i], k, st[i]
+      printf "%soutside\\endcsname{%.1f}%smonitor\\endcsname{%.2g}%scholmod\\endcsname{%.3g}%sratio\\endcsname{%.1f}\n", k, 100 * (sec[i] - st[i]) / sec[i], k, mon[i], k, ref[i], k, wall[i] / ref[i] }
     print "\\begin{center}\\small\\setlength{\\tabcolsep}{4pt}"
     print "\\begin{tabular}{@{}rlrrrrrrrl@{}}\\toprule"
     print "$N$ & method & iterations & solves & whole [s] & state [s] & outside [\\%] & monitor [s] & CHOLMOD [s] & ratio\\\\\\midrule"

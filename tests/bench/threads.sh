@@ -83,6 +83,13 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" -v blas="$blas" \
         for (j = 1; j <= n[k]; j++) x[j] = w[k, j]
         med[k] = median(x, n[k]); for (j = 1; j <= n[k]; j++) x[j] = c[k, j]; cmed[k] = median(x, n[k])
         if (med[k] < best[N[i]]) best[N[i]] = med[k] } }
+    # the numbers the prose quotes: \threadsbench{SETTING}{N}{wall|low|high|cpu|ratio},
+    # a cell of the table below (an unknown one stops LaTeX)
+    print "% written by tests/bench/threads.sh on " date ", " cores " cores"
+    print "\\providecommand{\\threadsbench}[3]{\\ifcsname threads:\\detokenize{#1}:#2:#3\\endcsname\\csname threads:\\detokenize{#1}:#2:#3\\endcsname\\else\\errmessage{paper/bench-threads.tex has no #1 #2 #3}\\fi}"
+    for (i = 1; i <= nn; i++) for (s = 1; s <= ns_; s++) { k = N[i] SUBSEP order[s]
+      printf "\\expandafter\\def\\csname threads:\\detokenize{%s}:%d:wall\\endcsname{%.3g}\\expandafter\\def\\csname threads:\\detokenize{%s}:%d:low\\endcsname{%.3g}\\expandafter\\def\\csname threads:\\detokenize{%s}:%d:high\\endcsname{%.3g}\n", order[s], N[i], med[k], order[s], N[i], lo[k], order[s], N[i], hi[k]
+      printf "\\expandafter\\def\\csname threads:\\detokenize{%s}:%d:cpu\\endcsname{%.3g}\\expandafter\\def\\csname threads:\\detokenize{%s}:%d:ratio\\endcsname{%.2f}\n", order[s], N[i], cmed[k], order[s], N[i], med[k] / best[N[i]] }
     print "\\begin{center}\\small"
     print "\\begin{tabular}{@{}lrrrrr@{}}\\toprule"
     print "setting & $N$ & threads & wall [s] & CPU [s] & ratio\\\\\\midrule"
