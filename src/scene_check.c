@@ -1,4 +1,4 @@
-#line 1507 "paper/scene.nw"
+#line 1536 "paper/scene.nw"
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -7,7 +7,7 @@
 #include "friction.h"
 #include "scene_private.h"
 
-#line 1556 "paper/scene.nw"
+#line 1585 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -44,14 +44,14 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                      "1e30] times E, where every product the solvers form is "
                      "finite", what, outside(fabs(x) * times / s->problem.E, r));
 }
-#line 1601 "paper/scene.nw"
+#line 1630 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
   char w[STATUS_NUMBER];
   int rc;
-  if ((rc = scene_real(L, "geometry", "a", &s->problem.a))
-      || (rc = scene_real(L, "geometry", "b", &s->problem.b)))
+  if ((rc = scene_get(L, s, "geometry", "a"))
+      || (rc = scene_get(L, s, "geometry", "b")))
     return rc;
   if (!(s->problem.b > s->problem.a))
     return scene_blame(L, "must exceed geometry.a = %s",
@@ -62,45 +62,45 @@ static int read_geometry(Loader *L, Scene *s)
     return scene_blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
                        "every product the solvers form is finite",
                        outside(s->problem.b - s->problem.a, w));
-  if ((rc = scene_real(L, "geometry", "gamma", &s->problem.gamma))) return rc;
+  if ((rc = scene_get(L, s, "geometry", "gamma"))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return scene_blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1633 "paper/scene.nw"
+#line 1662 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
   int rc;
-  if ((rc = scene_integer(L, "design", "N", &s->problem.N))) return rc;
+  if ((rc = scene_get(L, s, "design", "N"))) return rc;
   if (s->problem.N < 1) return scene_blame(L, "must be >= 1 (design intervals)");
-  if ((rc = scene_real(L, "design", "C0", &s->problem.C0))) return rc;
+  if ((rc = scene_get(L, s, "design", "C0"))) return rc;
   if (!(s->problem.C0 > 0))
     return scene_blame(L, "must be > 0 (the bound of alpha)");
-  if ((rc = scene_real(L, "design", "C1", &s->problem.C1))) return rc;
+  if ((rc = scene_get(L, s, "design", "C1"))) return rc;
   if (!(s->problem.C1 >= 0))
     return scene_blame(L, "must be >= 0 (the bound of |alpha'|)");
-  if ((rc = scene_real(L, "design", "C2", &s->problem.C2))) return rc;
+  if ((rc = scene_get(L, s, "design", "C2"))) return rc;
   if (!(s->problem.C2 > 0))
     return scene_blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1662 "paper/scene.nw"
+#line 1691 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
 {
   char v[STATUS_NUMBER];
   int rc, k;
-  if ((rc = scene_integer(L, "mesh", "M", &s->problem.M))) return rc;
+  if ((rc = scene_get(L, s, "mesh", "M"))) return rc;
   if (s->problem.M < 1)
     return scene_blame(L, "must be >= 1 (moving rows of cells)");
-  if ((rc = scene_integer(L, "mesh", "R", &s->problem.R))) return rc;
+  if ((rc = scene_get(L, s, "mesh", "R"))) return rc;
   if (s->problem.R < 1) return scene_blame(L, "must be >= 1 (fixed rows of cells)");
   if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1700 "paper/scene.nw"
+#line 1729 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : "R"),
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -108,9 +108,9 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
                    "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
                    2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
-#line 1676 "paper/scene.nw"
+#line 1705 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
-  if ((rc = scene_real(L, "mesh", "C0prime", &s->problem.C0prime))) return rc;
+  if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
     return scene_blame(L, "must exceed design.C0 = %s: the moving boundary must "
                        "stay below the fixed part of the mesh",
@@ -121,7 +121,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1731 "paper/scene.nw"
+#line 1760 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -134,27 +134,24 @@ static int check_admissible(Loader *L, Scene *s)
                    "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2100 "paper/scene.nw"
+#line 2129 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
-  int rc, k;
-  if ((rc = scene_real(L, "material", "E", &s->problem.E))) return rc;
+  int rc;
+  if ((rc = scene_get(L, s, "material", "E"))) return rc;
   if (!(s->problem.E > 0)) return scene_blame(L, "Young's modulus must be > 0");
   if (!in_window(s->problem.E, 1))
     return scene_blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
                        "product the solvers form is finite");
-  if ((rc = scene_real(L, "material", "nu", &s->problem.nu))) return rc;
+  if ((rc = scene_get(L, s, "material", "nu"))) return rc;
   if (!(s->problem.nu < 0.5))
     return scene_blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
                        "where this displacement method locks");
   if (!(s->problem.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
-  if ((rc = scene_word(L, "material", "model", &k)))
-    return rc;
-  s->problem.model = (Plane_model)k;
-  return 0;
+  return scene_get(L, s, "material", "model");
 }
-#line 2129 "paper/scene.nw"
+#line 2155 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -163,26 +160,26 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2151 "paper/scene.nw"
+#line 2177 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
   "the part of the side the design never moves, [C0prime, gamma]";
-if ((rc = scene_real(L, sec, "from", &d->from))) return rc;
+if ((rc = scene_get(L, s, sec, "from"))) return rc;
 if (!(d->from >= lo))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-if ((rc = scene_real(L, sec, "to", &d->to))) return rc;
+if ((rc = scene_get(L, s, sec, "to"))) return rc;
 if (!(d->to > d->from))
   return scene_blame(L, "must exceed %s.from = %s", sec,
                      status_number(d->from, v[0]));
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2137 "paper/scene.nw"
-  if ((rc = scene_real(L, sec, "P1", &d->P[0]))
+#line 2163 "paper/scene.nw"
+  if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
-      || (rc = scene_real(L, sec, "P2", &d->P[1]))
+      || (rc = scene_get(L, s, sec, "P2"))
       || (rc = check_load(L, s, d->P[1], 1, "|P2|")))
     return rc;
   if (d->P[0] == 0 && d->P[1] == 0)
@@ -190,19 +187,19 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2170 "paper/scene.nw"
+#line 2196 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
   const char *sec = scene_side_names[id];
-  int k, rc;
-  if ((rc = scene_word(L, sec, "bc", &k))
-      || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[k])))
+  Bc_kind *kind = &s->problem.side[id].kind;
+  int rc;
+  if ((rc = scene_get(L, s, sec, "bc"))
+      || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[*kind])))
     return rc;
-  s->problem.side[id].kind = (Bc_kind)k;
-  return k == BC_TRACTION ? read_traction(L, s, id) : 0;
+  return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2241 "paper/scene.nw"
+#line 2267 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -211,7 +208,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return 0;
 }
-#line 2198 "paper/scene.nw"
+#line 2224 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Loader *L, Scene *s)
 {
@@ -226,17 +223,17 @@ static int check_held(Loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2218 "paper/scene.nw"
+#line 2244 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2212 "paper/scene.nw"
+#line 2238 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2227 "paper/scene.nw"
+#line 2253 "paper/scene.nw"
 if (p->contact == CONTACT_TRESCA)
   return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                     "body: contact.g = %g Pa holds at most g (b - a) = %g N/m "
@@ -247,63 +244,61 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2214 "paper/scene.nw"
+#line 2240 "paper/scene.nw"
 }
-#line 2284 "paper/scene.nw"
+#line 2310 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
   static const char *const law_key[] = {NULL, "g", "friction"};
   Problem *p = &s->problem;
-  double *value[] = {NULL, &p->slip_bound, &p->friction};
   int k, rc;
-  if ((rc = scene_word(L, "contact", "model", &k))
-      || (rc = scene_refuse_unused(L, "contact", "model", problem_contact_names[k])))
+  if ((rc = scene_get(L, s, "contact", "model"))
+      || (rc = scene_refuse_unused(L, "contact", "model",
+                                   problem_contact_names[p->contact])))
     return rc;
-  p->contact = (Contact_law)k;
-  if (k == CONTACT_FRICTIONLESS) return 0;
-  if ((rc = scene_real(L, "contact", law_key[k], value[k]))) return rc;
-  if (!(*value[k] >= 0))
+  if ((k = p->contact) == CONTACT_FRICTIONLESS) return 0;
+  if ((rc = scene_get(L, s, "contact", law_key[k]))) return rc;
+  if (!((k == CONTACT_TRESCA ? p->slip_bound : p->friction) >= 0))
     return scene_blame(L, "must be >= 0 (%s)", k == CONTACT_TRESCA ? "a slip bound "
                        "in Pa" : "a friction coefficient");
   if (k == CONTACT_TRESCA) return check_load(L, s, p->slip_bound, 1, "g");
   if (!(p->friction <= WINDOW_MAX))
     return scene_blame(L, "must be <= 1e30: it multiplies a contact force");
-  if ((rc = scene_integer(L, "contact", "max_fixed_point", &p->max_fixed_point)))
+  if ((rc = scene_get(L, s, "contact", "max_fixed_point")))
     return rc;
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2266 "paper/scene.nw"
+#line 2292 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
   int rc;
   double w = s->problem.b - s->problem.a;
-  if ((rc = scene_real(L, "body_force", "F1", &s->problem.F[0]))
+  if ((rc = scene_get(L, s, "body_force", "F1"))
       || (rc = check_load(L, s, s->problem.F[0], w, "|F1| (b - a)"))
-      || (rc = scene_real(L, "body_force", "F2", &s->problem.F[1]))
+      || (rc = scene_get(L, s, "body_force", "F2"))
       || (rc = check_load(L, s, s->problem.F[1], w, "|F2| (b - a)")))
     return rc;
   s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2317 "paper/scene.nw"
+#line 2342 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
   Qp_options *o = &s->solver;
-  int rc, k;
-  if ((rc = scene_word(L, "solver", "state", &k))) return rc;
-  o->method = (Qp_method)k;
-  if (k == QP_PSOR && s->problem.contact != CONTACT_FRICTIONLESS)
+  int rc;
+  if ((rc = scene_get(L, s, "solver", "state"))) return rc;
+  if (o->method == QP_PSOR && s->problem.contact != CONTACT_FRICTIONLESS)
     return scene_blame(L, "cannot take friction (contact.model = %s): a slip bound "
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2346 "paper/scene.nw"
-if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
+#line 2370 "paper/scene.nw"
+if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
                      "the sides do not hold in both directions (left.bc = %s, "
@@ -313,43 +308,41 @@ if (k == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2329 "paper/scene.nw"
-  if ((rc = scene_real(L, "solver", "tol", &o->tol))) return rc;
+#line 2353 "paper/scene.nw"
+  if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
-  if ((rc = scene_integer(L, "solver", "max_iter", &o->max_iter))) return rc;
+  if ((rc = scene_get(L, s, "solver", "max_iter"))) return rc;
   if (o->max_iter < 1) return scene_blame(L, "must be >= 1");
-  if ((rc = scene_real(L, "solver", "omega", &o->omega))) return rc;
+  if ((rc = scene_get(L, s, "solver", "omega"))) return rc;
   if (!(o->omega > 0 && o->omega < 2))
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2368 "paper/scene.nw"
+#line 2392 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
 static int read_optimizer(Loader *L, Scene *s)
 {
   Opt_options *o = &s->optimizer;
-  int rc, k;
-  if ((rc = scene_word(L, "optimizer", "method", &k))
-      || (rc = scene_refuse_unused(L, "optimizer", "method", opt_method_names[k])))
+  int rc;
+  if ((rc = scene_get(L, s, "optimizer", "method"))
+      || (rc = scene_refuse_unused(L, "optimizer", "method",
+                                   opt_method_names[o->method])))
     return rc;
-  o->method = (Opt_method)k;
   o->metric = opt_options_default(o->method).metric;
-  if (o->method != OPT_NEWTON) {
-    if ((rc = scene_word(L, "optimizer", "metric", &k))) return rc;
-    o->metric = (Opt_metric)k;
-  }
+  if (o->method != OPT_NEWTON && (rc = scene_get(L, s, "optimizer", "metric")))
+    return rc;
   if (o->method == OPT_PROJGRAD && o->metric == OPT_METRIC_SCHUR)
     return scene_blame(L, "schur needs optimizer.method = slsqp: Algorithm 4.1 "
                        "projects in the euclidean metric");
-  if ((rc = scene_real(L, "optimizer", "tol", &o->tol))) return rc;
+  if ((rc = scene_get(L, s, "optimizer", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative measure");
-  if ((rc = scene_integer(L, "optimizer", "max_iter", &o->max_iter))) return rc;
+  if ((rc = scene_get(L, s, "optimizer", "max_iter"))) return rc;
   if (o->max_iter < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2402 "paper/scene.nw"
+#line 2424 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include "scene.h"
 
-#line 485 "paper/scene.nw"
+#line 486 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -55,7 +55,7 @@ int scene_section_known(const char *sec);
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Key *k, const char *w);
-#line 737 "paper/scene.nw"
+#line 738 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,
                "a scene's values fit the loader");
@@ -66,7 +66,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Entry;
-#line 753 "paper/scene.nw"
+#line 754 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -80,13 +80,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Entry last;            /* the value converted last: a check blames it */
 } Loader;
-#line 814 "paper/scene.nw"
+#line 815 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 798 "paper/scene.nw"
+#line 799 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 PRINTF_LIKE(2, 3) int scene_fail(Loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
@@ -97,7 +97,7 @@ PRINTF_LIKE(2, 3) int scene_blame(Loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Loader *L, const char *override, char *buf,
                   size_t size);
-#line 921 "paper/scene.nw"
+#line 922 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Entry *scene_find(Loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
@@ -108,24 +108,24 @@ int scene_apply_override(Loader *L, const char *o);
 int scene_for_memory(Loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1309 "paper/scene.nw"
+#line 1311 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 const Entry *scene_entry(Loader *L, const char *sec, const char *key);
-/* x = the number sec.key */
-int scene_real(Loader *L, const char *sec, const char *key, double *x);
 /* k = the integer sec.key */
 int scene_integer(Loader *L, const char *sec, const char *key, int *k);
 /* k = the index of the word sec.key among the words of its record */
 int scene_word(Loader *L, const char *sec, const char *key, int *k);
+/* the field of s that sec.key's record names = the value of sec.key */
+int scene_get(Loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1778 "paper/scene.nw"
+#line 1807 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Loader *L, Scene *s);
-#line 1533 "paper/scene.nw"
+#line 1562 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s);
 #line 323 "paper/scene.nw"
