@@ -7,22 +7,28 @@
 PARTS := $(shell sed -n 's/^\\input{\([a-z0-9_-]*\)}$$/\1/p' paper/contactopt.nw)
 NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 
-# Modules tangled into src/ (each has a .c, and a .h but for the methods of
-# the state solver, which share src/qp_private.h, and those of the
-# optimiser, which share src/opt_private.h), and the program.
-MODULES := status problem scene mesh fem qp condense pdas mprgp psor friction model grad design design_project newton newton_ip opt opt_projgrad opt_slsqp opt_newton output usage interrupt args threads plot plot_text plot_body plot_results
+# Modules tangled into src/, each a .c and a .h; the files that do part of
+# a module's job behind its header (the methods of the state solver, the
+# optimisers, the projection onto B, the interior point of the Newton
+# model, the figures' parts, the parts of the scene and output modules),
+# which share the module's private header; and the program.
+MODULES := status problem scene mesh fem qp condense friction model grad design newton opt output usage interrupt args threads plot
+INNER   := pdas mprgp psor design_project newton_ip opt_projgrad opt_slsqp opt_newton \
+           plot_text plot_body plot_results \
+           scene_keys scene_ini scene_value scene_check scene_shape scene_write \
+           output_path output_state output_vtu output_solve output_optimize
+PRIVATE := qp_private opt_private plot_private design_private newton_private scene_private output_private
+SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
            src/man.sh src/completion.sh
-PRIVATE := pdas mprgp psor opt_projgrad opt_slsqp opt_newton plot_text plot_body plot_results design_project newton_ip
-TANGLED := $(filter-out $(PRIVATE:%=src/%.h),$(MODULES:%=src/%.h)) \
-           src/qp_private.h src/opt_private.h src/plot_private.h src/design_private.h src/newton_private.h $(MODULES:%=src/%.c) src/main.c $(SCRIPTS)
+TANGLED := $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)
 PROGRAM := $(if $(filter 1,$(SAN)),build/san/contactopt,bin/contactopt)
-OBJ     := $(MODULES:%=$(B)/%.o)
+OBJ     := $(SOURCES:src/%.c=$(B)/%.o)
 
 # The runs behind the figures of Section 5, and the figures (see below).
 EXAMPLES := 5.1 5.2 5.2-flat

@@ -53,11 +53,11 @@ fuzz-replay: $(FUZZ_DIR)/fuzz_scene $(FUZZ_DIR)/fuzz_shape
 
 # The scene adapter reads the modules' defaults and samples the initial
 # shape with the design module, so the fuzzer links every module.
-$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/contract.h tests/fuzz/folder.h $(MODULES:%=src/%.c) \
+$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/contract.h tests/fuzz/folder.h $(SOURCES) \
                         $(filter %.h,$(TANGLED)) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c \
-	  $(MODULES:%=src/%.c) $(LDLIBS)
+	  $(SOURCES) $(LDLIBS)
 
 fuzz-deps:
 	$(call apt_install,fuzz-deps,$(FUZZ_PACKAGES))
@@ -71,8 +71,8 @@ fuzz-shape: $(FUZZ_DIR)/fuzz_shape
 	$(FUZZ_ENV) $< $(FUZZ_SHAPE_RUN) -max_total_time=$(FUZZ_SECONDS) \
 	  -print_final_stats=1 $(FUZZ_DIR)/shape-corpus tests/fuzz/shapes
 
-$(FUZZ_DIR)/fuzz_shape: tests/fuzz/fuzz_shape.c tests/fuzz/contract.h tests/fuzz/folder.h $(MODULES:%=src/%.c) \
+$(FUZZ_DIR)/fuzz_shape: tests/fuzz/fuzz_shape.c tests/fuzz/contract.h tests/fuzz/folder.h $(SOURCES) \
                         $(filter %.h,$(TANGLED)) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_shape.c \
-	  $(MODULES:%=src/%.c) $(LDLIBS)
+	  $(SOURCES) $(LDLIBS)

@@ -1,0 +1,95 @@
+#line 1345 "paper/output.nw"
+#include <errno.h>
+#include <stdio.h>
+#include "output_private.h"
+#include "threads.h"
+
+#line 1390 "paper/output.nw"
+void output_friction(FILE *f, const Model *md)
+{
+  const Problem *p = md->problem;
+  char v[STATUS_NUMBER];
+  if (p->contact == CONTACT_FRICTIONLESS) return;
+  fprintf(f, "contact %s\n", problem_contact_name(p->contact));
+  if (p->contact == CONTACT_TRESCA)
+    fprintf(f, "slip_bound %s\n", status_number(p->slip_bound, v));
+  else fprintf(f, "friction %s\n", status_number(p->friction, v));
+  fprintf(f, "friction_energy %.15g\n", md->friction_energy);
+  if (p->contact == CONTACT_COULOMB)
+    fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
+            md->fixed_point_iterations, md->fixed_point_residual);
+}
+#line 1363 "paper/output.nw"
+int output_solve(Output *o, const Output_run *run, const Model *md,
+                 const double *X, Status *st)
+{
+  const Problem *p = md->problem;
+  int rc = output_state(o, "", md, X, st);
+  FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# name value\n");
+  fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", run->scene,
+          run->state_solver, problem_model_name(p->model));
+  fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
+          p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
+  fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
+          md->report.kkt, md->report.iterations);
+  fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
+          md->seconds);
+  output_friction(f, md);
+  threads_summary(f);
+  return output_close(o, f, st);
+}
+#line 1409 "paper/output.nw"
+int output_matrix_market(const char *path, const Model *md, Status *st)
+{
+  char tmp[1100];
+  snprintf(tmp, sizeof tmp, "%s.partial", path);
+  FILE *f = fopen(tmp, "w");
+  if (!f) return output_errno(st, errno, path, "cannot write");
+  int ok = cholmod_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
+  int memory = !ok && md->cm->status == CHOLMOD_OUT_OF_MEMORY;
+  ok = !ferror(f) && ok;    /* CHOLMOD does not check every fprintf */
+  ok = !fclose(f) && ok;
+  if (ok && rename(tmp, path)) {
+    int rc = output_errno(st, errno, path, "cannot move into place");
+    remove(tmp);
+    return rc;
+  }
+  if (!ok) {
+    remove(tmp);
+    return memory ? status_set(st, STATUS_MEMORY, "%s: out of memory", path)
+                  : status_set(st, STATUS_SYSTEM, "%s: write failed", path);
+  }
+  return STATUS_OK;
+}
+#line 1442 "paper/output.nw"
+static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
+                           Status *st)
+{
+  FILE *f = output_open(o, "gradient.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# i x1[m] dE/dX_i[J/m^2] finite_difference[J/m^2] relative_error\n");
+  for (int k = 0; k < gc->ncheck; k++) {
+    int i = gc->check[k];
+    fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i],
+            gc->G[i], gc->fd[i], gc->err[i]);
+  }
+  return output_close(o, f, st);
+}
+
+int output_gradcheck(Output *o, const Output_run *run, const Model *md,
+                     const Grad_check *gc, Status *st)
+{
+  const Problem *p = md->problem;
+  FILE *f = output_open(o, "summary.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
+             "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
+          run->scene, problem_model_name(p->model), p->N, md->energy,
+          gc->err[gc->worst], gc->worst, gc->ncheck);
+  output_friction(f, md);
+  threads_summary(f);
+  int rc = output_close(o, f, st);
+  return rc ? rc : output_gradient(o, md, gc, st);
+}

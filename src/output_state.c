@@ -1,0 +1,102 @@
+#line 901 "paper/output.nw"
+#include <stdio.h>
+#include "output_private.h"
+
+#line 924 "paper/output.nw"
+double output_u(const Model *md, int node, int c)
+{
+  int k = md->dofs->unknown[2 * node + c];
+  return k < 0 ? 0.0 : md->Q[k];
+}
+#line 933 "paper/output.nw"
+FILE *output_open_in(Output *o, const char *sub, const char *name,
+                     Status *st)
+{
+  char path[256];
+  snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
+  return output_open(o, path, st);
+}
+#line 943 "paper/output.nw"
+static int output_shape(Output *o, const char *sub, const Model *md,
+                        const double *X, Status *st)
+{
+  FILE *f = output_open_in(o, sub, "shape.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# x1[m] alpha[m]\n");
+  for (int i = 0; i < md->mesh->ncol; i++)
+    fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
+  return output_close(o, f, st);
+}
+#line 956 "paper/output.nw"
+static int output_contact(Output *o, const char *sub, const Model *md,
+                          const double *X, Status *st)
+{
+  const Dofs *d = md->dofs;
+  FILE *f = output_open_in(o, sub, "contact.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]%s\n",
+          d->nt ? " u1[m] Tt[N/m]" : "");
+  for (int c = 0, k = 0; c < d->nc; c++) {
+    int i = d->contact_col[c];
+    double u2 = md->Q[d->contact[c]];
+    fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g", md->mesh->xy[2 * i],
+            X[i], u2, u2 + X[i], md->T[c],
+            model_pressure(md, c));
+    
+#line 980 "paper/output.nw"
+if (d->nt) {
+  while (k < d->nt && d->tangent_col[k] < i) k++;
+  int here = k < d->nt && d->tangent_col[k] == i;
+  fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
+          here ? md->T[d->nc + k] : 0.0);
+}
+#line 971 "paper/output.nw"
+    fputc('\n', f);
+  }
+  return output_close(o, f, st);
+}
+#line 989 "paper/output.nw"
+static int output_nodes(Output *o, const char *sub, const Model *md,
+                        Status *st)
+{
+  const Mesh *m = md->mesh;
+  FILE *f = output_open_in(o, sub, "nodes.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# node column row x1[m] x2[m] u1[m] u2[m]\n");
+  for (int k = 0; k < m->nnodes; k++)
+    fprintf(f, "%d %d %d %.15g %.15g %.15g %.15g\n", k, k % m->ncol,
+            k / m->ncol, m->xy[2 * k], m->xy[2 * k + 1], output_u(md, k, 0),
+            output_u(md, k, 1));
+  return output_close(o, f, st);
+}
+#line 1005 "paper/output.nw"
+static int output_triangles(Output *o, const char *sub, const Model *md,
+                            Status *st)
+{
+  const Mesh *m = md->mesh;
+  FILE *f = output_open_in(o, sub, "triangles.dat", st);
+  if (!f) return st->code;
+  fprintf(f, "# x1[m] x2[m] u1[m] u2[m]: each triangle closed, blank-separated\n");
+  for (int t = 0; t < m->ntri; t++) {
+    for (int v = 0; v <= 3; v++) {
+      int k = m->tri[3 * t + v % 3];
+      fprintf(f, "%.15g %.15g %.15g %.15g\n", m->xy[2 * k], m->xy[2 * k + 1],
+              output_u(md, k, 0), output_u(md, k, 1));
+    }
+    fprintf(f, "\n");
+  }
+  return output_close(o, f, st);
+}
+#line 1325 "paper/output.nw"
+int output_state(Output *o, const char *sub, const Model *md,
+                 const double *X, Status *st)
+{
+  int rc;
+  if ((rc = output_shape(o, sub, md, X, st))
+      || (rc = output_contact(o, sub, md, X, st))
+      || (o->plot_files && ((rc = output_nodes(o, sub, md, st))
+                            || (rc = output_triangles(o, sub, md, st))))
+      || (rc = output_vtu(o, sub, md, X, st)))
+    return rc;
+  return STATUS_OK;
+}

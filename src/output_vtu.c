@@ -1,0 +1,208 @@
+#line 1030 "paper/output.nw"
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "output_private.h"
+
+#line 1072 "paper/output.nw"
+typedef struct {
+  const Model *md;          /* the state written */
+  const double *X;          /* its design */
+  double *stress;           /* 5 per triangle: sigma11, sigma22, sigma12,
+                               sigma33, von Mises [Pa] */
+} Vtu_state;
+
+typedef struct {
+  const char *section;      /* PointData, CellData, Points or Cells */
+  const char *name;         /* the array's Name */
+  const char *type;         /* Float64, Int32 or UInt8 */
+  int components;           /* values per point or per cell */
+  size_t count;             /* points or cells */
+  size_t size;              /* bytes per value */
+  int which;                /* the quantity, for a fill of several */
+  void (*fill)(const Vtu_state *s, int which, void *values);
+} Vtu_array;
+#define VTU_MAX_ARRAYS 16
+
+static size_t vtu_bytes(const Vtu_array *a)
+{
+  return a->count * a->components * a->size;
+}
+#line 1131 "paper/output.nw"
+static void vtu_displacement(const Vtu_state *s, int which, void *values)
+{
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++) {
+    v[3 * k] = output_u(s->md, k, 0);
+    v[3 * k + 1] = output_u(s->md, k, 1);
+    v[3 * k + 2] = 0;
+  }
+}
+
+/* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
+static void vtu_contact(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int c = 0; c < d->nc; c++) {
+    int i = d->contact_col[c];
+    v[i] = which == 0 ? s->md->Q[d->contact[c]] + s->X[i]
+                      : model_pressure(s->md, c);
+  }
+}
+
+static void vtu_contact_node(const Vtu_state *s, int which, void *values)
+{
+  uint8_t *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes);
+  for (int c = 0; c < s->md->dofs->nc; c++) v[s->md->dofs->contact_col[c]] = 1;
+}
+
+/* the nodal friction force T_t [N/m], 0 where u1 is held */
+static void vtu_tangential(const Vtu_state *s, int which, void *values)
+{
+  const Dofs *d = s->md->dofs;
+  double *v = values;
+  (void) which;
+  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
+}
+#line 1191 "paper/output.nw"
+static void vtu_triangle_stress(const Model *md, int t, double s[5])
+{
+  long double e[3], sigma[3];
+  fem_triangle_strain(md->mesh, md->dofs, md->Q, t, e);
+  fem_element_stress(&md->hooke, e, sigma);
+  for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
+  s[3] = md->problem->model == MODEL_PLANE_STRAIN
+       ? (double) (md->hooke.D[0][1] * (e[0] + e[1])) : 0.0;
+  s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
+                     + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
+}
+
+static void vtu_stress(const Vtu_state *s, int which, void *values)
+{
+  double *v = values;
+  for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
+}
+#line 1215 "paper/output.nw"
+static void vtu_points(const Vtu_state *s, int which, void *values)
+{
+  const double *xy = s->md->mesh->xy;
+  double *v = values;
+  (void) which;
+  for (int k = 0; k < s->md->mesh->nnodes; k++)
+    v[3 * k] = xy[2 * k], v[3 * k + 1] = xy[2 * k + 1], v[3 * k + 2] = 0;
+}
+
+/* which 0: the connectivity, 3 vertices per triangle; 1: the offsets */
+static void vtu_cells(const Vtu_state *s, int which, void *values)
+{
+  const Mesh *m = s->md->mesh;
+  int32_t *v = values;
+  for (int t = 0; t < m->ntri; t++)
+    if (which == 1) v[t] = 3 * (t + 1);
+    else for (int k = 0; k < 3; k++) v[3 * t + k] = m->tri[3 * t + k];
+}
+
+static void vtu_types(const Vtu_state *s, int which, void *values)
+{
+  (void) which;
+  memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
+}
+#line 1100 "paper/output.nw"
+static const char *const vtu_stress_names[5] =
+  { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
+
+static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
+{
+  size_t np = md->mesh->nnodes, nt = md->mesh->ntri, d = sizeof(double);
+  int n = 0;
+  a[n++] = (Vtu_array) { "PointData", "displacement", "Float64", 3, np, d, 0, vtu_displacement };
+  a[n++] = (Vtu_array) { "PointData", "gap", "Float64", 1, np, d, 0, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "pressure", "Float64", 1, np, d, 1, vtu_contact };
+  a[n++] = (Vtu_array) { "PointData", "contact_node", "UInt8", 1, np, 1, 0, vtu_contact_node };
+  if (md->dofs->nt)
+    a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d,
+                           0, vtu_tangential };
+  for (int k = 0; k < 5; k++)
+    a[n++] = (Vtu_array) { "CellData", vtu_stress_names[k], "Float64", 1, nt, d, k, vtu_stress };
+  a[n++] = (Vtu_array) { "Points", "Points", "Float64", 3, np, d, 0, vtu_points };
+  a[n++] = (Vtu_array) { "Cells", "connectivity", "Int32", 1, 3 * nt, 4, 0, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "offsets", "Int32", 1, nt, 4, 1, vtu_cells };
+  a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
+  return n;
+}
+#line 1244 "paper/output.nw"
+static const char *vtu_byte_order(void)
+{
+  const uint16_t one = 1;
+  return *(const uint8_t *) &one ? "LittleEndian" : "BigEndian";
+}
+
+static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
+{
+  unsigned long long offset = 0;
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+             "version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
+             "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" "
+             "NumberOfCells=\"%d\">\n", vtu_byte_order(), m->nnodes, m->ntri);
+  for (int k = 0; k < n; k++) {
+    if (k > 0 && strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "</%s>\n", a[k - 1].section);
+    if (k == 0 || strcmp(a[k].section, a[k - 1].section))
+      fprintf(f, "<%s>\n", a[k].section);
+    fprintf(f, "<DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
+               "format=\"appended\" offset=\"%llu\"/>\n", a[k].type, a[k].name,
+            a[k].components, offset);
+    offset += sizeof(uint64_t) + vtu_bytes(&a[k]);
+  }
+  fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
+             "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
+}
+#line 1275 "paper/output.nw"
+static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
+                     void *values)
+{
+  for (int k = 0; k < n; k++) {
+    uint64_t bytes = vtu_bytes(&a[k]);
+    a[k].fill(s, a[k].which, values);
+    fwrite(&bytes, sizeof bytes, 1, f);
+    fwrite(values, 1, bytes, f);
+  }
+  fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
+}
+#line 1291 "paper/output.nw"
+int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
+{
+  Vtu_array a[VTU_MAX_ARRAYS];
+  int n = vtu_arrays(md, a);
+  size_t most = 0, nt = md->mesh->ntri;
+  for (int k = 0; k < n; k++) most = vtu_bytes(&a[k]) > most ? vtu_bytes(&a[k]) : most;
+  Vtu_state s = { md, X, malloc(5 * nt * sizeof(double)) };
+  void *values = malloc(most);
+  if (!s.stress || !values) {
+    free(s.stress), free(values);
+    return status_set(st, STATUS_MEMORY, "solution.vtu: out of memory");
+  }
+  for (size_t t = 0; t < nt; t++) vtu_triangle_stress(md, (int) t, s.stress + 5 * t);
+  vtu_header(f, md->mesh, a, n);
+  vtu_data(f, &s, a, n, values);
+  free(s.stress), free(values);
+  return STATUS_OK;
+}
+#line 1312 "paper/output.nw"
+int output_vtu(Output *o, const char *sub, const Model *md,
+               const double *X, Status *st)
+{
+  FILE *f = output_open_in(o, sub, "solution.vtu", st);
+  if (!f) return st->code;
+  int rc = output_vtu_write(f, md, X, st);
+  int rc_close = output_close(o, f, st);
+  return rc ? rc : rc_close;
+}

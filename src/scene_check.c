@@ -1,0 +1,357 @@
+#line 1537 "paper/scene.nw"
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "friction.h"
+#include "scene_private.h"
+
+#line 1586 "paper/scene.nw"
+/* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
+#define WINDOW_MIN 1e-30
+#define WINDOW_MAX 1e30
+/* the rounding of a ratio of decimals, relative: within it of a bound is on it */
+#define WINDOW_ROUNDING (4 * DBL_EPSILON)
+
+/* whether |x| / unit lies in the window, up to the rounding of the ratio
+   (false if it overflows) */
+static int in_window(double x, double unit)
+{
+  double r = fabs(x) / unit;
+  return r >= WINDOW_MIN * (1 - WINDOW_ROUNDING)
+         && r <= WINDOW_MAX * (1 + WINDOW_ROUNDING);
+}
+
+/* buf = r, outside the window, with three digits or the fewest more
+   that still read outside it */
+static const char *outside(double r, char *buf)
+{
+  int digits = 3;
+  while (digits < 17 && in_window(strtod(status_digits(r, digits, buf), NULL), 1))
+    digits++;
+  return buf;
+}
+
+/* refuse the load x = the value converted last, times `times`, unless
+   it is 0 or in the window times E; what names it in the message */
+static int check_load(Loader *L, const Scene *s, double x, double times,
+                      const char *what)
+{
+  char r[STATUS_NUMBER];
+  if (x == 0 || in_window(x * times, s->problem.E)) return 0;
+  return scene_blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
+                     "1e30] times E, where every product the solvers form is "
+                     "finite", what, outside(fabs(x) * times / s->problem.E, r));
+}
+#line 1631 "paper/scene.nw"
+/* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
+static int read_geometry(Loader *L, Scene *s)
+{
+  char w[STATUS_NUMBER];
+  int rc;
+  if ((rc = scene_get(L, s, "geometry", "a"))
+      || (rc = scene_get(L, s, "geometry", "b")))
+    return rc;
+  if (!(s->problem.b > s->problem.a))
+    return scene_blame(L, "must exceed geometry.a = %s",
+                       status_number(s->problem.a, w));
+  if (!isfinite(s->problem.b - s->problem.a))
+    return scene_blame(L, "the width b - a overflows a double");
+  if (!in_window(s->problem.b - s->problem.a, 1))
+    return scene_blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
+                       "every product the solvers form is finite",
+                       outside(s->problem.b - s->problem.a, w));
+  if ((rc = scene_get(L, s, "geometry", "gamma"))) return rc;
+  if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
+    return scene_blame(L, "the area gamma (b - a) overflows a double");
+  return 0;
+}
+#line 1663 "paper/scene.nw"
+/* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
+static int read_design(Loader *L, Scene *s)
+{
+  int rc;
+  if ((rc = scene_get(L, s, "design", "N"))) return rc;
+  if (s->problem.N < 1) return scene_blame(L, "must be >= 1 (design intervals)");
+  if ((rc = scene_get(L, s, "design", "C0"))) return rc;
+  if (!(s->problem.C0 > 0))
+    return scene_blame(L, "must be > 0 (the bound of alpha)");
+  if ((rc = scene_get(L, s, "design", "C1"))) return rc;
+  if (!(s->problem.C1 >= 0))
+    return scene_blame(L, "must be >= 0 (the bound of |alpha'|)");
+  if ((rc = scene_get(L, s, "design", "C2"))) return rc;
+  if (!(s->problem.C2 > 0))
+    return scene_blame(L, "must be > 0 (the area of the body)");
+  return 0;
+}
+#line 1692 "paper/scene.nw"
+/* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
+   refinement, C0 < C0prime < gamma */
+static int read_mesh(Loader *L, Scene *s)
+{
+  char v[STATUS_NUMBER];
+  int rc, k;
+  if ((rc = scene_get(L, s, "mesh", "M"))) return rc;
+  if (s->problem.M < 1)
+    return scene_blame(L, "must be >= 1 (moving rows of cells)");
+  if ((rc = scene_get(L, s, "mesh", "R"))) return rc;
+  if (s->problem.R < 1) return scene_blame(L, "must be >= 1 (fixed rows of cells)");
+  if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
+  if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
+  
+#line 1730 "paper/scene.nw"
+if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
+  return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : "R"),
+                   "with design.N = %d, mesh.M = %d, mesh.R = %d and "
+                   "mesh.refine = %d the mesh has 2 N (M + R) = %.0f triangles, "
+                   "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
+                   "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
+                   2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
+#line 1706 "paper/scene.nw"
+  s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
+  if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
+  if (!(s->problem.C0prime > s->problem.C0))
+    return scene_blame(L, "must exceed design.C0 = %s: the moving boundary must "
+                       "stay below the fixed part of the mesh",
+                       status_number(s->problem.C0, v));
+  if (!(s->problem.gamma > s->problem.C0prime))
+    return scene_bad(L, scene_find(L, "geometry", "gamma"), "must exceed mesh.C0prime "
+                     "= %s: the fixed part of the mesh needs a height",
+                     status_number(s->problem.C0prime, v));
+  return 0;
+}
+#line 1761 "paper/scene.nw"
+/* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
+static int check_admissible(Loader *L, Scene *s)
+{
+  double w = s->problem.b - s->problem.a, S = s->problem.gamma * w - s->problem.C2;
+  double slack = 1e-12 * s->problem.gamma * w;
+  char v[2][STATUS_NUMBER];
+  if (S >= -slack && S <= s->problem.C0 * w + slack) return 0;
+  return scene_bad(L, scene_find(L, "design", "C2"), "C0, C1, C2 admit no shape: the "
+                   "area under alpha would be S = gamma (b-a) - C2 = %s, outside "
+                   "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
+                   status_number(s->problem.C0 * w, v[1]));
+}
+#line 2130 "paper/scene.nw"
+/* [material]: E > 0, -1 < nu < 1/2, the plane model */
+static int read_material(Loader *L, Scene *s)
+{
+  int rc;
+  if ((rc = scene_get(L, s, "material", "E"))) return rc;
+  if (!(s->problem.E > 0)) return scene_blame(L, "Young's modulus must be > 0");
+  if (!in_window(s->problem.E, 1))
+    return scene_blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
+                       "product the solvers form is finite");
+  if ((rc = scene_get(L, s, "material", "nu"))) return rc;
+  if (!(s->problem.nu < 0.5))
+    return scene_blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
+                       "where this displacement method locks");
+  if (!(s->problem.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
+  return scene_get(L, s, "material", "model");
+}
+#line 2156 "paper/scene.nw"
+/* the loaded interval [from, to] inside the side, and a non-zero P */
+static int read_traction(Loader *L, Scene *s, Side_id id)
+{
+  const char *sec = scene_side_names[id];
+  Side *d = &s->problem.side[id];
+  char v[2][STATUS_NUMBER];
+  int rc;
+  
+#line 2178 "paper/scene.nw"
+double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
+double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
+const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
+  "the part of the side the design never moves, [C0prime, gamma]";
+if ((rc = scene_get(L, s, sec, "from"))) return rc;
+if (!(d->from >= lo))
+  return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+                     status_number(lo, v[0]), status_number(hi, v[1]));
+if ((rc = scene_get(L, s, sec, "to"))) return rc;
+if (!(d->to > d->from))
+  return scene_blame(L, "must exceed %s.from = %s", sec,
+                     status_number(d->from, v[0]));
+if (!(d->to <= hi))
+  return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
+                     status_number(lo, v[0]), status_number(hi, v[1]));
+#line 2164 "paper/scene.nw"
+  if ((rc = scene_get(L, s, sec, "P1"))
+      || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
+      || (rc = scene_get(L, s, sec, "P2"))
+      || (rc = check_load(L, s, d->P[1], 1, "|P2|")))
+    return rc;
+  if (d->P[0] == 0 && d->P[1] == 0)
+    return scene_bad(L, scene_find(L, sec, "bc"), "the traction (%s.P1, %s.P2) is "
+                     "zero: use bc = free", sec, sec);
+  return 0;
+}
+#line 2197 "paper/scene.nw"
+/* [left], [right] or [top]: the condition, free when not given */
+static int read_side(Loader *L, Scene *s, Side_id id)
+{
+  const char *sec = scene_side_names[id];
+  Bc_kind *kind = &s->problem.side[id].kind;
+  int rc;
+  if ((rc = scene_get(L, s, sec, "bc"))
+      || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[*kind])))
+    return rc;
+  return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
+}
+#line 2268 "paper/scene.nw"
+/* the three sides */
+static int read_sides(Loader *L, Scene *s)
+{
+  int id, rc;
+  for (id = 0; id < SIDE_COUNT; id++)
+    if ((rc = read_side(L, s, (Side_id)id))) return rc;
+  return 0;
+}
+#line 2225 "paper/scene.nw"
+/* some side holds u1, or friction can hold the body sideways */
+static int check_held(Loader *L, Scene *s)
+{
+  const Problem *p = &s->problem;
+  Friction_hold h = friction_hold(p);
+  char sides[96];
+  if (friction_side_holds(p, 0)) return 0;
+  snprintf(sides, sizeof sides, "left.bc = %s, right.bc = %s, top.bc = %s",
+           problem_bc_name(p->side[0].kind), problem_bc_name(p->side[1].kind),
+           problem_bc_name(p->side[2].kind));
+  if (p->contact == CONTACT_FRICTIONLESS)
+    return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
+                      "stop the body sliding (singular problem)", L->path, sides);
+  
+#line 2245 "paper/scene.nw"
+if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
+  return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
+                    "friction's bound, its coefficient times the normal forces, "
+                    "is not known before the solve (their sum is the vertical load "
+                    "only when no side holds u2); use contact.model = tresca, or "
+                    "hold u1 on a side", L->path, sides);
+#line 2239 "paper/scene.nw"
+  if (h.capacity > h.load) return 0;
+  
+#line 2254 "paper/scene.nw"
+if (p->contact == CONTACT_TRESCA)
+  return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
+                    "body: contact.g = %g Pa holds at most g (b - a) = %g N/m "
+                    "sideways, not more than the horizontal load of %g N/m", L->path, sides,
+                    p->slip_bound, h.capacity, h.load);
+return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
+                  "body: contact.friction = %g times the vertical load %g N/m "
+                  "holds at most %g N/m sideways, not more than the horizontal load "
+                  "of %g N/m",
+                  L->path, sides, p->friction, h.vertical, h.capacity, h.load);
+#line 2241 "paper/scene.nw"
+}
+#line 2311 "paper/scene.nw"
+/* [contact] model, and g or friction as the law needs */
+static int read_contact(Loader *L, Scene *s)
+{
+  static const char *const law_key[] = {NULL, "g", "friction"};
+  Problem *p = &s->problem;
+  int k, rc;
+  if ((rc = scene_get(L, s, "contact", "model"))
+      || (rc = scene_refuse_unused(L, "contact", "model",
+                                   problem_contact_names[p->contact])))
+    return rc;
+  if ((k = p->contact) == CONTACT_FRICTIONLESS) return 0;
+  if ((rc = scene_get(L, s, "contact", law_key[k]))) return rc;
+  if (!((k == CONTACT_TRESCA ? p->slip_bound : p->friction) >= 0))
+    return scene_blame(L, "must be >= 0 (%s)", k == CONTACT_TRESCA ? "a slip bound "
+                       "in Pa" : "a friction coefficient");
+  if (k == CONTACT_TRESCA) return check_load(L, s, p->slip_bound, 1, "g");
+  if (!(p->friction <= WINDOW_MAX))
+    return scene_blame(L, "must be <= 1e30: it multiplies a contact force");
+  if ((rc = scene_get(L, s, "contact", "max_fixed_point")))
+    return rc;
+  if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
+  return 0;
+}
+#line 2293 "paper/scene.nw"
+/* [body_force] F, [contact] model; then what holds the body sideways */
+static int read_loads(Loader *L, Scene *s)
+{
+  int rc;
+  double w = s->problem.b - s->problem.a;
+  if ((rc = scene_get(L, s, "body_force", "F1"))
+      || (rc = check_load(L, s, s->problem.F[0], w, "|F1| (b - a)"))
+      || (rc = scene_get(L, s, "body_force", "F2"))
+      || (rc = check_load(L, s, s->problem.F[1], w, "|F2| (b - a)")))
+    return rc;
+  s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
+  if ((rc = read_contact(L, s))) return rc;
+  return check_held(L, s);
+}
+#line 2343 "paper/scene.nw"
+/* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
+static int read_solver(Loader *L, Scene *s)
+{
+  Qp_options *o = &s->solver;
+  int rc;
+  if ((rc = scene_get(L, s, "solver", "state"))) return rc;
+  if (o->method == QP_PSOR && s->problem.contact != CONTACT_FRICTIONLESS)
+    return scene_blame(L, "cannot take friction (contact.model = %s): a slip bound "
+                       "bounds a force, and psor bounds unknowns; use pdas or cgssor",
+                       problem_contact_name(s->problem.contact));
+  
+#line 2371 "paper/scene.nw"
+if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
+    && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
+  return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
+                     "the sides do not hold in both directions (left.bc = %s, "
+                     "right.bc = %s, top.bc = %s): its dual needs the stiffness "
+                     "seen from the contact positive definite; use pdas",
+                     problem_contact_name(s->problem.contact),
+                     problem_bc_name(s->problem.side[0].kind),
+                     problem_bc_name(s->problem.side[1].kind),
+                     problem_bc_name(s->problem.side[2].kind));
+#line 2354 "paper/scene.nw"
+  if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
+  if (!(o->tol > 0 && o->tol < 1))
+    return scene_blame(L, "must lie in (0, 1): it is a relative residual");
+  if ((rc = scene_get(L, s, "solver", "max_iter"))) return rc;
+  if (o->max_iter < 1) return scene_blame(L, "must be >= 1");
+  if ((rc = scene_get(L, s, "solver", "omega"))) return rc;
+  if (!(o->omega > 0 && o->omega < 2))
+    return scene_blame(L, "must lie in (0, 2), where SOR converges");
+  return 0;
+}
+#line 2393 "paper/scene.nw"
+/* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1 */
+static int read_optimizer(Loader *L, Scene *s)
+{
+  Opt_options *o = &s->optimizer;
+  int rc;
+  if ((rc = scene_get(L, s, "optimizer", "method"))
+      || (rc = scene_refuse_unused(L, "optimizer", "method",
+                                   opt_method_names[o->method])))
+    return rc;
+  o->metric = opt_options_default(o->method).metric;
+  if (o->method != OPT_NEWTON && (rc = scene_get(L, s, "optimizer", "metric")))
+    return rc;
+  if (o->method == OPT_PROJGRAD && o->metric == OPT_METRIC_SCHUR)
+    return scene_blame(L, "schur needs optimizer.method = slsqp: Algorithm 4.1 "
+                       "projects in the euclidean metric");
+  if ((rc = scene_get(L, s, "optimizer", "tol"))) return rc;
+  if (!(o->tol > 0 && o->tol < 1))
+    return scene_blame(L, "must lie in (0, 1): it is a relative measure");
+  if ((rc = scene_get(L, s, "optimizer", "max_iter"))) return rc;
+  if (o->max_iter < 1) return scene_blame(L, "must be >= 1");
+  return 0;
+}
+#line 2425 "paper/scene.nw"
+/* the scene = the table, checked */
+int scene_convert(Loader *L, Scene *s)
+{
+  static int (*const step[])(Loader *, Scene *) = {read_geometry,
+    read_design, read_mesh, check_admissible, scene_read_initial, read_material,
+    read_sides, read_loads, read_solver, read_optimizer};
+  size_t i;
+  int rc = 0;
+  for (i = 0; !rc && i < sizeof step / sizeof step[0]; i++)
+    rc = step[i](L, s);
+  return rc;
+}
