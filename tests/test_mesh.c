@@ -9,25 +9,7 @@
 #include "problem.h"
 #include "mesh.h"
 
-static Problem free_body(int N, int M, int R, Plane_model model)
-{
-  Problem p;
-  memset(&p, 0, sizeof p);
-  p.a = 0; p.b = 4; p.gamma = 1; p.N = N; p.M = M; p.R = R;
-  p.C0 = 0.05; p.C0prime = 0.25; p.E = 2.15e11; p.nu = 0.29; p.model = model;
-  return p;                          /* every side free: all DOFs unknowns */
-}
-
-/* an arc-shaped, non-uniform design so that no triangle is a right one */
-static void design(int N, double *X)
-{
-  for (int i = 0; i <= N; i++) {
-    double x = 4.0 * i / N;
-    X[i] = 160.025 - sqrt(160.025 * 160.025 - (x - 4) * (x - 4))
-         + 0.01 * sin(3.0 * i);
-    if (X[i] < 0) X[i] = 0;
-  }
-}
+#include "free_body.h"
 
 /* Fig. 5.2a: 128 triangles, 17 contact nodes; orientation; (4.2) */
 static void article_mesh(void)
