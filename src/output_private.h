@@ -34,7 +34,7 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st);
 /* solution.vtu in the sub-folder sub: the state of md at X */
 int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
                Status *st);
-#line 1357 "paper/output.nw"
+#line 1358 "paper/output.nw"
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
 #line 300 "paper/output.nw"

@@ -177,7 +177,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1291 "paper/output.nw"
+#line 1292 "paper/output.nw"
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -196,7 +196,7 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1312 "paper/output.nw"
+#line 1313 "paper/output.nw"
 int output_vtu(Output *o, const char *sub, const Model *md,
                const double *X, Status *st)
 {

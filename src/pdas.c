@@ -1,4 +1,4 @@
-#line 227 "paper/pdas.nw"
+#line 229 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,12 +7,12 @@
 #include "qp_private.h"
 #include "condense.h"
 
-#line 315 "paper/pdas.nw"
+#line 317 "paper/pdas.nw"
 #define SINGULAR (-1)    /* a Newton matrix is singular (not a Status_code) */
-#line 320 "paper/pdas.nw"
+#line 322 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 
-#line 267 "paper/pdas.nw"
+#line 269 "paper/pdas.nw"
 /* the guide's vectors, nc each; nonzero when out of memory */
 static int alloc_guide(Pdas_guide *ip, size_t nc)
 {
@@ -38,7 +38,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 294 "paper/pdas.nw"
+#line 296 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -48,7 +48,7 @@ void pdas_free(Qp_workspace *w)
   free(pd->ip.b), free(pd->ip.db), free(pd->ip.ab);
 }
 
-#line 243 "paper/pdas.nw"
+#line 245 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
@@ -67,7 +67,7 @@ static int count_act(const Qp_workspace *w)
   return m;
 }
 
-#line 401 "paper/pdas.nw"
+#line 403 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int pdas_newton_step(Qp_workspace *w)
 {
@@ -76,7 +76,7 @@ static int pdas_newton_step(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 425 "paper/pdas.nw"
+#line 427 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (cd->act[c] == CONDENSE_HELD) cd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -88,7 +88,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) cd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 409 "paper/pdas.nw"
+#line 411 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -99,7 +99,7 @@ for (int a = 0; a < m; a++) {
   return STATUS_OK;
 }
 
-#line 507 "paper/pdas.nw"
+#line 509 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -118,7 +118,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 529 "paper/pdas.nw"
+#line 531 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -139,7 +139,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 488 "paper/pdas.nw"
+#line 490 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -155,7 +155,7 @@ static int hold_stopping(Qp_workspace *w)
   return held > 0;
 }
 
-#line 559 "paper/pdas.nw"
+#line 561 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -191,13 +191,13 @@ static int guide_start(Qp_workspace *w)
       ip->s[c] = slide, ip->t[c] = w->flo[c];
     } else {
       
-#line 608 "paper/pdas.nw"
+#line 610 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 594 "paper/pdas.nw"
+#line 596 "paper/pdas.nw"
     }
   }
   memcpy(ip->pred, cd->act, (size_t) nk);   /* its first prediction */
@@ -205,7 +205,7 @@ if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
   return 1;
 }
 
-#line 654 "paper/pdas.nw"
+#line 656 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -339,7 +339,7 @@ static int guide_step(Qp_workspace *w)
   return !inside;
 }
 
-#line 795 "paper/pdas.nw"
+#line 797 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -365,17 +365,17 @@ static void guide(Qp_workspace *w)
   ip->guided = 1;
 }
 
-#line 324 "paper/pdas.nw"
+#line 326 "paper/pdas.nw"
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!w->cond->condensed) {
     
-#line 352 "paper/pdas.nw"
+#line 354 "paper/pdas.nw"
 if ((code = condense_factor(w, st))) return code;
 if (pd->warm) condense_states_at_x(w);
-#line 330 "paper/pdas.nw"
+#line 332 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
@@ -394,7 +394,7 @@ if (pd->warm) condense_states_at_x(w);
   condense_forces(w);
   w->kkt = condense_kkt(w);
   
-#line 372 "paper/pdas.nw"
+#line 374 "paper/pdas.nw"
 int same = condense_predict(w), solved = w->kkt <= w->opt.tol;
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = condense_expand(w, st))) return code;
@@ -404,5 +404,5 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 348 "paper/pdas.nw"
+#line 350 "paper/pdas.nw"
 }
