@@ -4,15 +4,14 @@
 #include "status.h"
 #include "model.h"
 
-/* STATUS_INPUT, naming origin and the command that needs it, when E has
-   no gradient: a Coulomb state minimises no energy */
-int grad_available(const Problem *p, const char *origin, const char *command,
-                   Status *st);
+/* 1 if E has a gradient: not under Coulomb friction, whose state
+   minimises no energy */
+int grad_available(const Problem *p);
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
    model solved last.  It is a checked error to call it before a solve,
    or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 74 "paper/grad.nw"
+#line 73 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */
@@ -38,5 +37,5 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
 /* the state solves that grad_check(md, X, gc, ...) takes, md's problem's */
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X);
-#line 48 "paper/grad.nw"
+#line 47 "paper/grad.nw"
 #endif

@@ -218,10 +218,18 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
   fflush(stdout);
 }
 #line 542 "paper/main.nw"
+/* the refusal of a command that needs the gradient of an energy */
+static int no_gradient(const Run *r, const char *command, Status *st)
+{
+  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: %s needs "
+                    "the gradient of an energy, and a Coulomb state minimises "
+                    "none (contact.model = tresca has one)", r->s.path, command);
+}
+
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
-  if (grad_available(&r->s.problem, r->s.path, "gradcheck", st)) return st->code;
+  if (!grad_available(&r->s.problem)) return no_gradient(r, "gradcheck", st);
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
   Gradcheck_progress g = { 0, 0, 0 };
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
@@ -239,7 +247,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 710 "paper/main.nw"
+#line 718 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -249,7 +257,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 726 "paper/main.nw"
+#line 734 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -262,7 +270,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 747 "paper/main.nw"
+#line 755 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -273,7 +281,7 @@ static int command_optimize(Run *r, Status *st)
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
-  if (grad_available(&r->s.problem, r->s.path, "optimize", st)) rc = st->code;
+  if (!grad_available(&r->s.problem)) rc = no_gradient(r, "optimize", st);
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = begin(r, &o, st))) {
@@ -310,7 +318,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 804 "paper/main.nw"
+#line 812 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -329,7 +337,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 834 "paper/main.nw"
+#line 842 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -345,7 +353,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 862 "paper/main.nw"
+#line 870 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },
