@@ -23,7 +23,10 @@
 # the signal as exit 130 too, without a line; the signals are caught while
 # a staging folder exists, so such a run was killed before it staged its
 # folder (which is as it was) or after the commit (the new run's folder
-# complete), which the folder checks confirm.
+# complete), which the folder checks confirm. With two signals, the first
+# may come after the last iterate and the second after the commit: the
+# first's line, then the default action, and the new run's folder
+# complete.
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 SEED=${INTERRUPT_SEED:-19}
@@ -101,7 +104,7 @@ leg() { name=$1; shift
     elif [ $rc -eq 0 ] && [ $final -eq 0 ] && same_run $d/ref $out; then how=finished
     elif [ $rc -eq 130 ] && [ $first -eq 1 ] && [ $final -eq 1 -o "${twice:-0}" = 1 ] && stopped $out $d/ref; then how=stopped
     elif [ $rc -eq 130 ] && [ $first -eq 0 ] && untouched "$prev" $out; then how=before
-    elif [ $rc -eq 130 ] && [ $first -eq 0 ] && same_run $d/ref $out; then how=after
+    elif [ $rc -eq 130 ] && [ $first -eq 0 -o "${twice:-0}" = 1 ] && same_run $d/ref $out; then how=after
     elif [ $rc -eq 130 ] && [ "${twice:-0}" = 1 ] && [ $final -eq 0 ] && untouched "$prev" $out; then how=killed
     else how=; fi
     if [ -z "$how" ] || [ $left -ne 0 ]; then
