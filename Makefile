@@ -182,6 +182,8 @@ check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) tangle-check $(RUNS
 # (tests/kernels/programs.sh), the optimisation of every shipped and suite
 # scene at mesh.refine 1 and 4 under Haswell's, Sandybridge's and Prescott's
 # kernels (tests/kernels/optimize.sh; make check-kernels-full adds refine 8),
+# every optimiser on the thin bodies of tests/hard_cases.sh in plane stress
+# and strain, which must end alike in as many iterations,
 # and the suite again under each of KERNEL_SETTINGS: unknown-cpu, every
 # test on 16 cores of a CPU that OpenBLAS does not know (its Prescott
 # kernels, chosen by OpenBLAS, not by the user, and the threads OpenBLAS
@@ -202,6 +204,9 @@ NUMERIC_SCRIPTS := $(patsubst %,tests/%.sh,optimize suite friction hard_cases so
 check-kernels: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) $(RUNS)
 	@TESTS=$(B)/tests sh tests/kernels/programs.sh
 	@BIN=$(PROGRAM) REFINES="$(KERNEL_REFINES)" sh tests/kernels/optimize.sh
+	@$(foreach m,plane_stress plane_strain,BIN=$(PROGRAM) REFINES=1 ITERATIONS=1 \
+	    METHODS="slsqp newton projgrad" SCENES="$(wildcard tests/scenes/hard-thin*.scene)" \
+	    OVERRIDES=material.model=$(m) sh tests/kernels/optimize.sh;)
 	@$(foreach k,$(KERNEL_SETTINGS),env $(kernel_env.$(k)) BIN=$(PROGRAM) TESTS=$(B)/tests \
 	    UNKNOWN_CPU=$(UNKNOWN_CPU) SCRIPTS="$(kernel_scripts.$(k))" LOG=build/tests-$(k).log \
 	    sh tests/run | tail -n 1 | sed "s/^/check-kernels: $(k): /";) \

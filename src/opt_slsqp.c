@@ -13,13 +13,13 @@ typedef struct {
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 799 "paper/opt.nw"
+#line 805 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
   Metric metric;
   double best;            /* the lowest E evaluated */
-  double best_noise;      /* the rounding of E there */
+  double best_band;       /* delta E + C0 v |grad E|_1 there */
   double *bestX;          /* n: where; the last accepted iterate */
   int k;                  /* accepted iterates so far */
   int stalled;            /* evaluations since the last accepted one */
@@ -95,14 +95,22 @@ static double area_constraint(unsigned n, const double *y, double *grad,
     }
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 816 "paper/opt.nw"
+#line 822 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 825 "paper/opt.nw"
-static void slsqp_accept(Slsqp *q);
+#line 831 "paper/opt.nw"
+/* delta E + C0 v |grad E|_1 at the evaluator's design, v its violation of B */
+static double slsqp_band(const Evaluator *ev, double v)
+{
+  double g1 = 0;
+  for (int i = 0; i < ev->n; i++) g1 += fabs(ev->G[i]);
+  return ev->noise + ev->B->C0 * v * g1;
+}
+
+static void slsqp_accept(Slsqp *q, double band);
 static double slsqp_objective(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -115,25 +123,25 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = opt_evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 848 "paper/opt.nw"
+#line 862 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 838 "paper/opt.nw"
-  if (ev->E <= q->best + q->best_noise + ev->noise
-      && design_violation(ev->B, X) <= OPT_IN_B
-      && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q);
+#line 852 "paper/opt.nw"
+  double v = design_violation(ev->B, X), band = slsqp_band(ev, v);
+  if (ev->E <= q->best + q->best_band + band && v <= OPT_IN_B
+      && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q, band);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->E / q->metric.scale;
 }
-#line 857 "paper/opt.nw"
-static void slsqp_accept(Slsqp *q)
+#line 871 "paper/opt.nw"
+static void slsqp_accept(Slsqp *q, double band)
 {
   Evaluator *ev = q->ev;
   double pg;
-  if (ev->E < q->best) q->best = ev->E, q->best_noise = ev->noise;
+  if (ev->E < q->best) q->best = ev->E, q->best_band = band;
   q->stalled = 0;
   q->fresh += q->k > 0;
   if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) {
@@ -150,7 +158,7 @@ static void slsqp_accept(Slsqp *q)
   else if (idle >= OPT_FEW) slsqp_stop(q, "no_progress"), opt_idle_detail(ev);
   q->k++;
 }
-#line 884 "paper/opt.nw"
+#line 898 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -165,7 +173,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = model_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 904 "paper/opt.nw"
+#line 918 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -187,11 +195,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 898 "paper/opt.nw"
+#line 912 "paper/opt.nw"
   ev->rep->metric_seconds += model_clock() - start;
   return rc;
 }
-#line 934 "paper/opt.nw"
+#line 948 "paper/opt.nw"
 int opt_slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -208,7 +216,7 @@ int opt_slsqp(Evaluator *ev, double *X)
       break;
     }
     
-#line 957 "paper/opt.nw"
+#line 971 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -217,7 +225,7 @@ if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
 if (r > 0) r = nlopt_optimize(q.opt, y, &f);
 nlopt_destroy(q.opt);
-#line 974 "paper/opt.nw"
+#line 988 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 more = !rc && !ev->rep->stop_reason[0]
@@ -226,19 +234,19 @@ if (!rc && !more && !ev->rep->stop_reason[0]) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
   
-#line 991 "paper/opt.nw"
+#line 1005 "paper/opt.nw"
 if (r != NLOPT_MAXEVAL_REACHED)
   snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "SLSQP, %s, found no "
            "new iterate: %s%s", ev->rep->iterations ? "restarted from its last iterate"
            : "from the start", r == NLOPT_FORCED_STOP ? "its line search found no design "
            "in B with a lower energy" : "NLopt ended it as ",
            r == NLOPT_FORCED_STOP ? "" : nlopt_result_to_string(r));
-#line 982 "paper/opt.nw"
+#line 996 "paper/opt.nw"
 }
 if (!rc) rc = opt_evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 950 "paper/opt.nw"
+#line 964 "paper/opt.nw"
   }
   free(work);
   return rc;
