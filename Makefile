@@ -12,7 +12,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # optimisers, the projection onto B, the interior point of the Newton
 # model, the figures' parts, the parts of the scene and output modules),
 # which share the module's private header; and the program.
-MODULES := status problem scene mesh fem qp condense friction model grad design newton opt output usage interrupt args threads plot
+MODULES := status resources problem scene mesh fem qp condense friction model grad design newton opt output usage interrupt args threads plot
 INNER   := pdas mprgp psor design_project newton_ip opt_projgrad opt_slsqp opt_newton \
            plot_text plot_body plot_results \
            scene_keys scene_ini scene_value scene_check scene_shape scene_write \
@@ -23,7 +23,7 @@ SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
            src/man.sh src/completion.sh
-TANGLED := $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c $(SCRIPTS)
+TANGLED := $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)
@@ -66,7 +66,7 @@ PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             texlive-latex-recommended texlive-fonts-recommended
 
 .PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean install uninstall
-all: $(PROGRAM) $(B)/contactopt.1 $(B)/contactopt.bash
+all: $(PROGRAM) $(B)/example $(B)/contactopt.1 $(B)/contactopt.bash
 
 # ---- dependencies: install what is missing, or say exactly how -------------
 # $(call apt_install,NAME,PACKAGES): the recipe of a target NAME that
@@ -109,6 +109,9 @@ $(B)/%.o: src/%.c | src/.tangled
 	$(CC) $(CFLAGS) -MMD -MP -c -o $@ $<
 $(PROGRAM): $(B)/main.o $(OBJ)
 	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+# the overview's client program: optimize's pipeline without the files
+$(B)/example: $(B)/example.o $(OBJ)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 -include $(wildcard $(B)/*.d $(B)/tests/*.d)
 
@@ -174,7 +177,7 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: $(PROGRAM) $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) tangle-check $(RUNS)
+check: $(PROGRAM) $(B)/example $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) tangle-check $(RUNS)
 	@BIN=$(PROGRAM) TESTS=$(B)/tests UNKNOWN_CPU=$(UNKNOWN_CPU) sh tests/run
 
 # make check-kernels: what a user's other machine would meet. The test
@@ -313,19 +316,21 @@ figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/a
 # ---- the woven paper -------------------------------------------------------------
 # Each part is woven on its own and \input by the driver; the identifiers
 # every part defines are collected first (nodefs), so that each part's
-# index and cross-references reach the others, and noindex gathers the
+# index and cross-references reach the others. A part defines explicitly
+# (@ %def after the chunk of its header that declares them) the names its
+# header exports, and only those: the index lists the interfaces, and noindex gathers the
 # chunk and identifier indices of the whole from LaTeX's .aux (noweb's
 # external-index method, noindex(1)).
 paper: paper/contactopt.pdf
 WOVEN := build/paper/contactopt.tex $(PARTS:%=build/paper/%.tex)
 build/paper/all.defs: $(NW) | deps
 	@mkdir -p $(@D)
-	@for f in $(NW); do nodefs -auto c $$f; done | sort -u | cpif $@
+	@for f in $(NW); do nodefs $$f; done | sort -u | cpif $@
 build/paper/contactopt.tex: paper/contactopt.nw | deps
 	@mkdir -p $(@D)
 	noweave -delay paper/contactopt.nw > $@
 build/paper/%.tex: paper/%.nw build/paper/all.defs
-	noweave -n -autodefs c -indexfrom build/paper/all.defs $< > $@
+	noweave -n -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex | deps

@@ -1,11 +1,10 @@
-#line 169 "paper/design.nw"
+#line 173 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design_private.h"
-
-#line 249 "paper/design.nw"
+#line 220 "paper/design.nw"
 Design_set design_set(const Problem *p)
 {
   Design_set B;
@@ -20,7 +19,7 @@ Design_set design_set(const Problem *p)
     B.area = B.C0 * (B.N * B.h);
   return B;
 }
-#line 266 "paper/design.nw"
+#line 237 "paper/design.nw"
 double design_weight(const Design_set *B, int i)
 {
   return i == 0 || i == B->N ? 0.5 * B->h : B->h;
@@ -32,7 +31,7 @@ double design_area(const Design_set *B, const double *X)
   for (int i = 1; i < B->N; i++) sum += X[i];
   return B->h * sum;
 }
-#line 281 "paper/design.nw"
+#line 252 "paper/design.nw"
 double design_violation(const Design_set *B, const double *X)
 {
   double v = 0;
@@ -44,7 +43,7 @@ double design_violation(const Design_set *B, const double *X)
     v = fmax(v, (fabs(X[i + 1] - X[i]) - B->delta) / B->C0);
   return fmax(v, fabs(design_area(B, X) - B->area) / (B->C0 * B->N * B->h));
 }
-#line 946 "paper/design.nw"
+#line 917 "paper/design.nw"
 int design_check_set(const Design_set *B, Status *st)
 {
   if (!B || B->N < 1)
@@ -74,7 +73,7 @@ int design_check_point(const Design_set *B, const double *Y,
                         "is %g", i, what, Y[i]);
   return STATUS_OK;
 }
-#line 1026 "paper/design.nw"
+#line 997 "paper/design.nw"
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st)
 {
   if (design_check_set(B, st)) return NULL;
@@ -100,14 +99,14 @@ void design_multipliers_free(Design_multipliers *m)
   free(m->lower);
   free(m);
 }
-#line 1080 "paper/design.nw"
+#line 1051 "paper/design.nw"
 static double default_step(const Design_set *B, const double *G)
 {
   double Gmax = 0;
   for (int i = 0; i <= B->N; i++) Gmax = fmax(Gmax, fabs(G[i]));
   return Gmax > 0 ? B->C0 / Gmax : 1;
 }
-#line 1090 "paper/design.nw"
+#line 1061 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f);
 
 int design_kkt(const Design_set *B, const double *X, const double *G,
@@ -130,14 +129,14 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
   free(Y);
   return rc;
 }
-#line 1116 "paper/design.nw"
+#line 1087 "paper/design.nw"
 static void scale_multipliers(Design_multipliers *m, double f)
 {
   for (int i = 0; i <= m->N; i++) { m->lower[i] *= f; m->upper[i] *= f; }
   for (int i = 0; i < m->N; i++) { m->up[i] *= f; m->down[i] *= f; }
   m->mu *= f;
 }
-#line 1134 "paper/design.nw"
+#line 1105 "paper/design.nw"
 /* alpha0 at x1 by the formula of sh; 0 if the arc does not reach x1 */
 static int shape_at(const Shape *sh, double x1, double t, double *alpha)
 {
@@ -151,7 +150,7 @@ static int shape_at(const Shape *sh, double x1, double t, double *alpha)
   default: *alpha = sh->value; return 1;
   }
 }
-#line 1151 "paper/design.nw"
+#line 1122 "paper/design.nw"
 int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
 {
   for (int i = 0; i <= p->N; i++)
@@ -162,7 +161,7 @@ int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
                         problem_node_x(p, i));
   return STATUS_OK;
 }
-#line 1174 "paper/design.nw"
+#line 1145 "paper/design.nw"
 int design_feasible_start(const Design_set *B, const double *alpha0,
                           double tol, double *X, double *violation,
                           double *moved, Status *st)
@@ -179,11 +178,11 @@ int design_feasible_start(const Design_set *B, const double *alpha0,
   if (v <= tol) memcpy(X, alpha0, (B->N + 1) * sizeof *X);
   else if ((rc = design_project(B, alpha0, X, NULL, st))) return rc;
   
-#line 1196 "paper/design.nw"
+#line 1167 "paper/design.nw"
 double d2 = 0;
 for (int i = 0; i <= B->N; i++) d2 += (X[i] - alpha0[i]) * (X[i] - alpha0[i]);
 if (moved) *moved = sqrt(d2);
-#line 1190 "paper/design.nw"
+#line 1161 "paper/design.nw"
   if (violation) *violation = v;
   return STATUS_OK;
 }

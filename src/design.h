@@ -21,7 +21,7 @@ typedef struct {
   double mu;      /* of h sum (X_i + X_{i+1})/2 - S = 0, free */
 } Design_multipliers;
 
-#line 131 "paper/design.nw"
+#line 133 "paper/design.nw"
 typedef enum { SHAPE_ARC, SHAPE_LINE, SHAPE_CONSTANT } Shape_kind;
 typedef struct {
   Shape_kind kind;
@@ -31,7 +31,7 @@ typedef struct {
   double value;      /* SHAPE_CONSTANT: alpha0 */
 } Shape;
 
-#line 108 "paper/design.nw"
+#line 109 "paper/design.nw"
 Design_set design_set(const Problem *p);
 /* h sum_{i<N} (X_i + X_{i+1})/2, the trapezoid rule */
 double design_area(const Design_set *B, const double *X);
@@ -47,10 +47,10 @@ int design_kkt(const Design_set *B, const double *X, const double *G,
                double *residual, Status *st);
 Design_multipliers *design_multipliers_new(const Design_set *B, Status *st);
 void design_multipliers_free(Design_multipliers *m);
-#line 145 "paper/design.nw"
+#line 148 "paper/design.nw"
 /* X_i = alpha0(x_i), i = 0..N, for the shape sh */
 int design_shape(const Problem *p, const Shape *sh, double *X, Status *st);
-#line 159 "paper/design.nw"
+#line 163 "paper/design.nw"
 /* X = alpha0 if design_violation(alpha0) <= tol, else P_B(alpha0);
    violation = design_violation(alpha0), moved = ||X - alpha0||_2 */
 int design_feasible_start(const Design_set *B, const double *alpha0,

@@ -1,4 +1,4 @@
-#line 193 "paper/design.nw"
+#line 186 "paper/design.nw"
 #ifndef CONTACTOPT_DESIGN_PRIVATE_H
 #define CONTACTOPT_DESIGN_PRIVATE_H
 #include "design.h"

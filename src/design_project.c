@@ -1,17 +1,16 @@
-#line 207 "paper/design.nw"
+#line 200 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design_private.h"
-
-#line 526 "paper/design.nw"
+#line 497 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
   int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
   double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Group;
-#line 534 "paper/design.nw"
+#line 505 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
@@ -28,7 +27,7 @@ typedef struct {
   double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
 } Work;
-#line 336 "paper/design.nw"
+#line 307 "paper/design.nw"
 static void evaluate_g(Work *w, double mu);
 
 static double area_rounding(const Work *w)
@@ -51,7 +50,7 @@ static int find_multiplier(Work *w, Status *st)
   if (B->area <= area_rounding(w)) { evaluate_g(w, hi); return STATUS_OK; }
   return newton_on_pieces(w, lo, hi, st);
 }
-#line 362 "paper/design.nw"
+#line 333 "paper/design.nw"
 static void chain_project(Work *w);
 static double piece_slope(const Work *w);
 
@@ -63,7 +62,7 @@ static void evaluate_g(Work *w, double mu)
   w->g = design_area(w->B, w->X) - w->B->area;
   w->slope = piece_slope(w);
 }
-#line 378 "paper/design.nw"
+#line 349 "paper/design.nw"
 static double piece_slope(const Work *w)
 {
   double slope = 0;
@@ -79,7 +78,7 @@ static double piece_slope(const Work *w)
   }
   return slope;
 }
-#line 416 "paper/design.nw"
+#line 387 "paper/design.nw"
 static int same_piece(const Work *w);
 static void keep_piece(Work *w);
 
@@ -92,31 +91,31 @@ static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
   for (int it = 0; it < limit; it++) {
     evaluate_g(w, mu);
     
-#line 437 "paper/design.nw"
+#line 408 "paper/design.nw"
 if (fabs(w->g) <= area_rounding(w) || (newton && same_piece(w)))
   return STATUS_OK;
-#line 428 "paper/design.nw"
+#line 399 "paper/design.nw"
     
-#line 442 "paper/design.nw"
+#line 413 "paper/design.nw"
 if (w->g > 0) lo = mu; else hi = mu;
 int stalled = fabs(w->g) > 0.5 * g2;
 g2 = g1;
 g1 = fabs(w->g);
 keep_piece(w);
-#line 429 "paper/design.nw"
+#line 400 "paper/design.nw"
     
-#line 451 "paper/design.nw"
+#line 422 "paper/design.nw"
 double mid = lo + 0.5 * (hi - lo);
 if (!(lo < mid && mid < hi)) return STATUS_OK;
 double step = w->slope < 0 ? mu - w->g / w->slope : mid;
 newton = w->slope < 0 && !stalled && lo < step && step < hi;
 mu = newton ? step : mid;
-#line 430 "paper/design.nw"
+#line 401 "paper/design.nw"
   }
   return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
                     "was not found in %d evaluations", limit);
 }
-#line 460 "paper/design.nw"
+#line 431 "paper/design.nw"
 static int same_piece(const Work *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
@@ -127,7 +126,7 @@ static void keep_piece(Work *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 553 "paper/design.nw"
+#line 524 "paper/design.nw"
 static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Group *G, int k)
 {
@@ -139,7 +138,7 @@ static void point_set(Group *G, int k, double x, double d)
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
-#line 568 "paper/design.nw"
+#line 539 "paper/design.nw"
 static void push(Group *G, double x, double d)
 {
   if (G->top == G->cap) {
@@ -157,7 +156,7 @@ static void move_top(Group *from, Group *to)
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
-#line 589 "paper/design.nw"
+#line 560 "paper/design.nw"
 static void rebase(Group *G);
 
 static void add_linear(Group *G, double z, double C0)
@@ -166,7 +165,7 @@ static void add_linear(Group *G, double z, double C0)
   G->e += G->s - z;
   if (G->c > G->top - G->bot + 16 || fabs(G->s) > C0) rebase(G);
 }
-#line 603 "paper/design.nw"
+#line 574 "paper/design.nw"
 static double argmin_V(Work *w);
 static void step_V(Work *w, double xstar, double z);
 static void backtrack(Work *w);
@@ -192,7 +191,7 @@ static void chain_project(Work *w)
   identify(w);
   polish(w);
 }
-#line 637 "paper/design.nw"
+#line 608 "paper/design.nw"
 static void rebase(Group *G)
 {
   for (int k = G->bot; k < G->top; k++) {
@@ -202,7 +201,7 @@ static void rebase(Group *G)
   }
   G->s = G->c = G->e = 0;
 }
-#line 651 "paper/design.nw"
+#line 622 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side);
 
 static void step_V(Work *w, double xstar, double z)
@@ -217,7 +216,7 @@ static void step_V(Work *w, double xstar, double z)
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 674 "paper/design.nw"
+#line 645 "paper/design.nw"
 static void cut(Group *G, const Group *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -232,7 +231,7 @@ static void cut(Group *G, const Group *other, double bound, double side)
     return;
   }
 }
-#line 699 "paper/design.nw"
+#line 670 "paper/design.nw"
 static double terms(const Group *G, int k)
 {
   return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
@@ -253,7 +252,7 @@ static double argmin_V(Work *w)
   w->M = fmax(w->M, terms(L, L->top - 1) + terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 723 "paper/design.nw"
+#line 694 "paper/design.nw"
 static void backtrack(Work *w)
 {
   double *X = w->X, delta = w->delta;
@@ -261,7 +260,7 @@ static void backtrack(Work *w)
   for (int i = w->n - 1; i > 0; i--)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-#line 757 "paper/design.nw"
+#line 728 "paper/design.nw"
 static void identify(Work *w)
 {
   double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
@@ -275,7 +274,7 @@ static void identify(Work *w)
   for (int i = 0; i < w->n; i++)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 781 "paper/design.nw"
+#line 752 "paper/design.nw"
 static void polish_block(Work *w, int first, int last);
 
 static void polish(Work *w)
@@ -285,7 +284,7 @@ static void polish(Work *w)
     polish_block(w, first, last);
   }
 }
-#line 798 "paper/design.nw"
+#line 769 "paper/design.nw"
 static double block_mean(const Work *w, int first, int last);
 
 static void polish_block(Work *w, int first, int last)
@@ -314,7 +313,7 @@ static double block_mean(const Work *w, int first, int last)
   for (int j = first; j <= last; j++) r += w->Z[j] - w->X[j] - t;
   return t + r / m;
 }
-#line 856 "paper/design.nw"
+#line 827 "paper/design.nw"
 static void range_of_beta(const Work *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -327,7 +326,7 @@ static void range_of_nu(const Work *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 872 "paper/design.nw"
+#line 843 "paper/design.nw"
 static void sweep_forward(Work *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -342,7 +341,7 @@ static void sweep_forward(Work *w)
     w->hi[j] = hi;
   }
 }
-#line 891 "paper/design.nw"
+#line 862 "paper/design.nw"
 static void sweep_backward(const Work *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -361,7 +360,7 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
   }
   m->mu = w->mu;
 }
-#line 918 "paper/design.nw"
+#line 889 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st);
 static void work_free(Work *w);
 
@@ -384,7 +383,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   work_free(w);
   return rc;
 }
-#line 979 "paper/design.nw"
+#line 950 "paper/design.nw"
 static Work *work_new(const Design_set *B, Status *st)
 {
   Work *w = calloc(1, sizeof *w);
@@ -404,7 +403,7 @@ static Work *work_new(const Design_set *B, Status *st)
     return NULL;
   }
   
-#line 1011 "paper/design.nw"
+#line 982 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -417,7 +416,7 @@ w->R.d = w->R.x + w->R.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 998 "paper/design.nw"
+#line 969 "paper/design.nw"
   return w;
 }
 

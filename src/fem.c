@@ -1,10 +1,9 @@
-#line 140 "paper/fem.nw"
+#line 114 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
-
-#line 152 "paper/fem.nw"
+#line 126 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
@@ -26,7 +25,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 179 "paper/fem.nw"
+#line 153 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -39,10 +38,10 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 173 "paper/fem.nw"
+#line 147 "paper/fem.nw"
   return d;
 }
-#line 195 "paper/fem.nw"
+#line 169 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -55,8 +54,7 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
     if (kind == BC_CLAMPED || normal == 1) held[2 * k + 1] = -1;
   }
 }
-
-#line 211 "paper/fem.nw"
+#line 185 "paper/fem.nw"
 void fem_dofs_free(Dofs *d)
 {
   if (!d) return;
@@ -67,7 +65,7 @@ void fem_dofs_free(Dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 239 "paper/fem.nw"
+#line 213 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -82,7 +80,7 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 300 "paper/fem.nw"
+#line 275 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -100,8 +98,7 @@ void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-
-#line 321 "paper/fem.nw"
+#line 296 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -111,8 +108,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-
-#line 334 "paper/fem.nw"
+#line 309 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -124,7 +120,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 352 "paper/fem.nw"
+#line 327 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -144,7 +140,7 @@ void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 380 "paper/fem.nw"
+#line 355 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -156,14 +152,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-
-#line 394 "paper/fem.nw"
+#line 369 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 403 "paper/fem.nw"
+#line 378 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -173,9 +168,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 399 "paper/fem.nw"
+#line 374 "paper/fem.nw"
 }
-#line 456 "paper/fem.nw"
+#line 431 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -191,17 +186,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 478 "paper/fem.nw"
+#line 453 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 471 "paper/fem.nw"
+#line 446 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 486 "paper/fem.nw"
+#line 461 "paper/fem.nw"
 static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
                       int *rows)
 {
@@ -229,7 +224,7 @@ static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 434 "paper/fem.nw"
+#line 409 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -244,7 +239,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 516 "paper/fem.nw"
+#line 491 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -253,7 +248,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 529 "paper/fem.nw"
+#line 504 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static int fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -265,7 +260,7 @@ static int fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 555 "paper/fem.nw"
+#line 530 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -287,8 +282,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-
-#line 581 "paper/fem.nw"
+#line 556 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -300,17 +294,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 598 "paper/fem.nw"
+#line 573 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 592 "paper/fem.nw"
+#line 567 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 614 "paper/fem.nw"
+#line 589 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -324,15 +318,14 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 631 "paper/fem.nw"
+#line 606 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
   for (int c = 0; c < 2; c++)
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
-
-#line 640 "paper/fem.nw"
+#line 615 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -340,7 +333,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 654 "paper/fem.nw"
+#line 629 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -358,21 +351,20 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-
-#line 703 "paper/fem.nw"
+#line 678 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 717 "paper/fem.nw"
+#line 692 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 709 "paper/fem.nw"
+#line 684 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

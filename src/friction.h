@@ -20,7 +20,7 @@ double friction_work(const Dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 385 "paper/friction.nw"
+#line 386 "paper/friction.nw"
 /* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
    side holds both, a roller on the left or the right u1, on the top u2 */
 int friction_side_holds(const Problem *p, int component);

@@ -1,10 +1,9 @@
-#line 103 "paper/grad.nw"
+#line 104 "paper/grad.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grad.h"
-
-#line 169 "paper/grad.nw"
+#line 161 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G);
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
@@ -30,7 +29,7 @@ int grad_energy(const Model *md, double *G, Status *st)
     friction_gradient(md->problem, md->mesh, md->dofs, md->Q, G);
   return STATUS_OK;
 }
-#line 211 "paper/grad.nw"
+#line 203 "paper/grad.nw"
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = md->mesh;
@@ -55,7 +54,7 @@ static void grad_element(const Model *md, int t, double *G)
     G[node % m->ncol] += rate * de_dy;
   }
 }
-#line 240 "paper/grad.nw"
+#line 232 "paper/grad.nw"
 static double grad_element_height(const double gy[3], const double q[6],
                                   const double e[3], const double De[3],
                                   double d, int m)
@@ -66,7 +65,7 @@ static double grad_element_height(const double gy[3], const double q[6],
   double energy2 = e[0] * De[0] + e[1] * De[1] + e[2] * De[2];
   return (De[0] * de0 + De[2] * de2) / (2 * d) - energy2 * gy[m] / (4 * d * d);
 }
-#line 254 "paper/grad.nw"
+#line 246 "paper/grad.nw"
 static double grad_body_force(const double F[2], const double q[6],
                               double gy_m)
 {
@@ -74,7 +73,7 @@ static double grad_body_force(const double F[2], const double q[6],
   for (int v = 0; v < 3; v++) work += F[0] * q[2 * v] + F[1] * q[2 * v + 1];
   return work * gy_m / 6;
 }
-#line 285 "paper/grad.nw"
+#line 277 "paper/grad.nw"
 Grad_check *grad_check_new(int N, Status *st)
 {
   if (N < 1) {
@@ -107,7 +106,7 @@ void grad_check_free(Grad_check *gc)
   free(gc->G);
   free(gc);
 }
-#line 323 "paper/grad.nw"
+#line 315 "paper/grad.nw"
 /* E at the design X with X_i = x */
 static int energy_with(Model *md, double *X, int i, double x, double *E,
                        Status *st)
@@ -126,26 +125,26 @@ static int grad_difference(Model *md, double *X, int i, double s,
   int rc;
   if (x0 - s >= 0) {
     
-#line 350 "paper/grad.nw"
+#line 342 "paper/grad.nw"
 double Em, Ep;
 if (!(rc = energy_with(md, X, i, x0 - s, &Em, st))
     && !(rc = energy_with(md, X, i, x0 + s, &Ep, st)))
   *fd = (Ep - Em) / (2 * s);
-#line 341 "paper/grad.nw"
+#line 333 "paper/grad.nw"
   } else {
     
-#line 357 "paper/grad.nw"
+#line 349 "paper/grad.nw"
 double E0, E1, E2;
 if (!(rc = energy_with(md, X, i, x0, &E0, st))
     && !(rc = energy_with(md, X, i, x0 + s, &E1, st))
     && !(rc = energy_with(md, X, i, x0 + 2 * s, &E2, st)))
   *fd = (-3 * E0 + 4 * E1 - E2) / (2 * s);
-#line 343 "paper/grad.nw"
+#line 335 "paper/grad.nw"
   }
   X[i] = x0;
   return rc;
 }
-#line 365 "paper/grad.nw"
+#line 357 "paper/grad.nw"
 /* the steps of the differences, relative to C0: 1e-2, 1e-3, ..., 1e-6 */
 #define FOR_EACH_STEP(step) \
   for (double step = 1e-2; step >= 1e-6 * 0.999; step /= 10)
@@ -164,7 +163,7 @@ static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
   }
   return STATUS_OK;
 }
-#line 387 "paper/grad.nw"
+#line 379 "paper/grad.nw"
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X)
 {
   long n = 2;
@@ -172,7 +171,7 @@ long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X)
     FOR_EACH_STEP(step) n += X[gc->check[k]] - step * p->C0 >= 0 ? 2 : 3;
   return n;
 }
-#line 399 "paper/grad.nw"
+#line 391 "paper/grad.nw"
 int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st)
 {

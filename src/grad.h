@@ -11,7 +11,7 @@ int grad_available(const Problem *p);
    model solved last.  It is a checked error to call it before a solve,
    or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 73 "paper/grad.nw"
+#line 74 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */

@@ -13,8 +13,9 @@
 #include "interrupt.h"
 #include "args.h"
 #include "threads.h"
+#include "resources.h"
 #include "plot.h"
-#line 268 "paper/main.nw"
+#line 255 "paper/main.nw"
 /* st's message = "path: message", unless it begins with the path already */
 static void name_the_scene(Status *st, const char *path)
 {
@@ -25,7 +26,7 @@ static void name_the_scene(Status *st, const char *path)
   if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
     strcpy(st->msg + sizeof st->msg - 4, "...");
 }
-#line 286 "paper/main.nw"
+#line 273 "paper/main.nw"
 /* *v = the number at *p, digits only; *p moves past it */
 static int component_number(const char **p, long *v)
 {
@@ -70,7 +71,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 333 "paper/main.nw"
+#line 320 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -104,8 +105,8 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
       && !(rc = output_check(r.dir, st))                  /* before any work */
       && !(rc = a->matrix_market ? output_check_file(a->matrix_market, r.dir, st) : 0)
       && !(rc = components_read(a->components, r.s.problem.N, NULL, st))
-      && !(rc = model_fits(&r.s.problem, extra, r.s.path, st))
-      && !(rc = threads_start(r.s.path, model_memory(&r.s.problem) + extra, st))) {
+      && !(rc = resources_fits(&r.s.problem, extra, r.s.path, st))
+      && !(rc = threads_start(r.s.path, resources_memory(&r.s.problem) + extra, st))) {
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
     rc = r.md ? c->run(&r, st) : (int) st->code;
   }
@@ -114,7 +115,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 400 "paper/main.nw"
+#line 387 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -125,7 +126,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 419 "paper/main.nw"
+#line 406 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -160,7 +161,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 456 "paper/main.nw"
+#line 443 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -175,7 +176,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 488 "paper/main.nw"
+#line 475 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -198,7 +199,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 514 "paper/main.nw"
+#line 501 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -207,7 +208,7 @@ typedef struct {
 static void gradcheck_progress(int i, const Grad_check *gc, void *data)
 {
   Gradcheck_progress *g = data;
-  double now = model_clock(), worst = 0;
+  double now = resources_clock(), worst = 0;
   (void) i;
   if (++g->done < gc->ncheck && now - g->last < 1) return;
   g->last = now;
@@ -217,7 +218,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 542 "paper/main.nw"
+#line 529 "paper/main.nw"
 /* the refusal of a command that needs the gradient of an energy */
 static int no_gradient(const Run *r, const char *command, Status *st)
 {
@@ -235,7 +236,7 @@ static int command_gradcheck(Run *r, Status *st)
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
               : (int) st->code;
   if (!rc && !(rc = gradcheck_estimate(r, gc, st))) {
-    g.start = g.last = model_clock();
+    g.start = g.last = resources_clock();
     rc = grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &g, st);
   }
   if (!rc && !(rc = begin(r, &o, st)))
@@ -247,7 +248,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 718 "paper/main.nw"
+#line 706 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -257,7 +258,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 734 "paper/main.nw"
+#line 722 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -270,7 +271,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 755 "paper/main.nw"
+#line 743 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -318,7 +319,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 812 "paper/main.nw"
+#line 800 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -337,7 +338,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 842 "paper/main.nw"
+#line 830 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -353,7 +354,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 870 "paper/main.nw"
+#line 858 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,9 +1,8 @@
-#line 95 "paper/mesh.nw"
+#line 87 "paper/mesh.nw"
 #include <math.h>
 #include <stdlib.h>
 #include "mesh.h"
-
-#line 103 "paper/mesh.nw"
+#line 95 "paper/mesh.nw"
 static void mesh_connect(Mesh *m);
 static void mesh_place_fixed(Mesh *m);
 
@@ -12,7 +11,7 @@ Mesh *mesh_new(const Problem *p, Status *st)
   Mesh *m = calloc(1, sizeof *m);
   if (!m) { status_set(st, STATUS_MEMORY, "mesh: out of memory"); return NULL; }
   
-#line 125 "paper/mesh.nw"
+#line 117 "paper/mesh.nw"
 m->N = p->N; m->M = p->M; m->R = p->R;
 m->ncol = p->N + 1;
 m->nrow = p->M + p->R + 1;
@@ -20,7 +19,7 @@ m->nnodes = m->ncol * m->nrow;
 m->ntri = 2 * p->N * (p->M + p->R);
 m->a = p->a; m->b = p->b; m->gamma = p->gamma; m->C0prime = p->C0prime;
 m->h = (p->b - p->a) / p->N;
-#line 111 "paper/mesh.nw"
+#line 103 "paper/mesh.nw"
   m->xy = malloc(2 * (size_t) m->nnodes * sizeof *m->xy);
   m->tri = malloc(3 * (size_t) m->ntri * sizeof *m->tri);
   if (!m->xy || !m->tri) {
@@ -32,7 +31,7 @@ m->h = (p->b - p->a) / p->N;
   mesh_place_fixed(m);
   return m;
 }
-#line 140 "paper/mesh.nw"
+#line 132 "paper/mesh.nw"
 static void mesh_connect(Mesh *m)
 {
   int *t = m->tri;
@@ -44,7 +43,7 @@ static void mesh_connect(Mesh *m)
       *t++ = n00; *t++ = n11; *t++ = n01;
     }
 }
-#line 154 "paper/mesh.nw"
+#line 146 "paper/mesh.nw"
 static void mesh_place_fixed(Mesh *m)
 {
   for (int j = 0; j < m->nrow; j++)
@@ -56,21 +55,21 @@ static void mesh_place_fixed(Mesh *m)
           + (m->gamma - m->C0prime) * (j - m->M) / m->R;
     }
 }
-#line 169 "paper/mesh.nw"
+#line 161 "paper/mesh.nw"
 int mesh_move(Mesh *m, const double *X, Status *st)
 {
   for (int i = 0; i < m->ncol; i++) {
     
-#line 181 "paper/mesh.nw"
+#line 173 "paper/mesh.nw"
 if (!(X[i] >= 0))
   return status_set(st, STATUS_INPUT,
     "design: alpha_%d = %g is below the foundation x2 = 0", i, X[i]);
 for (int j = 0; j < m->M; j++)
   m->xy[2 * (j * m->ncol + i) + 1] = X[i] + (m->C0prime - X[i]) * j / m->M;
-#line 173 "paper/mesh.nw"
+#line 165 "paper/mesh.nw"
   }
   
-#line 191 "paper/mesh.nw"
+#line 183 "paper/mesh.nw"
 for (int t = 0; t < m->ntri; t++)
   if (!(mesh_area(m, t) > 0)) {
     int i = m->tri[3 * t] % m->ncol;
@@ -79,10 +78,10 @@ for (int t = 0; t < m->ntri; t++)
       "C0prime = %g): alpha must stay below C0prime", t, i, X[i], i + 1,
       X[i + 1], m->C0prime);
   }
-#line 175 "paper/mesh.nw"
+#line 167 "paper/mesh.nw"
   return STATUS_OK;
 }
-#line 202 "paper/mesh.nw"
+#line 194 "paper/mesh.nw"
 double mesh_area(const Mesh *m, int t)
 {
   const int *v = m->tri + 3 * t;
@@ -90,7 +89,7 @@ double mesh_area(const Mesh *m, int t)
                *r = m->xy + 2 * v[2];
   return 0.5 * ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]));
 }
-#line 216 "paper/mesh.nw"
+#line 208 "paper/mesh.nw"
 double mesh_tributary(const Mesh *m, int i)
 {
   double len = 0;
@@ -100,14 +99,13 @@ double mesh_tributary(const Mesh *m, int i)
                          m->xy[2 * (k + 1) + 1] - m->xy[2 * k + 1]);
   return len;
 }
-#line 230 "paper/mesh.nw"
+#line 222 "paper/mesh.nw"
 double mesh_motion(const Mesh *m, int k)
 {
   int j = k / m->ncol;
   return j < m->M ? 1.0 - (double) j / m->M : 0.0;
 }
-
-#line 238 "paper/mesh.nw"
+#line 230 "paper/mesh.nw"
 void mesh_free(Mesh *m)
 {
   if (!m) return;

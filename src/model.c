@@ -1,15 +1,12 @@
-#line 158 "paper/model.nw"
+#line 149 "paper/model.nw"
 #include <float.h>
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
-#include <sys/resource.h>
+#include "resources.h"
 #include "model.h"
 
-#line 172 "paper/model.nw"
+#line 160 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -24,7 +21,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 192 "paper/model.nw"
+#line 180 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -37,27 +34,20 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 186 "paper/model.nw"
+#line 174 "paper/model.nw"
   
-#line 207 "paper/model.nw"
+#line 195 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 187 "paper/model.nw"
+#line 175 "paper/model.nw"
   return md;
 }
-#line 223 "paper/model.nw"
-double model_clock(void)
-{
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
-#line 260 "paper/model.nw"
+#line 239 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
@@ -65,7 +55,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK;
   return rc;
 }
-#line 336 "paper/model.nw"
+#line 315 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -74,7 +64,7 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 314 "paper/model.nw"
+#line 293 "paper/model.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
@@ -93,7 +83,7 @@ static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
     md->fixed_point_iterations, md->fixed_point_residual,
     md->fixed_point_tol, md->problem->friction);
 }
-#line 281 "paper/model.nw"
+#line 260 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   const Problem *p = md->problem;
@@ -123,10 +113,10 @@ static int model_coulomb(Model *md, Status *st)
     rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 236 "paper/model.nw"
+#line 215 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
-  double start = model_clock();
+  double start = resources_clock();
   int rc;
   if ((rc = mesh_move(md->mesh, X, st))
       || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, &md->hooke, st)))
@@ -142,17 +132,17 @@ int model_solve(Model *md, const double *X, Status *st)
     md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
     md->energy += md->friction_energy;
   }
-  md->seconds = model_clock() - start;
+  md->seconds = resources_clock() - start;
   return rc;
 }
 
-#line 358 "paper/model.nw"
+#line 337 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
 
-#line 366 "paper/model.nw"
+#line 345 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -167,7 +157,7 @@ double model_pressure_cv(const Model *md)
   return sqrt(var) / mean;
 }
 
-#line 382 "paper/model.nw"
+#line 361 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -178,50 +168,14 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 512 "paper/model.nw"
-/* the unknowns of the mesh, and the entries of the sparse factor of K */
-static double model_unknowns(const Problem *p)
-{
-  return 2 * (p->N + 1.0) * (p->M + p->R + 1.0);
-}
-
-static double model_factor_entries(const Problem *p)
-{
-  double n = model_unknowns(p);
-  return 5.1 * n * log2(n > 2 ? n : 2);
-}
-
-double model_memory(const Problem *p)
-{
-  double n = model_unknowns(p);
-  double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
-  return 3 * 8 * nk * nk + 12 * model_factor_entries(p) + 400 * n;
-}
-#line 544 "paper/model.nw"
-int model_fits(const Problem *p, double extra, const char *origin, Status *st)
-{
-  double need = model_memory(p) + extra, entries = model_factor_entries(p);
-  if (entries > INT_MAX)
-    return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs a "
-                      "factor of about %.3g entries, more than CHOLMOD's 32-bit "
-                      "integers index (%d)", origin, p->N, p->M + p->R, entries, INT_MAX);
-  double have = (double) sysconf(_SC_PHYS_PAGES) * (double) sysconf(_SC_PAGESIZE);
-  struct rlimit lim;
-  if (!getrlimit(RLIMIT_AS, &lim) && lim.rlim_cur != RLIM_INFINITY)
-    have = fmin(have, (double) lim.rlim_cur);
-  if (!(have > 0) || need <= have) return STATUS_OK;
-  return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs "
-                    "about %.3g GB, more than the %.3g GB this process may use",
-                    origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
-}
-#line 451 "paper/model.nw"
+#line 430 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 419 "paper/model.nw"
+#line 398 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -234,17 +188,17 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 438 "paper/model.nw"
+#line 417 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 431 "paper/model.nw"
+#line 410 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 465 "paper/model.nw"
+#line 444 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -256,7 +210,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 482 "paper/model.nw"
+#line 461 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

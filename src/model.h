@@ -44,16 +44,8 @@ double model_pressure(const Model *md, int c);
 /* standard deviation over mean of the pressure on the contact zone;
    0 when no node presses */
 double model_pressure_cv(const Model *md);
-/* seconds on a monotonic clock: the one clock of the package's timings */
-double model_clock(void);
 /* max |Q_i| over the unknowns of the last state solved, m */
 double model_displacement_max(const Model *md);
-/* bytes a model of p and its state solve need, estimated before any is
-   allocated (see below) */
-double model_memory(const Problem *p);
-/* STATUS_MEMORY, naming origin, if the model and extra bytes exceed the
-   memory this process may use */
-int model_fits(const Problem *p, double extra, const char *origin, Status *st);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);
 /* S (N+1 x N+1, row-major): the stiffness of the body seen from its

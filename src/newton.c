@@ -5,8 +5,7 @@
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "newton_private.h"
-
-#line 232 "paper/newton.nw"
+#line 227 "paper/newton.nw"
 Newton_workspace *newton_alloc(int n, int m, Status *st)
 {
   Newton_workspace *w = calloc(1, sizeof *w);
@@ -54,7 +53,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 286 "paper/newton.nw"
+#line 281 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double force_scale(const Newton_model *mdl)
 {
@@ -89,7 +88,7 @@ static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 324 "paper/newton.nw"
+#line 319 "paper/newton.nw"
 /* out = A z (p values) */
 void newton_constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out)
@@ -119,7 +118,7 @@ void newton_constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 700 "paper/newton.nw"
+#line 695 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 
 /* how far a point is from the KKT conditions, each relative to its scale:
@@ -243,7 +242,7 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 883 "paper/newton.nw"
+#line 878 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
@@ -319,7 +318,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 985 "paper/newton.nw"
+#line 980 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -334,9 +333,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 958 "paper/newton.nw"
+#line 953 "paper/newton.nw"
     
-#line 975 "paper/newton.nw"
+#line 970 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -344,7 +343,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 959 "paper/newton.nw"
+#line 954 "paper/newton.nw"
     if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -353,7 +352,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 1004 "paper/newton.nw"
+#line 999 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -365,7 +364,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 967 "paper/newton.nw"
+#line 962 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v);

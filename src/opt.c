@@ -1,12 +1,11 @@
-#line 332 "paper/opt.nw"
+#line 319 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-
-#line 345 "paper/opt.nw"
+#line 332 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -26,17 +25,17 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 400 "paper/opt.nw"
+#line 387 "paper/opt.nw"
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
-  double start = model_clock();
+  double start = resources_clock();
   int rc = model_solve(ev->md, X, ev->st);
   ev->solves++;
   if (!rc) rc = grad_energy(ev->md, ev->G, ev->st);
   if (ev->rep)
-    ev->rep->evaluations++, ev->rep->state_seconds += model_clock() - start;
+    ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
   ev->E = ev->md->energy;
@@ -44,7 +43,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 452 "paper/opt.nw"
+#line 439 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -53,18 +52,18 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 463 "paper/opt.nw"
+#line 450 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
-  double start = model_clock();
+  double start = resources_clock();
   Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, start - ev->start };
   int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
-  ev->rep->monitor_seconds += model_clock() - start;
+  ev->rep->monitor_seconds += resources_clock() - start;
   return stop;
 }
-#line 494 "paper/opt.nw"
+#line 481 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -85,34 +84,34 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1360 "paper/opt.nw"
+#line 1347 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
 {
   int n = B->N + 1, rc;
   Evaluator ev = { .md = md, .B = B, .o = o, .n = n, .X = malloc(2 * n * sizeof(double)),
-                   .start = model_clock(), .monitor = monitor, .data = data, .rep = rep,
+                   .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1385 "paper/opt.nw"
+#line 1372 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1373 "paper/opt.nw"
+#line 1360 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
   }
   if (!rc) rep->energy = md->energy;
-  rep->seconds = model_clock() - ev.start;
+  rep->seconds = resources_clock() - ev.start;
   free(ev.X);
   return rc;
 }
-#line 1401 "paper/opt.nw"
+#line 1388 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;

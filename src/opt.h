@@ -19,7 +19,7 @@ typedef struct {
   int max_iter;           /* iteration limit */
 } Opt_options;
 
-#line 193 "paper/opt.nw"
+#line 194 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -33,7 +33,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 208 "paper/opt.nw"
+#line 210 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -49,7 +49,7 @@ typedef struct {
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
 } Opt_report;
 
-#line 225 "paper/opt.nw"
+#line 227 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);

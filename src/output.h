@@ -48,7 +48,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 179 "paper/output.nw"
+#line 180 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -64,7 +64,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 201 "paper/output.nw"
+#line 203 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -92,7 +92,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 232 "paper/output.nw"
+#line 235 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */

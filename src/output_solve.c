@@ -1,25 +1,9 @@
-#line 1346 "paper/output.nw"
+#line 1332 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-
-#line 1391 "paper/output.nw"
-void output_friction(FILE *f, const Model *md)
-{
-  const Problem *p = md->problem;
-  char v[STATUS_NUMBER];
-  if (p->contact == CONTACT_FRICTIONLESS) return;
-  fprintf(f, "contact %s\n", problem_contact_name(p->contact));
-  if (p->contact == CONTACT_TRESCA)
-    fprintf(f, "slip_bound %s\n", status_number(p->slip_bound, v));
-  else fprintf(f, "friction %s\n", status_number(p->friction, v));
-  fprintf(f, "friction_energy %.15g\n", md->friction_energy);
-  if (p->contact == CONTACT_COULOMB)
-    fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
-            md->fixed_point_iterations, md->fixed_point_residual);
-}
-#line 1364 "paper/output.nw"
+#line 1346 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -40,7 +24,22 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1410 "paper/output.nw"
+#line 1373 "paper/output.nw"
+void output_friction(FILE *f, const Model *md)
+{
+  const Problem *p = md->problem;
+  char v[STATUS_NUMBER];
+  if (p->contact == CONTACT_FRICTIONLESS) return;
+  fprintf(f, "contact %s\n", problem_contact_name(p->contact));
+  if (p->contact == CONTACT_TRESCA)
+    fprintf(f, "slip_bound %s\n", status_number(p->slip_bound, v));
+  else fprintf(f, "friction %s\n", status_number(p->friction, v));
+  fprintf(f, "friction_energy %.15g\n", md->friction_energy);
+  if (p->contact == CONTACT_COULOMB)
+    fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
+            md->fixed_point_iterations, md->fixed_point_residual);
+}
+#line 1392 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -63,7 +62,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1443 "paper/output.nw"
+#line 1425 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

@@ -10,7 +10,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 241 "paper/figures.nw"
+#line 238 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -38,7 +38,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 281 "paper/figures.nw"
+#line 278 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -58,7 +58,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 304 "paper/figures.nw"
+#line 301 "paper/figures.nw"
 static const char *const state_files[] = {
   "shape.dat", "contact.dat", "nodes.dat", "triangles.dat" };
 
@@ -97,7 +97,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 347 "paper/figures.nw"
+#line 344 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -111,7 +111,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 1390 "paper/figures.nw"
+#line 1387 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -143,7 +143,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 1425 "paper/figures.nw"
+#line 1422 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -156,7 +156,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 1442 "paper/figures.nw"
+#line 1439 "paper/figures.nw"
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
   int ws = 0, done;
@@ -174,7 +174,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 1466 "paper/figures.nw"
+#line 1463 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -208,7 +208,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1508 "paper/figures.nw"
+#line 1505 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -236,7 +236,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 1545 "paper/figures.nw"
+#line 1542 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -257,7 +257,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1571 "paper/figures.nw"
+#line 1568 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -283,7 +283,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   return STATUS_OK;
 }
-#line 1601 "paper/figures.nw"
+#line 1598 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };

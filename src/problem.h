@@ -15,12 +15,12 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Side;
-#line 118 "paper/problem.nw"
+#line 119 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
-#line 126 "paper/problem.nw"
+#line 128 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Contact_law;
-#line 131 "paper/problem.nw"
+#line 133 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -48,7 +48,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 176 "paper/problem.nw"
+#line 179 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */

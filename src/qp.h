@@ -46,7 +46,7 @@ typedef struct {
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-#line 124 "paper/qp.nw"
+#line 125 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
@@ -55,7 +55,7 @@ int qp_iterate(Qp_workspace *w, Status *st);
 int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
 void qp_free(Qp_workspace *w);
-#line 135 "paper/qp.nw"
+#line 136 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
    STATUS_NUMERIC when not converged. */

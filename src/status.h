@@ -18,13 +18,13 @@ typedef struct {
   char msg[1024];     /* one line, no trailing newline */
 } Status;
 
-#line 41 "paper/status.nw"
+#line 42 "paper/status.nw"
 int status_set(Status *st, Status_code code, const char *fmt, ...)
 #if defined(__GNUC__)
   __attribute__((format(printf, 3, 4)))
 #endif
   ;
-#line 61 "paper/status.nw"
+#line 62 "paper/status.nw"
 /* room for any double written by status_number, its terminator included */
 #define STATUS_NUMBER 32
 /* buf (size >= STATUS_NUMBER) = x in %g with the fewest significant digits

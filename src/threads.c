@@ -1,4 +1,4 @@
-#line 119 "paper/threads.nw"
+#line 112 "paper/threads.nw"
 #define _GNU_SOURCE             /* dladdr, RTLD_NEXT, CPU_COUNT */
 #include <dlfcn.h>
 #include <limits.h>
@@ -12,7 +12,7 @@
 #include <sys/resource.h>
 #include <gsl/gsl_cblas.h>
 #include "threads.h"
-#line 135 "paper/threads.nw"
+#line 128 "paper/threads.nw"
 #define CHOLMOD_OMP 4           /* CHOLMOD 3.0's CHOLMOD_OMP_NUM_THREADS */
 #define ASKED "CONTACTOPT_BLAS_THREADS_ASKED"   /* set by the restart */
 typedef struct {
@@ -37,7 +37,7 @@ typedef struct {
   int found, started;
 } Threads;
 static Threads T;
-#line 182 "paper/threads.nw"
+#line 175 "paper/threads.nw"
 /* s begins with prefix: the rest of s, else NULL */
 static const char *after(const char *s, const char *prefix)
 {
@@ -67,7 +67,7 @@ static void restart_alone(int argc, char **argv, char **envp)
 }
 __attribute__((section(".preinit_array"), used))
 static void (*restart_entry)(int, char **, char **) = restart_alone;
-#line 221 "paper/threads.nw"
+#line 214 "paper/threads.nw"
 /* *fp = the symbol name of the libraries after this executable, or NULL */
 static void find(void *fp, size_t size, void *where, const char *name)
 {
@@ -76,7 +76,7 @@ static void find(void *fp, size_t size, void *where, const char *name)
 }
 #define FIND(fp, where, name) find(&(fp), sizeof (fp), where, name)
 
-#line 251 "paper/threads.nw"
+#line 244 "paper/threads.nw"
 static void put_back_asked(void)
 {
   const char *asked = getenv(ASKED);
@@ -85,7 +85,7 @@ static void put_back_asked(void)
   else unsetenv("OPENBLAS_NUM_THREADS");
   unsetenv(ASKED);
 }
-#line 265 "paper/threads.nw"
+#line 258 "paper/threads.nw"
 static void name_blas(Threads *t)
 {
   void *dgemm;
@@ -102,7 +102,7 @@ static void name_blas(Threads *t)
       && !realpath(info.dli_fname, t->library))
     snprintf(t->library, sizeof t->library, "%s", info.dli_fname);
 }
-#line 287 "paper/threads.nw"
+#line 280 "paper/threads.nw"
 /* the first CPU of cpu's core (its thread siblings), or cpu */
 static int first_sibling(int cpu)
 {
@@ -140,7 +140,7 @@ static double load_average(void)
   return getloadavg(load, 3) == 3 ? load[2] : 0;
 }
 
-#line 233 "paper/threads.nw"
+#line 226 "paper/threads.nw"
 static void threads_find(Threads *t)
 {
   if (t->found) return;
@@ -156,7 +156,7 @@ static void threads_find(Threads *t)
   count_cores(t);
   t->load = load_average();
 }
-#line 342 "paper/threads.nw"
+#line 335 "paper/threads.nw"
 /* a positive count from the environment variable name, else 0 */
 static int count_from(const char *name)
 {
@@ -181,7 +181,7 @@ static void choose(Threads *t)
   if (!t->set) t->blas_threads = t->get ? t->get() : 1, t->by_size = 0;
   if (t->parallel && t->parallel() == 2) t->omp_threads = CHOLMOD_OMP;
 }
-#line 385 "paper/threads.nw"
+#line 378 "paper/threads.nw"
 #define OPENBLAS_BUFFER (32.0 * (1 << 22))  /* BUFFER_SIZE, x86-64 */
 
 /* bytes: the address-space limit (INFINITY if none), what is mapped */
@@ -212,7 +212,7 @@ static double stack_bytes(void)
   }
   return (double) size + (double) guard;
 }
-#line 427 "paper/threads.nw"
+#line 420 "paper/threads.nw"
 static int fit(Threads *t, const char *origin, double need, Status *st)
 {
   double L = limit_bytes(), M = mapped_bytes(), S = stack_bytes();
@@ -237,7 +237,7 @@ static int fit(Threads *t, const char *origin, double need, Status *st)
                     "this process maps already, more than the %.3g GB it may use",
                     origin, t->blas, B / 1e9, (M + B) / 1e9, M / 1e9, L / 1e9);
 }
-#line 462 "paper/threads.nw"
+#line 455 "paper/threads.nw"
 #define WARM_N 16384             /* > 10^4, >= any count of threads used */
 static void warm(int threads)
 {
@@ -245,7 +245,7 @@ static void warm(int threads)
   cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, 1, 1, 1.0, a, 1, 0.0, c, 1);
   if (threads > 1) cblas_daxpy(WARM_N, 1.0, x, 1, x + WARM_N, 1);
 }
-#line 488 "paper/threads.nw"
+#line 481 "paper/threads.nw"
 const char *threads_coretype_advice(const char *kernels, int coretype_set,
                                     int avx2, int avx512)
 {
@@ -277,7 +277,7 @@ static void advise_kernels(const Threads *t, FILE *f)
             "CPU with %s; OPENBLAS_CORETYPE=%s selects the kernels for it\n",
             t->blas, t->kernels, strcmp(fits, "SkylakeX") ? "AVX2" : "AVX-512", fits);
 }
-#line 538 "paper/threads.nw"
+#line 531 "paper/threads.nw"
 __attribute__((constructor))
 static void threads_load(void)
 {
@@ -317,7 +317,7 @@ void threads_by_size(int most)
   t->set(1);
   t->by_size = 1;
 }
-#line 593 "paper/threads.nw"
+#line 586 "paper/threads.nw"
 int threads_for(double f)
 {
   double k = floor(f / THREADS_WORK);
@@ -337,7 +337,7 @@ static void leave(int n) { if (n) T.set(1); }
 
 #define NEXT(type, name) static type next; \
   if (!next) FIND(next, RTLD_NEXT, name)
-#line 618 "paper/threads.nw"
+#line 611 "paper/threads.nw"
 typedef void (*gemm_f)(const char *, const char *, const int *, const int *,
                        const int *, const double *, const double *, const int *,
                        const double *, const int *, const double *, double *,
@@ -388,7 +388,7 @@ void dpotrf_(const char *uplo, const int *n, double *A, const int *lda, int *inf
   next(uplo, n, A, lda, info);
   leave(use);
 }
-#line 671 "paper/threads.nw"
+#line 664 "paper/threads.nw"
 typedef void (*cgemm_f)(enum CBLAS_ORDER, enum CBLAS_TRANSPOSE,
                         enum CBLAS_TRANSPOSE, int, int, int, double,
                         const double *, int, const double *, int, double,
@@ -432,7 +432,7 @@ void cblas_dtrsm(const enum CBLAS_ORDER order, const enum CBLAS_SIDE side,
   next(order, side, uplo, trans, diag, m, n, alpha, A, lda, B, ldb);
   leave(use);
 }
-#line 719 "paper/threads.nw"
+#line 712 "paper/threads.nw"
 /* the choice made, or, before threads_start, the one it would make */
 static Threads described(void)
 {

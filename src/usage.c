@@ -1,6 +1,6 @@
-#line 69 "paper/main.nw"
+#line 56 "paper/main.nw"
 #include "usage.h"
-#line 74 "paper/main.nw"
+#line 61 "paper/main.nw"
 const char usage_main[] =
   "usage: contactopt COMMAND SCENE [options]\n"
   "Shape optimisation of an elastic body on a rigid foundation, frictionless\n"

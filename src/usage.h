@@ -1,4 +1,4 @@
-#line 58 "paper/main.nw"
+#line 45 "paper/main.nw"
 #ifndef CONTACTOPT_USAGE_H
 #define CONTACTOPT_USAGE_H
 /* the version of the program: the one place it is written */

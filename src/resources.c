@@ -1,0 +1,50 @@
+#line 29 "paper/resources.nw"
+#include <limits.h>
+#include <math.h>
+#include <time.h>
+#include <unistd.h>
+#include <sys/resource.h>
+#include "resources.h"
+#line 40 "paper/resources.nw"
+double resources_clock(void)
+{
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+#line 64 "paper/resources.nw"
+/* the unknowns of the mesh, and the entries of the sparse factor of K */
+static double resources_unknowns(const Problem *p)
+{
+  return 2 * (p->N + 1.0) * (p->M + p->R + 1.0);
+}
+
+static double resources_factor_entries(const Problem *p)
+{
+  double n = resources_unknowns(p);
+  return 5.1 * n * log2(n > 2 ? n : 2);
+}
+
+double resources_memory(const Problem *p)
+{
+  double n = resources_unknowns(p);
+  double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
+  return 3 * 8 * nk * nk + 12 * resources_factor_entries(p) + 400 * n;
+}
+#line 96 "paper/resources.nw"
+int resources_fits(const Problem *p, double extra, const char *origin, Status *st)
+{
+  double need = resources_memory(p) + extra, entries = resources_factor_entries(p);
+  if (entries > INT_MAX)
+    return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs a "
+                      "factor of about %.3g entries, more than CHOLMOD's 32-bit "
+                      "integers index (%d)", origin, p->N, p->M + p->R, entries, INT_MAX);
+  double have = (double) sysconf(_SC_PHYS_PAGES) * (double) sysconf(_SC_PAGESIZE);
+  struct rlimit lim;
+  if (!getrlimit(RLIMIT_AS, &lim) && lim.rlim_cur != RLIM_INFINITY)
+    have = fmin(have, (double) lim.rlim_cur);
+  if (!(have > 0) || need <= have) return STATUS_OK;
+  return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs "
+                    "about %.3g GB, more than the %.3g GB this process may use",
+                    origin, p->N, p->M + p->R, need / 1e9, have / 1e9);
+}
