@@ -28,8 +28,8 @@ static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
 {
   cholmod_common *cm = cd->cm;
-  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->Y, &cd->E, cm)
-      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->Y, &cd->E, cm))
+  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
+      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
     return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
   return STATUS_OK;
 }
@@ -116,7 +116,7 @@ void condense_free(Condense *cd)
   cholmod_free_factor(&cd->Ls, cd->cm), cholmod_free_factor(&cd->L, cd->cm);
   cholmod_free_dense(&cd->rhs, cd->cm), cholmod_free_dense(&cd->sol, cd->cm);
   cholmod_free_dense(&cd->Lb, cd->cm);
-  cholmod_free_dense(&cd->Y, cd->cm), cholmod_free_dense(&cd->E, cd->cm);
+  cholmod_free_dense(&cd->solve_Y, cd->cm), cholmod_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
 

@@ -36,7 +36,7 @@ typedef struct Condense {
   double bu2;            /* ||b_u||^2, for the residual */
   cholmod_dense *rhs;    /* n x 1: the vector that two solves overwrite */
   cholmod_dense *sol;    /* n x 1: the vector between the two solves */
-  cholmod_dense *Y, *E;  /* cholmod_solve2's workspace, sized by CHOLMOD */
+  cholmod_dense *solve_Y, *solve_E; /* cholmod_solve2's workspace Y, E, sized by CHOLMOD */
   cholmod_dense *Lb;     /* n x 1: z = L \ P b */
   char *act;             /* nk: the state of each, CONDENSE_HELD, _LO, _HI */
   int stepped;           /* y, T come from a Newton step (not a guess) */

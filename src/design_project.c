@@ -9,7 +9,7 @@ typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
   int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
   double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
-} Group;
+} Breakpoints;
 #line 505 "paper/design.nw"
 typedef struct {
   const Design_set *B;
@@ -23,21 +23,21 @@ typedef struct {
   signed char *edge, *box;    /* n: active at X: step i +1 up, -1 down,
                                  2 both (delta = 0); X_i -1 at 0, +1 at C0 */
   signed char *edge0, *box0;  /* n: those of the previous evaluation */
-  Group L, R;                 /* the derivative left and right of its zero */
+  Breakpoints L, R;                 /* the derivative left and right of its zero */
   double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
-} Work;
+} Projection;
 #line 307 "paper/design.nw"
-static void evaluate_g(Work *w, double mu);
+static void evaluate_g(Projection *w, double mu);
 
-static double area_rounding(const Work *w)
+static double area_rounding(const Projection *w)
 {
   return w->n * DBL_EPSILON * w->B->C0 * w->B->N * w->B->h;
 }
 
-static int newton_on_pieces(Work *w, double lo, double hi, Status *st);
+static int newton_on_pieces(Projection *w, double lo, double hi, Status *st);
 
-static int find_multiplier(Work *w, Status *st)
+static int find_multiplier(Projection *w, Status *st)
 {
   const Design_set *B = w->B;
   double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -51,10 +51,10 @@ static int find_multiplier(Work *w, Status *st)
   return newton_on_pieces(w, lo, hi, st);
 }
 #line 333 "paper/design.nw"
-static void chain_project(Work *w);
-static double piece_slope(const Work *w);
+static void chain_project(Projection *w);
+static double piece_slope(const Projection *w);
 
-static void evaluate_g(Work *w, double mu)
+static void evaluate_g(Projection *w, double mu)
 {
   w->mu = mu;
   for (int i = 0; i < w->n; i++) w->Z[i] = w->Y[i] - mu * design_weight(w->B, i);
@@ -63,7 +63,7 @@ static void evaluate_g(Work *w, double mu)
   w->slope = piece_slope(w);
 }
 #line 349 "paper/design.nw"
-static double piece_slope(const Work *w)
+static double piece_slope(const Projection *w)
 {
   double slope = 0;
   for (int first = 0, last; first < w->n; first = last + 1) {
@@ -79,10 +79,10 @@ static double piece_slope(const Work *w)
   return slope;
 }
 #line 387 "paper/design.nw"
-static int same_piece(const Work *w);
-static void keep_piece(Work *w);
+static int same_piece(const Projection *w);
+static void keep_piece(Projection *w);
 
-static int newton_on_pieces(Work *w, double lo, double hi, Status *st)
+static int newton_on_pieces(Projection *w, double lo, double hi, Status *st)
 {
   const int limit = 3 * (DBL_MAX_EXP - DBL_MIN_EXP + 2 * DBL_MANT_DIG);
   double mu = lo < 0 && 0 < hi ? 0 : lo + 0.5 * (hi - lo);
@@ -116,30 +116,30 @@ mu = newton ? step : mid;
                     "was not found in %d evaluations", limit);
 }
 #line 431 "paper/design.nw"
-static int same_piece(const Work *w)
+static int same_piece(const Projection *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
 }
 
-static void keep_piece(Work *w)
+static void keep_piece(Projection *w)
 {
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
 #line 524 "paper/design.nw"
-static double point_x(const Group *G, int k) { return G->x[k] + G->s; }
-static double point_d(const Group *G, int k)
+static double point_x(const Breakpoints *G, int k) { return G->x[k] + G->s; }
+static double point_d(const Breakpoints *G, int k)
 {
   return G->d[k] + G->c * G->x[k] + G->e;
 }
 
-static void point_set(Group *G, int k, double x, double d)
+static void point_set(Breakpoints *G, int k, double x, double d)
 {
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
 #line 539 "paper/design.nw"
-static void push(Group *G, double x, double d)
+static void push(Breakpoints *G, double x, double d)
 {
   if (G->top == G->cap) {
     int live = G->top - G->bot;
@@ -151,30 +151,30 @@ static void push(Group *G, double x, double d)
   point_set(G, G->top++, x, d);
 }
 
-static void move_top(Group *from, Group *to)
+static void move_top(Breakpoints *from, Breakpoints *to)
 {
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
 #line 560 "paper/design.nw"
-static void rebase(Group *G);
+static void rebase(Breakpoints *G);
 
-static void add_linear(Group *G, double z, double C0)
+static void add_linear(Breakpoints *G, double z, double C0)
 {
   G->c += 1;
   G->e += G->s - z;
   if (G->c > G->top - G->bot + 16 || fabs(G->s) > C0) rebase(G);
 }
 #line 574 "paper/design.nw"
-static double argmin_V(Work *w);
-static void step_V(Work *w, double xstar, double z);
-static void backtrack(Work *w);
-static void identify(Work *w);
-static void polish(Work *w);
+static double argmin_V(Projection *w);
+static void step_V(Projection *w, double xstar, double z);
+static void backtrack(Projection *w);
+static void mark_active(Projection *w);
+static void polish(Projection *w);
 
-static void chain_project(Work *w)
+static void chain_project(Projection *w)
 {
-  Group *L = &w->L, *R = &w->R;
+  Breakpoints *L = &w->L, *R = &w->R;
   L->bot = L->top = R->bot = R->top = 0;
   L->s = L->c = L->e = R->s = R->c = R->e = 0;
   push(R, w->B->C0, 0);
@@ -188,11 +188,11 @@ static void chain_project(Work *w)
     w->xstar[i] = argmin_V(w);
   }
   backtrack(w);
-  identify(w);
+  mark_active(w);
   polish(w);
 }
 #line 608 "paper/design.nw"
-static void rebase(Group *G)
+static void rebase(Breakpoints *G)
 {
   for (int k = G->bot; k < G->top; k++) {
     double x = point_x(G, k), d = point_d(G, k);
@@ -202,11 +202,11 @@ static void rebase(Group *G)
   G->s = G->c = G->e = 0;
 }
 #line 622 "paper/design.nw"
-static void cut(Group *G, const Group *other, double bound, double side);
+static void cut(Breakpoints *G, const Breakpoints *other, double bound, double side);
 
-static void step_V(Work *w, double xstar, double z)
+static void step_V(Projection *w, double xstar, double z)
 {
-  Group *L = &w->L, *R = &w->R;
+  Breakpoints *L = &w->L, *R = &w->R;
   push(L, xstar, 0);
   push(R, xstar, 0);
   L->s -= w->delta;
@@ -217,10 +217,10 @@ static void step_V(Work *w, double xstar, double z)
   cut(R, L, w->B->C0, +1);
 }
 #line 645 "paper/design.nw"
-static void cut(Group *G, const Group *other, double bound, double side)
+static void cut(Breakpoints *G, const Breakpoints *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
-    const Group *H = G;
+    const Breakpoints *H = G;
     int k = G->bot + 1;
     if (k == G->top) { H = other; k = other->top - 1; }
     double xp = point_x(G, G->bot), dp = point_d(G, G->bot);
@@ -232,15 +232,15 @@ static void cut(Group *G, const Group *other, double bound, double side)
   }
 }
 #line 670 "paper/design.nw"
-static double terms(const Group *G, int k)
+static double point_terms(const Breakpoints *G, int k)
 {
   return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
        + fabs(G->x[k]) + fabs(G->s);
 }
 
-static double argmin_V(Work *w)
+static double argmin_V(Projection *w)
 {
-  Group *L = &w->L, *R = &w->R;
+  Breakpoints *L = &w->L, *R = &w->R;
   while (L->top > L->bot && point_d(L, L->top - 1) >= 0) move_top(L, R);
   while (R->top > R->bot && point_d(R, R->top - 1) < 0) move_top(R, L);
   if (L->top == L->bot) return 0;
@@ -249,11 +249,11 @@ static double argmin_V(Work *w)
   double xr = point_x(R, R->top - 1), dr = point_d(R, R->top - 1);
   double x = !(xr > xl) ? xr
            : dl >= 0 ? xl : xl + (xr - xl) * (-dl / (dr - dl));
-  w->M = fmax(w->M, terms(L, L->top - 1) + terms(R, R->top - 1));
+  w->M = fmax(w->M, point_terms(L, L->top - 1) + point_terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
 #line 694 "paper/design.nw"
-static void backtrack(Work *w)
+static void backtrack(Projection *w)
 {
   double *X = w->X, delta = w->delta;
   X[w->n - 1] = w->xstar[w->n - 1];
@@ -261,7 +261,7 @@ static void backtrack(Work *w)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
 #line 728 "paper/design.nw"
-static void identify(Work *w)
+static void mark_active(Projection *w)
 {
   double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
   double tau = 8 * DBL_EPSILON * (w->n * C0 + w->M);
@@ -275,9 +275,9 @@ static void identify(Work *w)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
 #line 752 "paper/design.nw"
-static void polish_block(Work *w, int first, int last);
+static void polish_block(Projection *w, int first, int last);
 
-static void polish(Work *w)
+static void polish(Projection *w)
 {
   for (int first = 0, last; first < w->n; first = last + 1) {
     for (last = first; last < w->n - 1 && w->edge[last]; last++) ;
@@ -285,9 +285,9 @@ static void polish(Work *w)
   }
 }
 #line 769 "paper/design.nw"
-static double block_mean(const Work *w, int first, int last);
+static double block_mean(const Projection *w, int first, int last);
 
-static void polish_block(Work *w, int first, int last)
+static void polish_block(Projection *w, int first, int last)
 {
   double *X = w->X, C0 = w->B->C0, o = 0, t;
   int anchor = -1;
@@ -304,7 +304,7 @@ static void polish_block(Work *w, int first, int last)
 }
 
 /* the mean of Z_j - X_j over the block, X holding the offsets */
-static double block_mean(const Work *w, int first, int last)
+static double block_mean(const Projection *w, int first, int last)
 {
   double t = 0, r = 0;
   int m = last - first + 1;
@@ -314,20 +314,20 @@ static double block_mean(const Work *w, int first, int last)
   return t + r / m;
 }
 #line 827 "paper/design.nw"
-static void range_of_beta(const Work *w, int j, double *lo, double *hi)
+static void range_of_beta(const Projection *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
   *hi = w->box[j] > 0 ? HUGE_VAL : 0;
 }
 
-static void range_of_nu(const Work *w, int j, double *lo, double *hi)
+static void range_of_nu(const Projection *w, int j, double *lo, double *hi)
 {
   int e = j < w->n - 1 ? w->edge[j] : 0;
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
 #line 843 "paper/design.nw"
-static void sweep_forward(Work *w)
+static void sweep_forward(Projection *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
   for (int j = 0; j < w->n; j++) {
@@ -342,7 +342,7 @@ static void sweep_forward(Work *w)
   }
 }
 #line 862 "paper/design.nw"
-static void sweep_backward(const Work *w, Design_multipliers *m)
+static void sweep_backward(const Projection *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
   for (int j = w->n - 1; j >= 0; j--) {
@@ -361,8 +361,8 @@ static void sweep_backward(const Work *w, Design_multipliers *m)
   m->mu = w->mu;
 }
 #line 889 "paper/design.nw"
-static Work *work_new(const Design_set *B, Status *st);
-static void work_free(Work *w);
+static Projection *projection_new(const Design_set *B, Status *st);
+static void projection_free(Projection *w);
 
 int design_project(const Design_set *B, const double *Y, double *X,
                    Design_multipliers *mult, Status *st)
@@ -373,20 +373,20 @@ int design_project(const Design_set *B, const double *Y, double *X,
   if (mult && mult->N != B->N)
     return status_set(st, STATUS_INPUT, "design: multipliers made for N = %d "
                       "passed with a design set of N = %d", mult->N, B->N);
-  Work *w = work_new(B, st);
+  Projection *w = projection_new(B, st);
   if (!w) return STATUS_MEMORY;
   memcpy(w->Y, Y, w->n * sizeof *Y);
   if (!(rc = find_multiplier(w, st))) {
     memcpy(X, w->X, w->n * sizeof *X);
     if (mult) { sweep_forward(w); sweep_backward(w, mult); }
   }
-  work_free(w);
+  projection_free(w);
   return rc;
 }
 #line 950 "paper/design.nw"
-static Work *work_new(const Design_set *B, Status *st)
+static Projection *projection_new(const Design_set *B, Status *st)
 {
-  Work *w = calloc(1, sizeof *w);
+  Projection *w = calloc(1, sizeof *w);
   if (!w) {
     status_set(st, STATUS_MEMORY, "design: out of memory");
     return NULL;
@@ -398,7 +398,7 @@ static Work *work_new(const Design_set *B, Status *st)
   w->Y = malloc((6 * (size_t) w->n + 4 * (size_t) w->L.cap) * sizeof *w->Y);
   w->edge = malloc(4 * (size_t) w->n);
   if (!w->Y || !w->edge) {
-    work_free(w);
+    projection_free(w);
     status_set(st, STATUS_MEMORY, "design: out of memory for N = %d", B->N);
     return NULL;
   }
@@ -420,7 +420,7 @@ w->box0 = w->edge0 + w->n;
   return w;
 }
 
-static void work_free(Work *w)
+static void projection_free(Projection *w)
 {
   if (!w) return;
   free(w->Y);
