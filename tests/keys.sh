@@ -5,7 +5,7 @@
 # and so is its list of sections; every key of every shipped scene is
 # printed), and the copies in README.md and figures/keys.tex are the
 # program's output.  That the printed defaults are the loader's is
-# tests/test_keys.c.
+# tests/test_scene_keys.c.
 . tests/lib.sh
 scene=data/example-5.1.scene
 $BIN keys > $TMP/keys; rc=$?

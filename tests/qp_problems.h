@@ -332,7 +332,7 @@ static inline void check_solver(const Qp_problem *P, const double *xr, int m)
   check(qp_kkt(&P->qp, x, NULL) <= TOL, "%s %s: recomputed kkt %.2g <= tol (4.3)",
         P->name, names[m], qp_kkt(&P->qp, x, NULL));
   if (m == 0 && !xr) memcpy(x0, x, n * sizeof *x), xr = x0;
-  check(rel_diff(n, x, xr) < 1e-7, "%s %s: x agrees with %s to %.2g",
+  check(rel_diff(n, x, xr) < 1e-7, "%s %s: x of (4.3) agrees with %s to %.2g",
         P->name, names[m], xr == x0 ? "pdas" : "the enumeration",
         rel_diff(n, x, xr));
   free(x), free(T), free(x0);

@@ -246,7 +246,7 @@ static void test_brute_force(int tied)
     check(bad == 0, "N = %d: %d %s projections onto B (4.4) equal the brute-force "
           "least distance over all active sets (worst %.1e relative)",
           N, cases, tied ? "tied" : "random", worst);
-    check(notkkt == 0, "N = %d: their multipliers satisfy the KKT conditions "
+    check(notkkt == 0, "N = %d: their multipliers satisfy the KKT conditions of B (4.4) "
           "to 1e-12", N);
   }
 }
@@ -311,7 +311,7 @@ static void test_example_51(void)
         area_of(&B, Y));
   int rc;
   Kkt k = project_checked(&B, Y, X, &rc);
-  check(rc == 0 && kkt_ok(k, 1e-12), "its projection satisfies the KKT "
+  check(rc == 0 && kkt_ok(k, 1e-12), "its projection onto B (4.4) satisfies the KKT "
         "conditions (feas %.1e, sign %.1e, comp %.1e, stat %.1e)",
         k.feas, k.sign, k.comp, k.stat);
   check(fabs(design_area(&B, X) - 0.09) <= 1e-12
@@ -467,7 +467,7 @@ static void test_kkt(void)
   for (int i = 0; i < n; i++) { X[i] = 0.09 / 4; G[i] = 1e9 * w_of(&B, i); }
   int rc = design_kkt(&B, X, G, 0, P, m, &r, &st);
   check(rc == 0 && r <= 1e-15 * norm_inf(G, n) && fabs(m->mu + 1e9) <= 1e-6,
-        "G = 1e9 w (the area normal) at an interior X: stationary, residual "
+        "G = 1e9 w (the area normal) at an interior X: stationary on B (4.4), residual "
         "%.1e, mu = %.15g", r, m->mu);
   for (int i = 0; i < n; i++) G[i] = i == 7 ? -1 : 0;
   rc = design_kkt(&B, X, G, 0, P, m, &r, &st);

@@ -139,7 +139,7 @@ static void patch_test(Plane_model model)
     qp_matvec(A, u, r);
     double amax = 0;
     for (int p = 0; p < ((int *) A->p)[A->ncol]; p++) amax = fmax(amax, fabs(((double *) A->x)[p]));
-    check(norm_inf(r, d->n) <= 1e-12 * amax * 4, "%s rigid motion %d has zero stiffness (%.2e)",
+    check(norm_inf(r, d->n) <= 1e-12 * amax * 4, "%s rigid motion %d has zero stiffness in A (4.3) (%.2e)",
           model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", mode, norm_inf(r, d->n) / amax);
   }
   energy_checks(m, d, &H, A, grad, model);
@@ -173,12 +173,12 @@ static void traction_load(void)
       }
   double want1 = 2e8 * 2.2 + 1e8 * 0.6, want2 = -5.75e8 * 2.2;
   check(fabs(sum[0] - want1) < 1e-6 && fabs(sum[1] - want2) < 1e-6,
-        "traction load sums to P times the loaded length (%.9g, %.9g)", sum[0], sum[1]);
+        "traction load P of (4.3) sums to P times the loaded length (%.9g, %.9g)", sum[0], sum[1]);
   /* moment about the origin of the exact distributed load */
   double want_m = -5.75e8 * (3.3 * 3.3 - 1.1 * 1.1) / 2 - 2e8 * 1.0 * 2.2
                 - 1e8 * (0.9 * 0.9 - 0.3 * 0.3) / 2;
   check(fabs(moment - want_m) < 1e-6 * fabs(want_m),
-        "traction load has the exact first moment (%.9g vs %.9g)", moment, want_m);
+        "traction load P of (4.3) has the exact first moment (%.9g vs %.9g)", moment, want_m);
   free(b);
   fem_dofs_free(d);
   mesh_free(m);
@@ -220,7 +220,7 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   int same = A && B && A->nrow == B->nrow && A->ncol == B->ncol && A->sorted && A->packed
              && A->stype == 0 && !memcmp(A->p, B->p, (A->ncol + 1) * sizeof(int))
              && !memcmp(A->i, B->i, ((int *) B->p)[B->ncol] * sizeof(int));
-  check(same, "N = %d, M = %d, R = %d, sides %d %d %d: the pattern of A is the triplets' "
+  check(same, "N = %d, M = %d, R = %d, sides %d %d %d: the pattern of A (4.3) is the triplets' "
         "(%d unknowns, %d entries)", N, M, R, left, right, top, d ? d->n : -1,
         B ? ((int *) B->p)[B->ncol] : -1);
   cholmod_free_sparse(&A, &cm), cholmod_free_sparse(&B, &cm);

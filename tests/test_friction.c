@@ -42,7 +42,7 @@ static void test_no_friction(const char *refine)
       check(fabs(x->md->energy - f.md->energy) <= 1e-12 * E
             && max_diff(x->md->Q, f.md->Q, n) <= 1e-12 * Q
             && max_diff(x->md->T, f.md->T, nc) <= 1e-12 * T,
-            "refine %s: %s is frictionless: E %.1e, Q %.1e, T %.1e relative", refine,
+            "refine %s: %s is frictionless (4.3): E %.1e, Q %.1e, T %.1e relative", refine,
             law, fabs(x->md->energy - f.md->energy) / E,
             max_diff(x->md->Q, f.md->Q, n) / Q, max_diff(x->md->T, f.md->T, nc) / T);
       check(x->md->dofs->nt > 0 && x->md->friction_energy == 0

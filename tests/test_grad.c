@@ -113,7 +113,7 @@ static void check_grad_check(const char *path)
         worst, gc->worst);
   if (s.alpha0[0] == 0)
     check(gc->err[0] < 1e-6, "%s: node 0 on the foundation (alpha_0 = 0), "
-          "one-sided difference: error %.2e", path, gc->err[0]);
+          "one-sided difference of (4.8): error %.2e", path, gc->err[0]);
   check(fabs(md->energy - fresh->energy) <= 1e-12 * fabs(fresh->energy),
         "%s: the model is left solved at alpha0 (E %.15g, fresh %.15g)", path,
         md->energy, fresh->energy);

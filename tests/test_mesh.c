@@ -1,7 +1,7 @@
 /* test_mesh: the moving mesh (paper/mesh.nw).  The article's mesh has the
    sizes of Fig. 5.2a, every triangle positively oriented, the area of the
    body; the nodes move by (4.2); the designs that would invert a triangle
-   are refused.  (From tests/test_fem.c.) */
+   are refused.  The operator assembled on it: test_fem.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,7 +29,7 @@ static void article_mesh(void)
   for (int t = 0; t < m->ntri; t++) area += mesh_area(m, t);
   double trapez = 0;
   for (int i = 0; i < 16; i++) trapez += 0.25 * (X[i] + X[i + 1]) / 2;
-  check(fabs(area - (4.0 - trapez)) < 1e-13, "mesh area = gamma(b-a) - h sum trapezoids");
+  check(fabs(area - (4.0 - trapez)) < 1e-13, "mesh area = gamma(b-a) - h sum trapezoids, the area of B (4.4)");
   mesh_free(m);
 
   s = free_body(8, 4, 2, MODEL_PLANE_STRESS);

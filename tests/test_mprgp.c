@@ -2,9 +2,7 @@
    small problems of qp_problems.h: against the enumeration and pdas,
    invariant under scaling, warm starts, its failures; then at a weakly
    active node of Examples 5.1 and 5.2 (weakly_active.h), where it must
-   agree with pdas.  (From tests/test_qp.c, test_hard.c and
-   test_friction_cgssor.c.)
-   Then MPRGP on the dual (solver.state = cgssor with
+   agree with pdas.  Then MPRGP on the dual (solver.state = cgssor with
    friction, paper/mprgp.nw) against the active set method on Example 5.1:
    - given friction at g = 1e7, 2.5e8, 1e9 Pa on N = 16 and 64, and Coulomb
      friction F = 0.2: E to 1e-10 relative, the normal and tangential
@@ -119,7 +117,7 @@ static void test_g_zero(void)
     double T = max_diff(c.md->T, f.md->T, nc) / max_abs(f.md->T, nc);
     double Tt = max_abs(c.md->T + nc, c.md->dofs->nt) / max_abs(f.md->T, nc);
     check(E <= 1e-10 && T <= 1e-8 && Tt <= 1e-8,
-          "g = 0: cgssor gives the frictionless state: E to %.1e, T to %.1e, "
+          "g = 0: cgssor gives the frictionless state (4.3): E to %.1e, T to %.1e, "
           "tangential forces %.1e of max|T|", E, T, Tt);
   }
   close_case(&f), close_case(&c);

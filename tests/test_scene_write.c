@@ -1,4 +1,4 @@
-/* test_effective.c: the effective scene (scene_write, paper/scene.nw).
+/* test_scene_write.c: the effective scene (scene_write, paper/scene.nw).
    Each scene below, with its overrides, is loaded, written to a file in
    another folder, and the written file loaded again: the two scenes must
    be the same bit for bit in every field (problem, both solvers' options,
@@ -8,9 +8,9 @@
    initial shape, every key of the fuzzing corpus, Coulomb friction, a
    constant shape under a loaded right side, and a shape file named
    relative to a scene that was itself named relative to the current
-   folder, as it is and resampled onto a refined mesh.  Then the two refusals: a shape file whose path is too long for
-   a line of a scene, and a file that cannot be written.  Run from the
-   repository root. */
+   folder, as it is and resampled onto a refined mesh.  Then the two
+   refusals: a shape file whose path is too long for a line of a scene,
+   and a file that cannot be written.  Run from the repository root. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +21,7 @@
 #include "same.h"
 #include "model.h"
 
-static char tmpdir[] = "/tmp/test_effective.XXXXXX";
+static char tmpdir[] = "/tmp/test_scene_write.XXXXXX";
 static char root[4096];       /* the repository, where the test started */
 
 #define NO_ARC "design.arc_x1=", "design.arc_x2=", "design.arc_radius="
@@ -104,7 +104,7 @@ static void put(const char *path, const char *text)
 {
   FILE *f = fopen(path, "w");
   if (!f || fputs(text, f) < 0 || fclose(f)) {
-    fprintf(stderr, "test_effective: cannot write %s\n", path);
+    fprintf(stderr, "test_scene_write: cannot write %s\n", path);
     exit(1);
   }
 }
@@ -203,7 +203,7 @@ int main(void)
   size_t k;
   int n;
   if (!getcwd(root, sizeof root) || !mkdtemp(tmpdir)) {
-    perror("test_effective");
+    perror("test_scene_write");
     return 1;
   }
   for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {

@@ -1,4 +1,4 @@
-/* test_keys.c: the table of keys as `contactopt keys` prints it
+/* test_scene_keys.c: the table of keys as `contactopt keys` prints it
    (scene_keys_print, paper/scene.nw) against what the loader does.  For
    every key printed with a default, the scene with the key deleted (-s
    key=) and the scene with the key set to the printed default load to the
@@ -137,9 +137,9 @@ int main(void)
   FILE *fp = tmpfile();
   int n = 0, i;
   FILE *sh;
-  snprintf(shape, sizeof shape, "design.file=/tmp/test_keys.%d.dat", (int)getpid());
+  snprintf(shape, sizeof shape, "design.file=/tmp/test_scene_keys.%d.dat", (int)getpid());
   if (!fp || !(sh = fopen(shape + 12, "w"))) {
-    perror("test_keys");
+    perror("test_scene_keys");
     return 1;
   }
   for (i = 0; i <= 16; i++) fprintf(sh, "%g %g\n", 0.25 * i, 0.001 * i);
