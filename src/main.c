@@ -226,6 +226,21 @@ static int no_gradient(const Run *r, const char *command, Status *st)
                     "none (contact.model = tresca has one)", r->s.path, command);
 }
 
+/* the nodes whose differences met other held sets than the design's:
+   there the gradient is one-sided, that of the design's sets */
+static void gradcheck_crossed(const Grad_check *gc)
+{
+  int n = 0;
+  for (int k = 0; k < gc->ncheck; k++) n += gc->crossed[gc->check[k]];
+  if (!n) return;
+  printf("gradcheck: at %d node%s (", n, n == 1 ? "" : "s");
+  for (int k = 0, m = 0; k < gc->ncheck; k++)
+    if (gc->crossed[gc->check[k]]) printf("%s%d", m++ ? " " : "", gc->check[k]);
+  printf(") the differences crossed a change of the contact set: the %s is "
+         "one-sided there, its gradient that of the design's set\n",
+         objective_name(gc->objective->kind));
+}
+
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
@@ -234,12 +249,14 @@ static int command_gradcheck(Run *r, Status *st)
   Gradcheck_progress g = { 0, 0, 0 };
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
               : (int) st->code;
+  if (gc) gc->objective = &r->s.optimizer.objective;
   if (!rc && !(rc = gradcheck_estimate(r, gc, st))) {
     g.start = g.last = model_clock();
     rc = grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &g, st);
   }
   if (!rc && !(rc = begin(r, &o, st)))
     rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
+  if (!rc) gradcheck_crossed(gc);
   if (!rc)
     printf("%s: largest relative error of the gradient %.3e (node %d; %d "
            "nodes checked) -> %s/\n", r->s.path, gc->err[gc->worst], gc->worst,
@@ -247,7 +264,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 718 "paper/main.nw"
+#line 735 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -257,7 +274,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 734 "paper/main.nw"
+#line 751 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -270,7 +287,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 755 "paper/main.nw"
+#line 772 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -318,7 +335,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 812 "paper/main.nw"
+#line 829 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -337,7 +354,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 842 "paper/main.nw"
+#line 859 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -353,7 +370,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 870 "paper/main.nw"
+#line 887 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

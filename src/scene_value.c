@@ -1,4 +1,4 @@
-#line 1288 "paper/scene.nw"
+#line 1299 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -8,7 +8,7 @@
 #include <strings.h>
 #include "scene_private.h"
 
-#line 1328 "paper/scene.nw"
+#line 1339 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -48,7 +48,7 @@ const char *scene_to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1371 "paper/scene.nw"
+#line 1382 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -61,7 +61,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1387 "paper/scene.nw"
+#line 1398 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -72,7 +72,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1407 "paper/scene.nw"
+#line 1418 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Loader *L, const Key *k, char *buf,
@@ -87,7 +87,7 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = scene_name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1424 "paper/scene.nw"
+#line 1435 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 const Entry *scene_entry(Loader *L, const char *sec, const char *key)
 {
@@ -106,7 +106,7 @@ const Entry *scene_entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1446 "paper/scene.nw"
+#line 1457 "paper/scene.nw"
 /* x = the number sec.key */
 static int scene_real(Loader *L, const char *sec, const char *key, double *x)
 {
@@ -116,7 +116,7 @@ static int scene_real(Loader *L, const char *sec, const char *key, double *x)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1458 "paper/scene.nw"
+#line 1469 "paper/scene.nw"
 /* k = the integer sec.key */
 int scene_integer(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -126,7 +126,7 @@ int scene_integer(Loader *L, const char *sec, const char *key, int *k)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1470 "paper/scene.nw"
+#line 1481 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 int scene_word(Loader *L, const char *sec, const char *key, int *k)
 {
@@ -137,7 +137,7 @@ int scene_word(Loader *L, const char *sec, const char *key, int *k)
   return scene_blame(L, "unknown value (accepted: %s)",
                      scene_name_list(names, list, sizeof list));
 }
-#line 1493 "paper/scene.nw"
+#line 1504 "paper/scene.nw"
 /* the field of s that sec.key's record names = the value of sec.key */
 int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
 {
@@ -152,7 +152,7 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
     memcpy(at, &v, sizeof v);
   return rc;
 }
-#line 1513 "paper/scene.nw"
+#line 1524 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
                         const char *w)
