@@ -97,7 +97,8 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
-                         opt_metric_name(r.s.optimizer.metric) };
+                         opt_metric_name(r.s.optimizer.metric),
+                         &r.s.optimizer.objective };
   if (!a->outdir) output_default_dir(a->scene, c->suffix, r.dir, sizeof r.dir);
   double extra = c->optimizes ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
   if (!(rc = a->outdir ? output_dir_name(a->outdir, r.dir, sizeof r.dir, st) : 0)
@@ -114,7 +115,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 400 "paper/main.nw"
+#line 401 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -125,7 +126,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 419 "paper/main.nw"
+#line 420 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -160,7 +161,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 456 "paper/main.nw"
+#line 457 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -175,7 +176,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 488 "paper/main.nw"
+#line 489 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -198,7 +199,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 514 "paper/main.nw"
+#line 515 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -217,7 +218,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 542 "paper/main.nw"
+#line 543 "paper/main.nw"
 /* the refusal of a command that needs the gradient of an energy */
 static int no_gradient(const Run *r, const char *command, Status *st)
 {
@@ -264,7 +265,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 735 "paper/main.nw"
+#line 736 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -274,7 +275,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 751 "paper/main.nw"
+#line 752 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -287,7 +288,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 772 "paper/main.nw"
+#line 773 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -298,17 +299,24 @@ static int command_optimize(Run *r, Status *st)
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
+  const Objective *J = &r->s.optimizer.objective;
   if (!grad_available(&r->s.problem)) rc = no_gradient(r, "optimize", st);
+  else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
+    rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
+                    "the energy only; objective.kind = %s needs slsqp or "
+                    "projgrad", r->s.path, objective_name(J->kind));
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = begin(r, &o, st))) {
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
-        && !(rc = output_start(&o, r->md, X, moved, &start, st))
+        && !(rc = output_start(&o, r->md, X, moved,
+                                              r->s.optimizer.objective.q, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
-        && !(rc = grad_energy(r->md, G, st))
+        && !(rc = J->kind == OBJECTIVE_ENERGY ? grad_energy(r->md, G, st)
+                                              : objective_gradient(r->md, J, G, st))
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
@@ -335,7 +343,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 829 "paper/main.nw"
+#line 837 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -354,7 +362,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 859 "paper/main.nw"
+#line 867 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -370,7 +378,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 887 "paper/main.nw"
+#line 895 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,4 +1,4 @@
-#line 493 "paper/output.nw"
+#line 496 "paper/output.nw"
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include "output_private.h"
 
-#line 512 "paper/output.nw"
+#line 515 "paper/output.nw"
 int output_dir_name(const char *given, char *dir, size_t size, Status *st)
 {
   size_t n = strlen(given);
@@ -27,7 +27,7 @@ int output_dir_name(const char *given, char *dir, size_t size, Status *st)
   snprintf(dir, size, "%.*s", (int) n, given);
   return STATUS_OK;
 }
-#line 540 "paper/output.nw"
+#line 543 "paper/output.nw"
 /* parent = the folder of path: all before its last slash, "." or "/" */
 static void output_parent(const char *path, char *parent, size_t size)
 {
@@ -93,7 +93,7 @@ int output_check_file(const char *path, const char *dir, Status *st)
   if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
   return output_creatable(path, 0, st);
 }
-#line 611 "paper/output.nw"
+#line 614 "paper/output.nw"
 int output_check(const char *dir, Status *st)
 {
   struct stat sb;
@@ -114,7 +114,7 @@ int output_check(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 659 "paper/output.nw"
+#line 662 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {

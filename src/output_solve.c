@@ -1,10 +1,10 @@
-#line 1346 "paper/output.nw"
+#line 1349 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
 
-#line 1391 "paper/output.nw"
+#line 1413 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -19,7 +19,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1364 "paper/output.nw"
+#line 1367 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -40,7 +40,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1410 "paper/output.nw"
+#line 1432 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -63,7 +63,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1443 "paper/output.nw"
+#line 1465 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

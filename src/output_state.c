@@ -1,14 +1,14 @@
-#line 901 "paper/output.nw"
+#line 904 "paper/output.nw"
 #include <stdio.h>
 #include "output_private.h"
 
-#line 924 "paper/output.nw"
+#line 927 "paper/output.nw"
 double output_u(const Model *md, int node, int c)
 {
   int k = md->dofs->unknown[2 * node + c];
   return k < 0 ? 0.0 : md->Q[k];
 }
-#line 933 "paper/output.nw"
+#line 936 "paper/output.nw"
 FILE *output_open_in(Output *o, const char *sub, const char *name,
                      Status *st)
 {
@@ -16,7 +16,7 @@ FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 943 "paper/output.nw"
+#line 946 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -27,7 +27,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 956 "paper/output.nw"
+#line 959 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -43,19 +43,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 980 "paper/output.nw"
+#line 983 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 971 "paper/output.nw"
+#line 974 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 989 "paper/output.nw"
+#line 992 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -69,7 +69,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 1005 "paper/output.nw"
+#line 1008 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -87,7 +87,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 1326 "paper/output.nw"
+#line 1329 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {
