@@ -1,4 +1,4 @@
-#line 1504 "paper/output.nw"
+#line 1505 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -6,7 +6,7 @@
 #include "output_private.h"
 #include "threads.h"
 
-#line 1694 "paper/output.nw"
+#line 1695 "paper/output.nw"
 /* J = every objective at the model's state, the peak's exponent q, NaN
    where undefined (a body that lifts off has no pressure) */
 static void output_objectives(const Model *md, double q, double *J)
@@ -29,7 +29,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   output_objectives(md, q, start->J);
   return STATUS_OK;
 }
-#line 1585 "paper/output.nw"
+#line 1586 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -50,7 +50,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1524 "paper/output.nw"
+#line 1525 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -95,7 +95,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1649 "paper/output.nw"
+#line 1650 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -108,7 +108,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1613 "paper/output.nw"
+#line 1614 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -140,7 +140,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1672 "paper/output.nw"
+#line 1673 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -159,7 +159,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1393 "paper/output.nw"
+#line 1394 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const Model *md, const Output_start *start)
 {
@@ -167,13 +167,13 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
   output_objectives(md, ob->q, J);
   fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
           J[ob->kind]);
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
-    if (k != OBJECTIVE_ENERGY)     /* initial_energy is written above */
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
+    if (k != OBJECTIVE_ENERGY && !isnan(start->J[k]))  /* initial_energy: above */
       fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J[k]);
-    fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
+    if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1722 "paper/output.nw"
+#line 1723 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

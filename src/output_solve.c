@@ -4,7 +4,7 @@
 #include "output_private.h"
 #include "threads.h"
 
-#line 1413 "paper/output.nw"
+#line 1414 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -40,7 +40,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1432 "paper/output.nw"
+#line 1433 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -63,7 +63,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1465 "paper/output.nw"
+#line 1466 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
