@@ -1,4 +1,4 @@
-#line 261 "paper/condense.nw"
+#line 263 "paper/condense.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,9 +7,9 @@
 #include "qp_private.h"
 #include "condense.h"
 
-#line 392 "paper/condense.nw"
+#line 394 "paper/condense.nw"
 #define SINGULAR (-1)    /* K is singular (not a Status_code) */
-#line 377 "paper/condense.nw"
+#line 379 "paper/condense.nw"
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int cholmod_failed(const cholmod_common *cm, const char *what,
                           Status *st)
@@ -22,7 +22,7 @@ static int cholmod_failed(const cholmod_common *cm, const char *what,
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
 
-#line 539 "paper/condense.nw"
+#line 541 "paper/condense.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
 static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -34,7 +34,7 @@ static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
   return STATUS_OK;
 }
 
-#line 280 "paper/condense.nw"
+#line 282 "paper/condense.nw"
 /* the arrays, K's values copied from A, and at; nonzero when out of memory */
 static int alloc_arrays(Condense *cd, Status *st)
 {
@@ -59,7 +59,7 @@ static int alloc_arrays(Condense *cd, Status *st)
   return STATUS_OK;
 }
 
-#line 310 "paper/condense.nw"
+#line 312 "paper/condense.nw"
 static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
@@ -80,7 +80,7 @@ static int analyse_contact_last(Condense *cd, Status *st)
   free(last), free(perm);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 334 "paper/condense.nw"
+#line 336 "paper/condense.nw"
 if (!(cd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
@@ -91,10 +91,10 @@ for (int t = 0; t < cd->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 330 "paper/condense.nw"
+#line 332 "paper/condense.nw"
 }
 
-#line 347 "paper/condense.nw"
+#line 349 "paper/condense.nw"
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
                          cholmod_common *cm, Status *st)
 {
@@ -120,7 +120,7 @@ void condense_free(Condense *cd)
   free(cd);
 }
 
-#line 447 "paper/condense.nw"
+#line 449 "paper/condense.nw"
 /* K = A + diag(A_ii) on the condensed unknowns; the values only */
 static void fill_contact_matrix(Condense *cd, const double *d)
 {
@@ -134,7 +134,7 @@ static void fill_contact_matrix(Condense *cd, const double *d)
   }
 }
 
-#line 467 "paper/condense.nw"
+#line 469 "paper/condense.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Condense *cd)
 {
@@ -144,7 +144,7 @@ static void read_trailing_block(Condense *cd)
   memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
   if (L->is_super) {
     
-#line 486 "paper/condense.nw"
+#line 488 "paper/condense.nw"
 const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -153,7 +153,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 476 "paper/condense.nw"
+#line 478 "paper/condense.nw"
   } else {
     const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < cd->n; k++)
@@ -162,7 +162,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
   }
 }
 
-#line 499 "paper/condense.nw"
+#line 501 "paper/condense.nw"
 static void schur_complement(Condense *cd, const double *d)
 {
   int nc = cd->nk;
@@ -178,7 +178,7 @@ static void schur_complement(Condense *cd, const double *d)
     }
 }
 
-#line 518 "paper/condense.nw"
+#line 520 "paper/condense.nw"
 static int condensed_load(Condense *cd, const double *b, Status *st)
 {
   memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
@@ -197,7 +197,7 @@ static int condensed_load(Condense *cd, const double *b, Status *st)
   return STATUS_OK;
 }
 
-#line 413 "paper/condense.nw"
+#line 415 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
    d the diagonal of A; SINGULAR when K is */
 static int condense(Condense *cd, const double *b, const double *d, Status *st)
@@ -230,7 +230,7 @@ int condense_factor(Qp_workspace *w, Status *st)
     "A is singular even with every bound held", w->nc);
 }
 
-#line 568 "paper/condense.nw"
+#line 570 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -242,13 +242,13 @@ void condense_forces(Qp_workspace *w)
   }
 }
 
-#line 582 "paper/condense.nw"
+#line 584 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 594 "paper/condense.nw"
+#line 596 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -262,13 +262,13 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 587 "paper/condense.nw"
+#line 589 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
 
-#line 614 "paper/condense.nw"
+#line 616 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -311,7 +311,7 @@ void condense_states_at_x(Qp_workspace *w)
   cd->stepped = 1;
 }
 
-#line 676 "paper/condense.nw"
+#line 678 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -330,7 +330,7 @@ int condense_expand(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 701 "paper/condense.nw"
+#line 703 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -346,7 +346,7 @@ int condense_refine(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 726 "paper/condense.nw"
+#line 728 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -359,7 +359,7 @@ int condense_end(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 748 "paper/condense.nw"
+#line 750 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -368,7 +368,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 768 "paper/condense.nw"
+#line 770 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -382,7 +382,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 788 "paper/condense.nw"
+#line 790 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -405,27 +405,35 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 781 "paper/condense.nw"
+#line 783 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 817 "paper/condense.nw"
+#line 819 "paper/condense.nw"
+Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
+{
+  Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
+  if (!cd) return NULL;
+  int code = condense(cd, w->qp->b, w->d, st);
+  if (code == SINGULAR)
+    status_set(st, STATUS_NUMERIC, "%s: A is singular even with every "
+               "bounded unknown held", who);
+  if (code) { condense_free(cd); return NULL; }
+  return cd;
+}
+
 /* S of w's problem without friction, condensed apart, its diagonal
    raised by shift A_ii */
 static int schur_apart(const Qp_workspace *w, double shift, double *S,
                        Status *st)
 {
-  Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
+  Condense *cd = condense_apart(w, "qp_schur", st);
   if (!cd) return st->code;
-  int code = condense(cd, w->qp->b, w->d, st);
-  if (code == SINGULAR)
-    code = status_set(st, STATUS_NUMERIC, "qp_schur: A is singular even "
-                      "with every bounded unknown held");
-  if (!code) schur_copy(cd, w->d, shift, S);
+  schur_copy(cd, w->d, shift, S);
   condense_free(cd);
-  return code;
+  return STATUS_OK;
 }
-#line 837 "paper/condense.nw"
+#line 856 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

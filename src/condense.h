@@ -6,11 +6,11 @@
 #include <cholmod.h>
 #include "qp.h"
 
-#line 114 "paper/condense.nw"
+#line 116 "paper/condense.nw"
 /* free at the lower end of its force's interval, held, free at the upper */
 enum { CONDENSE_LO = 0, CONDENSE_HELD = 1, CONDENSE_HI = 2 };
 
-#line 126 "paper/condense.nw"
+#line 128 "paper/condense.nw"
 typedef struct Condense {
   const cholmod_sparse *A; /* the problem's A (borrowed): its pattern, and
                             its values at each condensation */
@@ -43,7 +43,7 @@ typedef struct Condense {
   int condensed;         /* S, f belong to the current values of A and b */
 } Condense;
 
-#line 165 "paper/condense.nw"
+#line 167 "paper/condense.nw"
 /* the condensation of A onto its unknowns ik[0..nk-1], analysed; NULL
    (and st) on failure */
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
@@ -53,7 +53,7 @@ int condense_factor(Qp_workspace *w, Status *st);
 /* frees cd and all it owns (NULL: nothing) */
 void condense_free(Condense *cd);
 
-#line 179 "paper/condense.nw"
+#line 181 "paper/condense.nw"
 /* T = S y - f */
 void condense_forces(Qp_workspace *w);
 /* the relative KKT residual of y and T */
@@ -63,7 +63,7 @@ int condense_predict(Qp_workspace *w);
 /* y from x, T = S y - f, and the states they call for (no step behind) */
 void condense_states_at_x(Qp_workspace *w);
 
-#line 194 "paper/condense.nw"
+#line 196 "paper/condense.nw"
 /* x from y by back substitution; g, kkt and T recomputed at x */
 int condense_expand(Qp_workspace *w, Status *st);
 /* x_u refined by one step with the factor; g, kkt, T recomputed */
@@ -71,10 +71,15 @@ int condense_refine(Qp_workspace *w, Status *st);
 /* the states that (y, T) call for, then x, refined once if kkt > tol */
 int condense_end(Qp_workspace *w, Status *st);
 
-#line 205 "paper/condense.nw"
+#line 207 "paper/condense.nw"
 /* what qp_schur hands over: S of the last condensation (with friction,
    sticking held and sliding eliminated), or of one made apart */
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
-#line 110 "paper/condense.nw"
+
+#line 847 "paper/condense.nw"
+/* w's problem without friction condensed onto its bounded unknowns at
+   the values of the last qp_set; who names the caller in a message */
+Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);
+#line 112 "paper/condense.nw"
 #endif

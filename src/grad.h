@@ -3,6 +3,7 @@
 #define CONTACTOPT_GRAD_H
 #include "status.h"
 #include "model.h"
+#include "objective.h"
 
 /* 1 if E has a gradient: not under Coulomb friction, whose state
    minimises no energy */
@@ -11,7 +12,7 @@ int grad_available(const Problem *p);
    model solved last.  It is a checked error to call it before a solve,
    or with Coulomb friction. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 74 "paper/grad.nw"
+#line 75 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */
@@ -23,6 +24,11 @@ typedef struct {
                      at a node not checked) */
   int worst;      /* the node checked of the largest err, the first of equals */
   double *X;      /* N+1: scratch, the perturbed design */
+  const Objective *objective; /* NULL (as made) or energy: E and (4.8);
+                     another: its J and its gradient by the adjoint */
+  char *crossed;  /* N+1: 1 where a difference met other held sets than
+                     the design's (another objective only), else 0 */
+  char *held;     /* the held sets at X while checking (scratch) */
 } Grad_check;
 
 /* called once per node i, when fd[i] and err[i] are known */
@@ -37,5 +43,5 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
 /* the state solves that grad_check(md, X, gc, ...) takes, md's problem's */
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X);
-#line 47 "paper/grad.nw"
+#line 48 "paper/grad.nw"
 #endif

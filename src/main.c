@@ -98,7 +98,8 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
   r.run = (Output_run) { r.s.path, qp_method_name(r.s.solver.method),
                          opt_method_name(r.s.optimizer.method),
-                         opt_metric_name(r.s.optimizer.metric) };
+                         opt_metric_name(r.s.optimizer.metric),
+                         &r.s.optimizer.objective };
   if (!a->outdir) output_default_dir(a->scene, c->suffix, r.dir, sizeof r.dir);
   double extra = c->optimizes ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
   if (!(rc = a->outdir ? output_dir_name(a->outdir, r.dir, sizeof r.dir, st) : 0)
@@ -115,7 +116,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 387 "paper/main.nw"
+#line 388 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -126,7 +127,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 406 "paper/main.nw"
+#line 407 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -161,7 +162,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 443 "paper/main.nw"
+#line 444 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -176,7 +177,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 475 "paper/main.nw"
+#line 476 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -199,7 +200,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 501 "paper/main.nw"
+#line 502 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -218,13 +219,28 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 529 "paper/main.nw"
+#line 530 "paper/main.nw"
 /* the refusal of a command that needs the gradient of an energy */
 static int no_gradient(const Run *r, const char *command, Status *st)
 {
   return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: %s needs "
                     "the gradient of an energy, and a Coulomb state minimises "
                     "none (contact.model = tresca has one)", r->s.path, command);
+}
+
+/* the nodes whose differences met other held sets than the design's:
+   there the gradient is one-sided, that of the design's sets */
+static void gradcheck_crossed(const Grad_check *gc)
+{
+  int n = 0;
+  for (int k = 0; k < gc->ncheck; k++) n += gc->crossed[gc->check[k]];
+  if (!n) return;
+  printf("gradcheck: at %d node%s (", n, n == 1 ? "" : "s");
+  for (int k = 0, m = 0; k < gc->ncheck; k++)
+    if (gc->crossed[gc->check[k]]) printf("%s%d", m++ ? " " : "", gc->check[k]);
+  printf(") the differences crossed a change of the contact set: the %s is "
+         "one-sided there, its gradient that of the design's set\n",
+         objective_name(gc->objective->kind));
 }
 
 static int command_gradcheck(Run *r, Status *st)
@@ -235,12 +251,14 @@ static int command_gradcheck(Run *r, Status *st)
   Gradcheck_progress g = { 0, 0, 0 };
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
               : (int) st->code;
+  if (gc) gc->objective = &r->s.optimizer.objective;
   if (!rc && !(rc = gradcheck_estimate(r, gc, st))) {
     g.start = g.last = resources_clock();
     rc = grad_check(r->md, r->s.alpha0, gc, gradcheck_progress, &g, st);
   }
   if (!rc && !(rc = begin(r, &o, st)))
     rc = finish(r, &o, output_gradcheck(&o, &r->run, r->md, gc, st), st);
+  if (!rc) gradcheck_crossed(gc);
   if (!rc)
     printf("%s: largest relative error of the gradient %.3e (node %d; %d "
            "nodes checked) -> %s/\n", r->s.path, gc->err[gc->worst], gc->worst,
@@ -248,7 +266,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 706 "paper/main.nw"
+#line 724 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -258,7 +276,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 722 "paper/main.nw"
+#line 740 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -271,7 +289,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 743 "paper/main.nw"
+#line 761 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -282,17 +300,24 @@ static int command_optimize(Run *r, Status *st)
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
+  const Objective *J = &r->s.optimizer.objective;
   if (!grad_available(&r->s.problem)) rc = no_gradient(r, "optimize", st);
+  else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
+    rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
+                    "the energy only; objective.kind = %s needs slsqp or "
+                    "projgrad", r->s.path, objective_name(J->kind));
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = begin(r, &o, st))) {
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
-        && !(rc = output_start(&o, r->md, X, moved, &start, st))
+        && !(rc = output_start(&o, r->md, X, moved,
+                                              r->s.optimizer.objective.q, &start, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
-        && !(rc = grad_energy(r->md, G, st))
+        && !(rc = J->kind == OBJECTIVE_ENERGY ? grad_energy(r->md, G, st)
+                                              : objective_gradient(r->md, J, G, st))
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
@@ -319,7 +344,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 800 "paper/main.nw"
+#line 825 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -338,7 +363,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 830 "paper/main.nw"
+#line 855 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -354,7 +379,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 858 "paper/main.nw"
+#line 883 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

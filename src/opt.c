@@ -1,11 +1,11 @@
-#line 319 "paper/opt.nw"
+#line 322 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 332 "paper/opt.nw"
+#line 335 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -13,7 +13,7 @@ Opt_options opt_options_default(Opt_method method)
 {
   return (Opt_options) { method, method == OPT_PROJGRAD ? OPT_METRIC_EUCLIDEAN
                                                        : OPT_METRIC_SCHUR,
-                         1e-6, 200 };
+                         1e-6, 200, objective_default() };
 }
 
 const char *opt_method_name(Opt_method m)
@@ -25,7 +25,11 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 387 "paper/opt.nw"
+#line 390 "paper/opt.nw"
+/* the rounding of another objective than E: relative to |J| + 1 (the
+   pressure spread is a difference from 1) */
+#define OPT_J_ROUNDING (64 * DBL_EPSILON)
+
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -33,17 +37,22 @@ int opt_evaluate(Evaluator *ev, const double *X)
   double start = resources_clock();
   int rc = model_solve(ev->md, X, ev->st);
   ev->solves++;
-  if (!rc) rc = grad_energy(ev->md, ev->G, ev->st);
+  const Objective *o = &ev->o->objective;
+  double J = 0;
+  if (!rc) rc = o->kind == OBJECTIVE_ENERGY ? grad_energy(ev->md, ev->G, ev->st)
+    : objective_value(ev->md, o, &J, ev->st) || objective_gradient(ev->md, o, ev->G, ev->st)
+    ? (int) ev->st->code : STATUS_OK;
   if (ev->rep)
     ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
-  ev->E = ev->md->energy;
-  ev->noise = model_energy_rounding(ev->md);
+  ev->E = o->kind == OBJECTIVE_ENERGY ? ev->md->energy : J;
+  ev->noise = o->kind == OBJECTIVE_ENERGY ? model_energy_rounding(ev->md)
+                                          : OPT_J_ROUNDING * (fabs(J) + 1);
   ev->have = 1;
   return STATUS_OK;
 }
-#line 439 "paper/opt.nw"
+#line 451 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -52,7 +61,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 450 "paper/opt.nw"
+#line 462 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -63,7 +72,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->rep->monitor_seconds += resources_clock() - start;
   return stop;
 }
-#line 481 "paper/opt.nw"
+#line 493 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -84,7 +93,7 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1347 "paper/opt.nw"
+#line 1359 "paper/opt.nw"
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
@@ -98,11 +107,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1372 "paper/opt.nw"
+#line 1384 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1360 "paper/opt.nw"
+#line 1372 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
   }
@@ -111,7 +120,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1388 "paper/opt.nw"
+#line 1400 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;

@@ -4,8 +4,9 @@
 #include "status.h"
 #include "model.h"
 #include "design.h"
+#include "objective.h"
 
-#line 166 "paper/opt.nw"
+#line 167 "paper/opt.nw"
 typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
 extern const char *const opt_method_names[]; /* slsqp, projgrad, newton */
@@ -17,9 +18,11 @@ typedef struct {
   Opt_metric metric;      /* the metric of the design space SLSQP starts in */
   double tol;             /* projected-gradient norm pi at which it stops */
   int max_iter;           /* iteration limit */
+  Objective objective;    /* what it minimises ([objective]); newton: the
+                             energy only */
 } Opt_options;
 
-#line 194 "paper/opt.nw"
+#line 197 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -33,7 +36,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 210 "paper/opt.nw"
+#line 213 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -49,7 +52,7 @@ typedef struct {
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
 } Opt_report;
 
-#line 227 "paper/opt.nw"
+#line 230 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -63,5 +66,5 @@ double opt_memory(const Opt_options *o, int N);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);
-#line 161 "paper/opt.nw"
+#line 162 "paper/opt.nw"
 #endif

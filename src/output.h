@@ -7,6 +7,7 @@
 #include "model.h"
 #include "grad.h"
 #include "opt.h"
+#include "objective.h"
 
 #define OUTPUT_MAX_FILES 64
 #define OUTPUT_PATH 1024              /* room for a path the program writes */
@@ -48,12 +49,13 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 180 "paper/output.nw"
+#line 181 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
   const char *optimizer;    /* the name of the optimiser */
   const char *metric;       /* the name of its metric */
+  const Objective *objective; /* what the optimiser minimises */
 } Output_run;
 
 /* solve: the state files at X and summary.dat */
@@ -64,7 +66,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 203 "paper/output.nw"
+#line 205 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -92,19 +94,20 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 235 "paper/output.nw"
+#line 237 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
   double moved;             /* ||start - alpha0||_2, 0: alpha0 was in B */
+  double J[OBJECTIVE_COUNT]; /* every objective there (NaN: undefined) */
 } Output_start;
 
 /* initial/: the state files at the start X, solved by the model; start
-   receives what the summary will say of it */
+   receives what the summary will say of it, the pressure peak at q */
 int output_start(Output *o, const Model *md, const double *X, double moved,
-                 Output_start *start, Status *st);
+                 double q, Output_start *start, Status *st);
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 173 "paper/output.nw"
+#line 174 "paper/output.nw"
 #endif

@@ -1,22 +1,35 @@
-#line 1464 "paper/output.nw"
+#line 1487 "paper/output.nw"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
 
-#line 1652 "paper/output.nw"
+#line 1677 "paper/output.nw"
+/* J = every objective at the model's state, the peak's exponent q, NaN
+   where undefined (a body that lifts off has no pressure) */
+static void output_objectives(const Model *md, double q, double *J)
+{
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
+    Objective o = { (Objective_kind) k, q };
+    Status st;
+    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
+  }
+}
+
 int output_start(Output *o, const Model *md, const double *X, double moved,
-                 Output_start *start, Status *st)
+                 double q, Output_start *start, Status *st)
 {
   int rc = output_state(o, "initial", md, X, st);
   if (rc) return rc;
   start->energy = md->energy;
   start->cv = model_pressure_cv(md);
   start->moved = moved;
+  output_objectives(md, q, start->J);
   return STATUS_OK;
 }
-#line 1543 "paper/output.nw"
+#line 1568 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -37,7 +50,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1482 "paper/output.nw"
+#line 1507 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -82,7 +95,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1607 "paper/output.nw"
+#line 1632 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -95,7 +108,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1571 "paper/output.nw"
+#line 1596 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -127,7 +140,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1630 "paper/output.nw"
+#line 1655 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -146,7 +159,21 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1668 "paper/output.nw"
+#line 1376 "paper/output.nw"
+static void output_objectives_summary(FILE *f, const Objective *ob,
+                                      const Model *md, const Output_start *start)
+{
+  double J[OBJECTIVE_COUNT];
+  output_objectives(md, ob->q, J);
+  fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
+          J[ob->kind]);
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
+    if (k != OBJECTIVE_ENERGY && !isnan(start->J[k]))  /* initial_energy: above */
+      fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J[k]);
+    if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
+  }
+}
+#line 1705 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
@@ -170,6 +197,7 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
+  output_objectives_summary(f, run->objective, md, start);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);

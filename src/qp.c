@@ -1,4 +1,4 @@
-#line 396 "paper/qp.nw"
+#line 406 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,7 +6,7 @@
 #include "qp_private.h"
 #include "condense.h"
 
-#line 586 "paper/qp.nw"
+#line 596 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -24,35 +24,35 @@ double qp_kkt_eval(const Qp *qp, double normA, const double *x,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 615 "paper/qp.nw"
+#line 625 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 603 "paper/qp.nw"
+#line 613 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 628 "paper/qp.nw"
+#line 638 "paper/qp.nw"
 qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
 if (T) T[qp->nc + k] = r;
-#line 606 "paper/qp.nw"
+#line 616 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 636 "paper/qp.nw"
+#line 646 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double gm = qp_gamma(m + 2);             /* m + 1 terms, and x rounded */
 double rho = gm * (normA * sqrt(xx) + sqrt(bb));
 return qp_kkt_combine(sqrt(rf), sqrt(tn), sqrt(inf), comp, sf, su, rho, gm);
-#line 611 "paper/qp.nw"
+#line 621 "paper/qp.nw"
 }
 
-#line 651 "paper/qp.nw"
+#line 661 "paper/qp.nw"
 /* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
 static double qp_norm_bound(const cholmod_sparse *A)
 {
@@ -67,13 +67,13 @@ static double qp_norm_bound(const cholmod_sparse *A)
   return m;
 }
 
-#line 643 "paper/qp.nw"
+#line 653 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, qp_norm_bound(qp->A), x, NULL, T);
 }
 
-#line 712 "paper/qp.nw"
+#line 722 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -88,13 +88,13 @@ void qp_refresh(Qp_workspace *w)
   w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
 }
 
-#line 781 "paper/qp.nw"
+#line 791 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
 
-#line 790 "paper/qp.nw"
+#line 800 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -110,7 +110,7 @@ static int check_options(const Qp_options *opt, Status *st)
   return STATUS_OK;
 }
 
-#line 754 "paper/qp.nw"
+#line 764 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -133,7 +133,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 892 "paper/qp.nw"
+#line 902 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -145,11 +145,11 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 776 "paper/qp.nw"
+#line 786 "paper/qp.nw"
   return check_options(opt, st);
 }
 
-#line 811 "paper/qp.nw"
+#line 821 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -180,7 +180,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 848 "paper/qp.nw"
+#line 858 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -200,7 +200,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
     "pattern of A is not symmetric (both triangles must be stored)");
 }
 
-#line 732 "paper/qp.nw"
+#line 742 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -220,7 +220,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   return w;
 }
 
-#line 870 "paper/qp.nw"
+#line 880 "paper/qp.nw"
 void qp_free(Qp_workspace *w)
 {
   if (!w) return;
@@ -233,7 +233,7 @@ void qp_free(Qp_workspace *w)
   free(w);
 }
 
-#line 914 "paper/qp.nw"
+#line 924 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -258,7 +258,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 944 "paper/qp.nw"
+#line 954 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -282,7 +282,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   return STATUS_OK;
 }
 
-#line 969 "paper/qp.nw"
+#line 979 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 static int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -291,7 +291,7 @@ static int qp_read_values(Qp_workspace *w, Status *st)
   return code;
 }
 
-#line 981 "paper/qp.nw"
+#line 991 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -306,14 +306,14 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   return STATUS_OK;
 }
 
-#line 1020 "paper/qp.nw"
+#line 1030 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
 
-#line 1002 "paper/qp.nw"
+#line 1012 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -330,7 +330,7 @@ int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
 
-#line 1083 "paper/qp.nw"
+#line 1093 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -339,7 +339,7 @@ int qp_count_active(const Qp_workspace *w)
   return m;
 }
 
-#line 1098 "paper/qp.nw"
+#line 1108 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -349,7 +349,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     qp_method_name(w->opt.method), active, w->nc, why, w->iter + 1);
 }
 
-#line 1073 "paper/qp.nw"
+#line 1083 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -358,7 +358,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
 
-#line 1042 "paper/qp.nw"
+#line 1052 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -378,7 +378,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
   return code;
 }
 
-#line 1130 "paper/qp.nw"
+#line 1140 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   return condense_schur(w, shift, S, st);

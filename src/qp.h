@@ -76,6 +76,15 @@ double qp_kkt(const Qp *qp, const double *x, double *T);
    (gsl_set_error_handler_off), as the Newton method does. */
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
 
+/* lam (n) = the adjoint of the last state solved: A_FF lam_F = g_F and
+   lam_H = 0, H the unknowns that the state holds (a bound touched,
+   friction sticking), F the others, solved with the state's own factor
+   (Section sec:condense-adjoint); held (nc + nt, may be NULL) receives 1
+   at each held unknown, in the order of ic then it.  STATUS_NUMERIC when
+   A_FF is singular. */
+int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
+               char *held, Status *st);
+
 /* y = A x, A stored with both triangles (as a Qp's); the package's one
    sparse product, which the tests use too */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y);

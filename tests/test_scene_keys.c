@@ -40,6 +40,7 @@ static struct { const char *prefix, *over[8]; } enable[] = {
   {"contact.g", {"contact.model=tresca", "contact.g=1e6"}},
   {"contact.friction", {"contact.model=coulomb", "contact.friction=0.2"}},
   {"contact.max_fixed_point", {"contact.model=coulomb", "contact.friction=0.2"}},
+  {"objective.q", {"objective.kind=pressure_peak"}},
 };
 
 /* ov = the overrides enabling name, then more (NULL-ended); their number */
@@ -157,7 +158,7 @@ int main(void)
     else if (strchr(f[2], '(')) same_defaults(f[0], f[2]);
     else same_default(f[0], f[2], NULL);
   }
-  check(n == 51, "contactopt keys prints %d keys", n);
+  check(n == 53, "contactopt keys prints %d keys", n);
   fclose(fp);
   unlink(shape + 12);
   return check_done();

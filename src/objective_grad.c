@@ -1,0 +1,168 @@
+#line 276 "paper/objective.nw"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "objective.h"
+
+#line 293 "paper/objective.nw"
+/* g = dJ/dQ + A_{:H} t, t = dT on the held contact unknowns */
+static void adjoint_rhs(const Model *md, const Objective *o, const double *AQ,
+                        const double *dT, double *g)
+{
+  const Dofs *d = md->dofs;
+  const int *Ap = md->A->p, *Ai = md->A->i;
+  const double *Ax = md->A->x;
+  for (int i = 0; i < d->n; i++)
+    g[i] = o->kind == OBJECTIVE_ENERGY ? AQ[i] - md->b[i]
+         : o->kind == OBJECTIVE_COMPLIANCE ? md->b[i] : 0;
+  if (o->kind == OBJECTIVE_ENERGY)            /* the slide's s sigma */
+    for (int k = 0; k < d->nt; k++) {
+      double u = md->Q[d->tangent[k]];
+      g[d->tangent[k]] += md->slip[k] * ((u > 0) - (u < 0));
+    }
+  for (int c = 0; c < d->nc; c++)
+    if (dT[c] != 0)
+      for (int k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
+        g[Ai[k]] += Ax[k] * dT[c];
+}
+#line 317 "paper/objective.nw"
+static void held_term(const Model *md, const char *held, const double *g,
+                      const double *lam, double *G)
+{
+  const Dofs *d = md->dofs;
+  const int *Ap = md->A->p, *Ai = md->A->i;
+  const double *Ax = md->A->x;
+  for (int c = 0; c < d->nc; c++) {
+    if (!held[c]) continue;
+    int j = d->contact[c];
+    double Al = 0;
+    for (int k = Ap[j]; k < Ap[j + 1]; k++) Al += Ax[k] * lam[Ai[k]];
+    G[d->contact_col[c]] -= g[j] - Al;
+  }
+}
+#line 336 "paper/objective.nw"
+/* d (u'K_e q) / d y_m: eu, eq the strains (times d) of u and q, Du, Dq
+   D times them, d = 2|T| */
+static double bilinear_height(const double gy[3], const double u[6],
+                              const double q[6], const double eu[3],
+                              const double Du[3], const double Dq[3],
+                              double d, int m)
+{
+  int up = (m + 2) % 3, down = (m + 1) % 3;
+  double du0 = u[2 * up] - u[2 * down], du2 = u[2 * up + 1] - u[2 * down + 1];
+  double dq0 = q[2 * up] - q[2 * down], dq2 = q[2 * up + 1] - q[2 * down + 1];
+  double uDq = eu[0] * Dq[0] + eu[1] * Dq[1] + eu[2] * Dq[2];
+  return (du0 * Dq[0] + du2 * Dq[2] + dq0 * Du[0] + dq2 * Du[2]) / (2 * d)
+       - uDq * gy[m] / (2 * d * d);
+}
+#line 355 "paper/objective.nw"
+/* the strain (times d) of q on the triangle, and D times it */
+static void strain_of(const Model *md, const double gx[3], const double gy[3],
+                      const double q[6], double e[3], double De[3])
+{
+  long double el[3];
+  fem_element_strain(gx, gy, q, el);
+  for (int r = 0; r < 3; r++) e[r] = (double) el[r];
+  for (int r = 0; r < 3; r++)
+    De[r] = md->hooke.D[r][0] * e[0] + md->hooke.D[r][1] * e[1]
+          + md->hooke.D[r][2] * e[2];
+}
+
+static void triangle_terms(const Model *md, int t, const double *u,
+                           const double *v, double *G)
+{
+  const Mesh *m = md->mesh;
+  const double *F = md->problem->F;
+  double xy[6], q[6], ue[6], ve[6], gx[3], gy[3], eq[3], Dq[3], eu[3], Du[3];
+  fem_element_xy(m, t, xy);
+  fem_element_q(m, md->dofs, md->Q, t, q);
+  fem_element_q(m, md->dofs, u, t, ue);
+  fem_element_q(m, md->dofs, v, t, ve);
+  fem_element_gradients(xy, gx, gy);
+  double d = xy[0] * gx[0] + xy[2] * gx[1] + xy[4] * gx[2];
+  strain_of(md, gx, gy, q, eq, Dq);
+  strain_of(md, gx, gy, ue, eu, Du);
+  for (int k = 0; k < 3; k++) {
+    int node = m->tri[3 * t + k];
+    double rate = mesh_motion(m, node);
+    if (rate == 0) continue;
+    double dy = bilinear_height(gy, ue, q, eu, Du, Dq, d, k);
+    if (md->problem->has_body_force)
+      for (int r = 0; r < 3; r++)
+        dy -= (F[0] * ve[2 * r] + F[1] * ve[2 * r + 1]) * gy[k] / 6;
+    G[node % m->ncol] += rate * dy;
+  }
+}
+#line 398 "paper/objective.nw"
+/* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
+static void tributary_term(const Mesh *m, int nc, const int *col,
+                           const double *dw, double *G)
+{
+  for (int c = 0; c < nc; c++)
+    for (int k = col[c] - 1; k <= col[c]; k++)
+      if (k >= 0 && k < m->N) {
+        double dx = m->xy[2 * (k + 1)] - m->xy[2 * k];
+        double dy = m->xy[2 * (k + 1) + 1] - m->xy[2 * k + 1];
+        double r = 0.5 * dw[c] * dy / hypot(dx, dy);
+        G[k + 1] += r, G[k] -= r;
+      }
+}
+#line 418 "paper/objective.nw"
+static int sliding_term(const Model *md, const char *held, const double *lam,
+                        double *G, Status *st)
+{
+  const Dofs *d = md->dofs;
+  double *dw = malloc(((size_t) d->nt + 1) * sizeof *dw);
+  if (!dw) return status_set(st, STATUS_MEMORY, "objective: out of memory");
+  for (int k = 0; k < d->nt; k++) {
+    double Tk = md->T[d->nc + k], sigma = Tk < 0 ? 1 : Tk > 0 ? -1 : 0;
+    dw[k] = held[d->nc + k] ? 0
+          : -lam[d->tangent[k]] * sigma * md->problem->slip_bound;
+  }
+  tributary_term(md->mesh, d->nt, d->tangent_col, dw, G);
+  free(dw);
+  return STATUS_OK;
+}
+#line 437 "paper/objective.nw"
+static int gradient_terms(Model *md, const Objective *o, double *v, char *held,
+                          double *G, Status *st)
+{
+  const Dofs *d = md->dofs;
+  int n = d->n, nc = d->nc, rc;
+  double *AQ = v, *g = AQ + n, *lam = g + n, *u = lam + n, *vb = u + n;
+  double *dT = vb + n, *dw = dT + nc + 1, J;
+  if ((rc = objective_partials(md, o, &J, dT, dw, st))) return rc;
+  qp_matvec(md->A, md->Q, AQ);
+  adjoint_rhs(md, o, AQ, dT, g);
+  if ((rc = qp_adjoint(md->solver, g, lam, held, st))) return rc;
+  double a = o->kind == OBJECTIVE_ENERGY, s = o->kind == OBJECTIVE_ENERGY ? 1
+           : o->kind == OBJECTIVE_COMPLIANCE ? -1 : 0;
+  for (int i = 0; i < n; i++) u[i] = -lam[i], vb[i] = -lam[i] + s * md->Q[i];
+  for (int c = 0; c < nc; c++)
+    if (held[c]) u[d->contact[c]] += dT[c], vb[d->contact[c]] += dT[c];
+  for (int i = 0; i < n; i++) u[i] += 0.5 * a * md->Q[i];
+  memset(G, 0, md->mesh->ncol * sizeof *G);
+  held_term(md, held, g, lam, G);
+  for (int t = 0; t < 2 * md->mesh->N * md->mesh->M; t++) triangle_terms(md, t, u, vb, G);
+  tributary_term(md->mesh, nc, d->contact_col, dw, G);
+  if (d->nt && (rc = sliding_term(md, held, lam, G, st))) return rc;
+  if (a && md->problem->contact == CONTACT_TRESCA)
+    friction_gradient(md->problem, md->mesh, md->dofs, md->Q, G);
+  return STATUS_OK;
+}
+
+int objective_gradient(Model *md, const Objective *o, double *G, Status *st)
+{
+  if (!md->solved)
+    return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
+  if (md->problem->contact == CONTACT_COULOMB)
+    return status_set(st, STATUS_INPUT, "gradient: contact.model = coulomb: "
+                      "a Coulomb state has no adjoint here");
+  size_t n = md->dofs->n, nk = md->dofs->nc + md->dofs->nt;
+  double *v = malloc((5 * n + 2 * nk + 2) * sizeof *v);
+  char *held = malloc(nk + 1);
+  int rc = v && held ? gradient_terms(md, o, v, held, G, st)
+                     : status_set(st, STATUS_MEMORY, "objective: out of memory");
+  free(v), free(held);
+  return rc;
+}

@@ -1,0 +1,51 @@
+# objective.sh: the objectives other than the energy (paper/objective.nw).
+# Their gradients by the adjoint agree with finite differences at the
+# initial designs of the shipped scenes (with friction too) and on N = 32
+# in plane strain; SLSQP minimises each to a KKT point; every bad input
+# is refused in one line with exit 2.
+. tests/lib.sh
+for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene \
+             data/example-5.1-tresca.scene; do
+  for kind in compliance pressure_spread pressure_peak; do
+    if $BIN gradcheck $scene -o $TMP/g -s objective.kind=$kind >$TMP/out 2>$TMP/err; then
+      e=$(value max_relative_error $TMP/g)
+      check "gradcheck $(basename $scene) $kind: largest relative error $e < 1e-6" lt "$e" 1e-6
+    else
+      fail "gradcheck $scene $kind: $(cat $TMP/err)"
+    fi
+  done
+done
+for kind in compliance pressure_spread pressure_peak; do
+  if $BIN gradcheck data/example-5.1.scene -o $TMP/g -s objective.kind=$kind \
+       -s mesh.refine=2 -s material.model=plane_strain >/dev/null 2>$TMP/err; then
+    e=$(value max_relative_error $TMP/g)
+    check "gradcheck example-5.1 plane_strain N=32 $kind: largest relative error $e < 1e-6" lt "$e" 1e-6
+  else
+    fail "gradcheck N=32 $kind: $(cat $TMP/err)"
+  fi
+done
+# the sets crossed: gradcheck names the nodes where its differences did
+$BIN gradcheck data/example-5.1.scene -o $TMP/g -s objective.kind=compliance >$TMP/out 2>&1
+check "gradcheck names the nodes whose differences crossed a change of the contact set" \
+  grep -q "crossed a change of the contact set" $TMP/out
+# SLSQP takes any objective and ends at a KKT point of the shape problem
+if $BIN optimize data/example-5.1.scene -o $TMP/c -s objective.kind=compliance \
+     -s optimizer.method=slsqp >/dev/null 2>$TMP/err; then
+  check "slsqp compliance: converged" holds 'r == 1' r=$(grep -c '^stop_reason converged' $TMP/c/summary.dat)
+  J0=$(value initial_compliance $TMP/c) J=$(value final_compliance $TMP/c)
+  check "slsqp compliance: objective_value is final_compliance, lowered $J0 -> $J" \
+    holds 'J < J0 && v == J' J0="$J0" J="$J" v="$(value objective_value $TMP/c)"
+  kkt_point "slsqp compliance" $TMP/c 0.05 0.00625 0.25
+else
+  fail "optimize compliance: $(cat $TMP/err)"
+fi
+# every bad input: one line, exit 2
+bad() { desc=$1; shift
+  $BIN "$@" -o $TMP/bad >/dev/null 2>$TMP/err; rc=$?
+  check "$desc: exit $rc = 2, one line ($(cat $TMP/err))" \
+    holds 'rc == 2 && lines == 1' rc=$rc lines=$(wc -l <$TMP/err); }
+bad "an unknown objective.kind" gradcheck data/example-5.1.scene -s objective.kind=stress
+bad "objective.q < 1" gradcheck data/example-5.1.scene -s objective.kind=pressure_peak -s objective.q=0.5
+bad "objective.q with kind compliance" gradcheck data/example-5.1.scene -s objective.kind=compliance -s objective.q=4
+bad "newton with another objective" optimize data/example-5.1.scene -s objective.kind=pressure_spread
+finish
