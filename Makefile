@@ -332,7 +332,7 @@ build/paper/contactopt.tex: paper/contactopt.nw | deps
 build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
-                      paper/performance.tex paper/bench-performance.tex paper/bench-optimize.tex \
+                      paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \

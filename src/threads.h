@@ -6,7 +6,7 @@
 
 /* flops a BLAS call must bring per thread before it gets one more
    thread: about 0.5 ms of a core's work, twice what engaging a
-   sleeping worker was measured to cost (see below) */
+   sleeping worker was measured to cost (Performance) */
 #define THREADS_WORK 16777216.0
 
 /* choose the threads of the BLAS and of CHOLMOD's OpenMP regions for a

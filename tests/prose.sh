@@ -1,7 +1,7 @@
 # prose.sh: the paper and the README describe the program as it is; what
 # changed, and when, belongs in git.  A documentation line of a
 # paper/*.nw (outside its code chunks: from a line "@" or "@ text" to the
-# next "<<name>>="), of paper/performance.tex or of README.md must not
+# next "<<name>>=") or of README.md must not
 # narrate history: no
 # issue numbers, no "used to", "no longer", "until November", "was the
 # default", "before this module", "this version", "last round" and the
@@ -17,12 +17,10 @@ prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
   !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
 
 
-# the hand-written LaTeX of the paper (paper/performance.tex), not the
-# tables the bench scripts write (paper/bench-*.tex)
-for f in paper/*.nw paper/performance.tex README.md; do
+# not the tables the bench scripts write (paper/bench-*.tex)
+for f in paper/*.nw README.md; do
   case $f in
     *.nw) prose "$f" ;;
-    *.tex) grep -v '^%' "$f" | awk -v F="$f" '{ print F ":" FNR ":" $0 }' ;;
     *) awk '{ print FILENAME ":" FNR ":" $0 }' "$f" ;;
   esac
 done > $TMP/prose.lines
