@@ -1,4 +1,4 @@
-#line 263 "paper/condense.nw"
+#line 239 "paper/condense.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,35 +6,16 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-
-#line 394 "paper/condense.nw"
+#line 370 "paper/condense.nw"
 #define SINGULAR (-1)    /* K is singular (not a Status_code) */
-#line 379 "paper/condense.nw"
-/* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
-static int cholmod_failed(const cholmod_common *cm, const char *what,
-                          Status *st)
-{
-  if (cm->status == CHOLMOD_OUT_OF_MEMORY)
-    return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
-  if (cm->status == CHOLMOD_TOO_LARGE)
-    return status_set(st, STATUS_MEMORY, "%s: the problem is too large for "
-                      "CHOLMOD's 32-bit integers", what);
-  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
-}
-
-#line 541 "paper/condense.nw"
-/* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
-static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
-                      Status *st)
-{
-  cholmod_common *cm = cd->cm;
-  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
-      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
-    return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
-  return STATUS_OK;
-}
-
-#line 282 "paper/condense.nw"
+#line 230 "paper/condense.nw"
+static int cholmod_failed(const cholmod_common *cm, const char *what, Status *st);
+static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v, Status *st);
+static void fill_contact_matrix(Condense *cd, const double *d);
+static void read_trailing_block(Condense *cd);
+static void schur_complement(Condense *cd, const double *d);
+static int condensed_load(Condense *cd, const double *b, Status *st);
+#line 258 "paper/condense.nw"
 /* the arrays, K's values copied from A, and at; nonzero when out of memory */
 static int alloc_arrays(Condense *cd, Status *st)
 {
@@ -58,8 +39,7 @@ static int alloc_arrays(Condense *cd, Status *st)
   cd->first = cd->n - cd->nk;
   return STATUS_OK;
 }
-
-#line 312 "paper/condense.nw"
+#line 288 "paper/condense.nw"
 static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
@@ -80,7 +60,7 @@ static int analyse_contact_last(Condense *cd, Status *st)
   free(last), free(perm);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 336 "paper/condense.nw"
+#line 312 "paper/condense.nw"
 if (!(cd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
@@ -91,10 +71,9 @@ for (int t = 0; t < cd->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 332 "paper/condense.nw"
+#line 308 "paper/condense.nw"
 }
-
-#line 349 "paper/condense.nw"
+#line 325 "paper/condense.nw"
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
                          cholmod_common *cm, Status *st)
 {
@@ -119,85 +98,19 @@ void condense_free(Condense *cd)
   cholmod_free_dense(&cd->solve_Y, cd->cm), cholmod_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
-
-#line 449 "paper/condense.nw"
-/* K = A + diag(A_ii) on the condensed unknowns; the values only */
-static void fill_contact_matrix(Condense *cd, const double *d)
+#line 355 "paper/condense.nw"
+/* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
+static int cholmod_failed(const cholmod_common *cm, const char *what,
+                          Status *st)
 {
-  const int *Ap = cd->A->p, *Ai = cd->A->i;
-  double *Kx = cd->K.x;
-  memcpy(Kx, cd->A->x, (size_t) Ap[cd->n] * sizeof *Kx);
-  for (int c = 0; c < cd->nk; c++) {
-    int j = cd->ik[c];
-    for (int k = Ap[j]; k < Ap[j + 1]; k++)
-      if (Ai[k] == j) Kx[k] += d[j];
-  }
+  if (cm->status == CHOLMOD_OUT_OF_MEMORY)
+    return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
+  if (cm->status == CHOLMOD_TOO_LARGE)
+    return status_set(st, STATUS_MEMORY, "%s: the problem is too large for "
+                      "CHOLMOD's 32-bit integers", what);
+  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
 }
-
-#line 469 "paper/condense.nw"
-/* Lcc = the rows and columns first..n-1 of L, row-major, lower */
-static void read_trailing_block(Condense *cd)
-{
-  const cholmod_factor *L = cd->L;
-  const double *Lx = L->x;
-  int nc = cd->nk, first = cd->first;
-  memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
-  if (L->is_super) {
-    
-#line 488 "paper/condense.nw"
-const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
-for (size_t s = 0; s < L->nsuper; s++) {
-  int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
-  for (int k = k1 > first ? k1 : first; k < k2; k++)
-    for (int q = k - k1; q < nrow; q++)
-      cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
-        Lx[px[s] + q + (size_t) (k - k1) * nrow];
-}
-#line 478 "paper/condense.nw"
-  } else {
-    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
-    for (int k = first; k < cd->n; k++)
-      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
-        cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
-  }
-}
-
-#line 501 "paper/condense.nw"
-static void schur_complement(Condense *cd, const double *d)
-{
-  int nc = cd->nk;
-  if (nc == 0) return;
-  gsl_matrix_view L = gsl_matrix_view_array(cd->Lcc, nc, nc),
-                  LLt = gsl_matrix_view_array(cd->M, nc, nc);
-  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, &L.matrix, 0.0, &LLt.matrix);
-  for (int t = 0; t < nc; t++)
-    for (int u = 0; u <= t; u++) {
-      int a = cd->tc[t], b = cd->tc[u];
-      double v = cd->M[(size_t) t * nc + u] - (t == u ? d[cd->ik[a]] : 0);
-      cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
-    }
-}
-
-#line 520 "paper/condense.nw"
-static int condensed_load(Condense *cd, const double *b, Status *st)
-{
-  memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
-  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
-  cholmod_dense *swap = cd->Lb;
-  cd->Lb = cd->rhs, cd->rhs = swap;      /* keep z, reuse the old vector */
-  const double *z = cd->Lb->x;
-  cd->bu2 = 0;
-  for (int i = 0; i < cd->n; i++)
-    if (cd->at[i] < 0) cd->bu2 += b[i] * b[i];
-  for (int t = 0; t < cd->nk; t++) {
-    double s = 0;
-    for (int u = 0; u <= t; u++) s += cd->Lcc[(size_t) t * cd->nk + u] * z[cd->first + u];
-    cd->f[cd->tc[t]] = s;
-  }
-  return STATUS_OK;
-}
-
-#line 415 "paper/condense.nw"
+#line 391 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
    d the diagonal of A; SINGULAR when K is */
 static int condense(Condense *cd, const double *b, const double *d, Status *st)
@@ -229,8 +142,91 @@ int condense_factor(Qp_workspace *w, Status *st)
   return code != SINGULAR ? code : qp_not_held(w, st,
     "A is singular even with every bound held", w->nc);
 }
-
-#line 570 "paper/condense.nw"
+#line 425 "paper/condense.nw"
+/* K = A + diag(A_ii) on the condensed unknowns; the values only */
+static void fill_contact_matrix(Condense *cd, const double *d)
+{
+  const int *Ap = cd->A->p, *Ai = cd->A->i;
+  double *Kx = cd->K.x;
+  memcpy(Kx, cd->A->x, (size_t) Ap[cd->n] * sizeof *Kx);
+  for (int c = 0; c < cd->nk; c++) {
+    int j = cd->ik[c];
+    for (int k = Ap[j]; k < Ap[j + 1]; k++)
+      if (Ai[k] == j) Kx[k] += d[j];
+  }
+}
+#line 445 "paper/condense.nw"
+/* Lcc = the rows and columns first..n-1 of L, row-major, lower */
+static void read_trailing_block(Condense *cd)
+{
+  const cholmod_factor *L = cd->L;
+  const double *Lx = L->x;
+  int nc = cd->nk, first = cd->first;
+  memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
+  if (L->is_super) {
+    
+#line 464 "paper/condense.nw"
+const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
+for (size_t s = 0; s < L->nsuper; s++) {
+  int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
+  for (int k = k1 > first ? k1 : first; k < k2; k++)
+    for (int q = k - k1; q < nrow; q++)
+      cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
+        Lx[px[s] + q + (size_t) (k - k1) * nrow];
+}
+#line 454 "paper/condense.nw"
+  } else {
+    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    for (int k = first; k < cd->n; k++)
+      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
+        cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
+  }
+}
+#line 477 "paper/condense.nw"
+static void schur_complement(Condense *cd, const double *d)
+{
+  int nc = cd->nk;
+  if (nc == 0) return;
+  gsl_matrix_view L = gsl_matrix_view_array(cd->Lcc, nc, nc),
+                  LLt = gsl_matrix_view_array(cd->M, nc, nc);
+  gsl_blas_dsyrk(CblasLower, CblasNoTrans, 1.0, &L.matrix, 0.0, &LLt.matrix);
+  for (int t = 0; t < nc; t++)
+    for (int u = 0; u <= t; u++) {
+      int a = cd->tc[t], b = cd->tc[u];
+      double v = cd->M[(size_t) t * nc + u] - (t == u ? d[cd->ik[a]] : 0);
+      cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
+    }
+}
+#line 496 "paper/condense.nw"
+static int condensed_load(Condense *cd, const double *b, Status *st)
+{
+  memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
+  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
+  cholmod_dense *swap = cd->Lb;
+  cd->Lb = cd->rhs, cd->rhs = swap;      /* keep z, reuse the old vector */
+  const double *z = cd->Lb->x;
+  cd->bu2 = 0;
+  for (int i = 0; i < cd->n; i++)
+    if (cd->at[i] < 0) cd->bu2 += b[i] * b[i];
+  for (int t = 0; t < cd->nk; t++) {
+    double s = 0;
+    for (int u = 0; u <= t; u++) s += cd->Lcc[(size_t) t * cd->nk + u] * z[cd->first + u];
+    cd->f[cd->tc[t]] = s;
+  }
+  return STATUS_OK;
+}
+#line 517 "paper/condense.nw"
+/* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
+static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
+                      Status *st)
+{
+  cholmod_common *cm = cd->cm;
+  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
+      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
+    return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
+  return STATUS_OK;
+}
+#line 546 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -241,14 +237,13 @@ void condense_forces(Qp_workspace *w)
     w->T[c] = s;
   }
 }
-
-#line 584 "paper/condense.nw"
+#line 560 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 596 "paper/condense.nw"
+#line 572 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -262,13 +257,12 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 589 "paper/condense.nw"
+#line 565 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
-
-#line 616 "paper/condense.nw"
+#line 592 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -310,8 +304,7 @@ void condense_states_at_x(Qp_workspace *w)
   condense_predict(w);
   cd->stepped = 1;
 }
-
-#line 678 "paper/condense.nw"
+#line 654 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -329,8 +322,7 @@ int condense_expand(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-
-#line 703 "paper/condense.nw"
+#line 679 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -345,8 +337,7 @@ int condense_refine(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-
-#line 728 "paper/condense.nw"
+#line 704 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -358,8 +349,7 @@ int condense_end(Qp_workspace *w, Status *st)
   if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
   return code;
 }
-
-#line 750 "paper/condense.nw"
+#line 726 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -368,7 +358,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 770 "paper/condense.nw"
+#line 746 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -382,7 +372,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 790 "paper/condense.nw"
+#line 766 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -405,11 +395,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 783 "paper/condense.nw"
+#line 759 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 819 "paper/condense.nw"
+#line 795 "paper/condense.nw"
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
 {
   Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
@@ -433,7 +423,7 @@ static int schur_apart(const Qp_workspace *w, double shift, double *S,
   condense_free(cd);
   return STATUS_OK;
 }
-#line 856 "paper/condense.nw"
+#line 832 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

@@ -1,70 +1,11 @@
-#line 149 "paper/model.nw"
+#line 142 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "resources.h"
 #include "model.h"
-
-#line 160 "paper/model.nw"
-Model *model_new(const Problem *p, const Qp_options *solver,
-                 cholmod_common *cm, Status *st)
-{
-  Model *md = calloc(1, sizeof *md);
-  if (!md) { status_set(st, STATUS_MEMORY, "model: out of memory"); return NULL; }
-  md->problem = p;
-  md->cm = cm;
-  md->hooke = fem_hooke(p);
-  if (!(md->mesh = mesh_new(p, st)) || !(md->dofs = fem_dofs_new(md->mesh, p, st))
-      || !(md->A = fem_stiffness_new(md->mesh, md->dofs, cm, st))) {
-    model_free(md);
-    return NULL;
-  }
-  
-#line 180 "paper/model.nw"
-int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
-md->b = malloc(n * sizeof *md->b);
-md->Q = calloc(n, sizeof *md->Q);
-md->lo = malloc((nc ? nc : 1) * sizeof *md->lo);
-md->T = calloc(nc + nt + 1, sizeof *md->T);
-md->slip = calloc(nt + 1, sizeof *md->slip);
-md->fixed_point_tol = solver->tol;
-if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
-  model_free(md);
-  status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
-  return NULL;
-}
-#line 174 "paper/model.nw"
-  
-#line 195 "paper/model.nw"
-md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
-                nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
-if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
-  model_free(md);
-  return NULL;
-}
-#line 175 "paper/model.nw"
-  return md;
-}
-
-#line 239 "paper/model.nw"
-static int model_state(Model *md, Status *st)
-{
-  int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
-                    &md->report, st);
-  md->solved = rc == STATUS_OK;
-  return rc;
-}
-#line 315 "paper/model.nw"
-static double model_change(const double *old, const double *T, int nc)
-{
-  double diff = 0, size = 0;
-  for (int c = 0; c < nc; c++)
-    diff = fmax(diff, fabs(T[c] - old[c])),
-    size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
-  return diff == 0 ? 0 : diff / size;
-}
-#line 293 "paper/model.nw"
+#line 286 "paper/model.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
@@ -83,7 +24,81 @@ static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
     md->fixed_point_iterations, md->fixed_point_residual,
     md->fixed_point_tol, md->problem->friction);
 }
-#line 260 "paper/model.nw"
+#line 136 "paper/model.nw"
+static int model_state(Model *md, Status *st);
+static double model_change(const double *old, const double *T, int nc);
+static int model_coulomb(Model *md, Status *st);
+#line 153 "paper/model.nw"
+Model *model_new(const Problem *p, const Qp_options *solver,
+                 cholmod_common *cm, Status *st)
+{
+  Model *md = calloc(1, sizeof *md);
+  if (!md) { status_set(st, STATUS_MEMORY, "model: out of memory"); return NULL; }
+  md->problem = p;
+  md->cm = cm;
+  md->hooke = fem_hooke(p);
+  if (!(md->mesh = mesh_new(p, st)) || !(md->dofs = fem_dofs_new(md->mesh, p, st))
+      || !(md->A = fem_stiffness_new(md->mesh, md->dofs, cm, st))) {
+    model_free(md);
+    return NULL;
+  }
+  
+#line 173 "paper/model.nw"
+int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
+md->b = malloc(n * sizeof *md->b);
+md->Q = calloc(n, sizeof *md->Q);
+md->lo = malloc((nc ? nc : 1) * sizeof *md->lo);
+md->T = calloc(nc + nt + 1, sizeof *md->T);
+md->slip = calloc(nt + 1, sizeof *md->slip);
+md->fixed_point_tol = solver->tol;
+if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
+  model_free(md);
+  status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
+  return NULL;
+}
+#line 167 "paper/model.nw"
+  
+#line 188 "paper/model.nw"
+md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
+                nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
+if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
+  model_free(md);
+  return NULL;
+}
+#line 168 "paper/model.nw"
+  return md;
+}
+#line 208 "paper/model.nw"
+int model_solve(Model *md, const double *X, Status *st)
+{
+  double start = resources_clock();
+  int rc;
+  if ((rc = mesh_move(md->mesh, X, st))
+      || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, &md->hooke, st)))
+    return rc;
+  fem_load(md->mesh, md->dofs, md->problem, md->b);
+  for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
+  if (md->problem->contact == CONTACT_TRESCA)
+    friction_tresca_bounds(md->problem, md->mesh, md->dofs, md->slip);
+  rc = md->problem->contact == CONTACT_COULOMB ? model_coulomb(md, st)
+                                               : model_state(md, st);
+  md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
+  if (md->dofs->nt) {
+    md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
+    md->energy += md->friction_energy;
+  }
+  md->seconds = resources_clock() - start;
+  return rc;
+}
+#line 232 "paper/model.nw"
+static int model_state(Model *md, Status *st)
+{
+  int rc = qp_solve(md->solver, md->solved ? md->Q : NULL, md->Q, md->T,
+                    &md->report, st);
+  md->solved = rc == STATUS_OK;
+  return rc;
+}
+#line 253 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   const Problem *p = md->problem;
@@ -113,36 +128,21 @@ static int model_coulomb(Model *md, Status *st)
     rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 215 "paper/model.nw"
-int model_solve(Model *md, const double *X, Status *st)
+#line 308 "paper/model.nw"
+static double model_change(const double *old, const double *T, int nc)
 {
-  double start = resources_clock();
-  int rc;
-  if ((rc = mesh_move(md->mesh, X, st))
-      || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, &md->hooke, st)))
-    return rc;
-  fem_load(md->mesh, md->dofs, md->problem, md->b);
-  for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
-  if (md->problem->contact == CONTACT_TRESCA)
-    friction_tresca_bounds(md->problem, md->mesh, md->dofs, md->slip);
-  rc = md->problem->contact == CONTACT_COULOMB ? model_coulomb(md, st)
-                                               : model_state(md, st);
-  md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
-  if (md->dofs->nt) {
-    md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
-    md->energy += md->friction_energy;
-  }
-  md->seconds = resources_clock() - start;
-  return rc;
+  double diff = 0, size = 0;
+  for (int c = 0; c < nc; c++)
+    diff = fmax(diff, fabs(T[c] - old[c])),
+    size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
+  return diff == 0 ? 0 : diff / size;
 }
-
-#line 337 "paper/model.nw"
+#line 330 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-
-#line 345 "paper/model.nw"
+#line 338 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -156,8 +156,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-
-#line 361 "paper/model.nw"
+#line 354 "paper/model.nw"
 void model_free(Model *md)
 {
   if (!md) return;
@@ -168,14 +167,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 430 "paper/model.nw"
-double model_displacement_max(const Model *md)
-{
-  double u = 0;
-  for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
-  return u;
-}
-#line 398 "paper/model.nw"
+#line 391 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -188,17 +180,24 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 417 "paper/model.nw"
+#line 410 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 410 "paper/model.nw"
+#line 403 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 444 "paper/model.nw"
+#line 423 "paper/model.nw"
+double model_displacement_max(const Model *md)
+{
+  double u = 0;
+  for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
+  return u;
+}
+#line 437 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -210,7 +209,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 461 "paper/model.nw"
+#line 454 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

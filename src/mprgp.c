@@ -1,4 +1,4 @@
-#line 146 "paper/mprgp.nw"
+#line 113 "paper/mprgp.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,22 +7,27 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-
-#line 157 "paper/mprgp.nw"
+#line 124 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 379 "paper/mprgp.nw"
+#line 346 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-
-#line 163 "paper/mprgp.nw"
+#line 103 "paper/mprgp.nw"
+static int proportional(const Qp_workspace *w);
+static int proportioning_step(Qp_workspace *w, Status *st);
+static double feasible_step(const Qp_workspace *w);
+static void cg_step(Qp_workspace *w, double acg, double pap);
+static void expansion_step(Qp_workspace *w, double af);
+static int cg_or_expansion_step(Qp_workspace *w, Status *st);
+static int dual_iterate(Qp_workspace *w, Status *st);
+#line 130 "paper/mprgp.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
   for (int i = 0; i < n; i++) s += u[i] * v[i];
   return s;
 }
-
-#line 174 "paper/mprgp.nw"
+#line 141 "paper/mprgp.nw"
 int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -33,8 +38,7 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (cgssor)");
   return STATUS_OK;
 }
-
-#line 188 "paper/mprgp.nw"
+#line 155 "paper/mprgp.nw"
 void mprgp_set(Qp_workspace *w)
 {
   w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
@@ -46,8 +50,7 @@ void mprgp_free(Qp_workspace *w)
 {
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
-
-#line 215 "paper/mprgp.nw"
+#line 182 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -66,8 +69,18 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-
-#line 257 "paper/mprgp.nw"
+#line 211 "paper/mprgp.nw"
+int mprgp_iterate(Qp_workspace *w, Status *st)
+{
+  if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */
+  int code = proportional(w) ? cg_or_expansion_step(w, st)
+                             : proportioning_step(w, st);
+  if (code) return code;
+  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
+  if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
+  return STATUS_OK;
+}
+#line 224 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -81,8 +94,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-
-#line 278 "paper/mprgp.nw"
+#line 245 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -100,49 +112,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   mp->restart = 1;
   return STATUS_OK;
 }
-
-#line 335 "paper/mprgp.nw"
-/* the largest alpha with x - alpha p >= lo */
-static double feasible_step(const Qp_workspace *w)
-{
-  double af = INFINITY;
-  for (int i = 0; i < w->n; i++)
-    if (w->mprgp.p[i] > 0 && w->bnd[i] >= 0)
-      af = fmin(af, (w->x[i] - w->lo[i]) / w->mprgp.p[i]);
-  return af;
-}
-
-#line 352 "paper/mprgp.nw"
-/* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
-static void cg_step(Qp_workspace *w, double acg, double pap)
-{
-  Mprgp_workspace *mp = &w->mprgp;
-  for (int i = 0; i < w->n; i++) {
-    w->x[i] = qp_proj(w, i, w->x[i] - acg * mp->p[i]);
-    w->g[i] -= acg * mp->q[i];
-  }
-  ssor_free(w);
-  double gamma = dot(w->n, mp->z, mp->q) / pap;
-  for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
-}
-
-#line 383 "paper/mprgp.nw"
-/* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
-static void expansion_step(Qp_workspace *w, double af)
-{
-  Mprgp_workspace *mp = &w->mprgp;
-  for (int i = 0; i < w->n; i++) {
-    int tie = mp->p[i] > 0 && w->x[i] - w->lo[i] <= af * mp->p[i] * (1 + TIE);
-    w->x[i] = tie ? w->lo[i] : qp_proj(w, i, w->x[i] - af * mp->p[i]);
-    w->g[i] -= af * mp->q[i];
-  }
-  for (int i = 0; i < w->n; i++)
-    if (qp_is_free(w, i)) w->x[i] = qp_proj(w, i, w->x[i] - mp->abar * w->g[i]);
-  qp_refresh(w);
-  mp->restart = 1;
-}
-
-#line 310 "paper/mprgp.nw"
+#line 277 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -165,8 +135,45 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-
-#line 519 "paper/mprgp.nw"
+#line 302 "paper/mprgp.nw"
+/* the largest alpha with x - alpha p >= lo */
+static double feasible_step(const Qp_workspace *w)
+{
+  double af = INFINITY;
+  for (int i = 0; i < w->n; i++)
+    if (w->mprgp.p[i] > 0 && w->bnd[i] >= 0)
+      af = fmin(af, (w->x[i] - w->lo[i]) / w->mprgp.p[i]);
+  return af;
+}
+#line 319 "paper/mprgp.nw"
+/* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
+static void cg_step(Qp_workspace *w, double acg, double pap)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  for (int i = 0; i < w->n; i++) {
+    w->x[i] = qp_proj(w, i, w->x[i] - acg * mp->p[i]);
+    w->g[i] -= acg * mp->q[i];
+  }
+  ssor_free(w);
+  double gamma = dot(w->n, mp->z, mp->q) / pap;
+  for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
+}
+#line 350 "paper/mprgp.nw"
+/* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
+static void expansion_step(Qp_workspace *w, double af)
+{
+  Mprgp_workspace *mp = &w->mprgp;
+  for (int i = 0; i < w->n; i++) {
+    int tie = mp->p[i] > 0 && w->x[i] - w->lo[i] <= af * mp->p[i] * (1 + TIE);
+    w->x[i] = tie ? w->lo[i] : qp_proj(w, i, w->x[i] - af * mp->p[i]);
+    w->g[i] -= af * mp->q[i];
+  }
+  for (int i = 0; i < w->n; i++)
+    if (qp_is_free(w, i)) w->x[i] = qp_proj(w, i, w->x[i] - mp->abar * w->g[i]);
+  qp_refresh(w);
+  mp->restart = 1;
+}
+#line 486 "paper/mprgp.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -193,8 +200,7 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
 {
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
-
-#line 549 "paper/mprgp.nw"
+#line 516 "paper/mprgp.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
@@ -212,12 +218,11 @@ static void dual_state(Qp_workspace *w)
   for (int k = 0; k < w->nk; k++) r[k] = w->cond->f[k] + w->T[k];
   dual_hessian(w, r, w->cond->y);
 }
-
-#line 513 "paper/mprgp.nw"
+#line 480 "paper/mprgp.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 571 "paper/mprgp.nw"
+#line 538 "paper/mprgp.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
@@ -250,8 +255,7 @@ static double norm_inverse(Qp_workspace *w)
   }
   return rho + res;
 }
-
-#line 607 "paper/mprgp.nw"
+#line 574 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
   int code = condense_factor(w, st);
@@ -263,8 +267,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   w->mprgp.restart = 1, w->mprgp.factored = 1;
   return STATUS_OK;
 }
-
-#line 622 "paper/mprgp.nw"
+#line 589 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -278,8 +281,7 @@ static int dual_proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-
-#line 638 "paper/mprgp.nw"
+#line 605 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -289,8 +291,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
     else if (d[k] < 0) af = fmin(af, (w->T[k] - w->fhi[k]) / d[k]);
   return af;
 }
-
-#line 652 "paper/mprgp.nw"
+#line 619 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -306,8 +307,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   }
   mp->restart = 1;
 }
-
-#line 672 "paper/mprgp.nw"
+#line 639 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -322,7 +322,7 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 706 "paper/mprgp.nw"
+#line 673 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
@@ -336,7 +336,7 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 724 "paper/mprgp.nw"
+#line 691 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -353,7 +353,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 690 "paper/mprgp.nw"
+#line 657 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -367,8 +367,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   if (acg <= af) dual_cg_step(w, acg, php);
   else dual_expansion_step(w, af);
 }
-
-#line 748 "paper/mprgp.nw"
+#line 715 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -397,8 +396,7 @@ static double dual_snapped_kkt(Qp_workspace *w)
     memcpy(cd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
   return kkt;
 }
-
-#line 781 "paper/mprgp.nw"
+#line 748 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
@@ -407,8 +405,7 @@ static int dual_finish(Qp_workspace *w, Status *st)
     "tolerance at step %d, and the whole state formed from it, refined once, "
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
-
-#line 796 "paper/mprgp.nw"
+#line 763 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
@@ -422,8 +419,7 @@ static int dual_iterate(Qp_workspace *w, Status *st)
     return dual_finish(w, st);
   return STATUS_OK;
 }
-
-#line 817 "paper/mprgp.nw"
+#line 784 "paper/mprgp.nw"
 /* with friction, S, f and the states at x, if no step condensed them */
 int mprgp_end(Qp_workspace *w, Status *st)
 {
@@ -431,16 +427,4 @@ int mprgp_end(Qp_workspace *w, Status *st)
   if (w->nk > w->nc && !w->cond->condensed && !(code = condense_factor(w, st)))
     condense_states_at_x(w);
   return code;
-}
-
-#line 244 "paper/mprgp.nw"
-int mprgp_iterate(Qp_workspace *w, Status *st)
-{
-  if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */
-  int code = proportional(w) ? cg_or_expansion_step(w, st)
-                             : proportioning_step(w, st);
-  if (code) return code;
-  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
-  if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
-  return STATUS_OK;
 }

@@ -1,4 +1,4 @@
-#line 229 "paper/pdas.nw"
+#line 220 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,13 +6,33 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-
-#line 317 "paper/pdas.nw"
+#line 308 "paper/pdas.nw"
 #define SINGULAR (-1)    /* a Newton matrix is singular (not a Status_code) */
-#line 322 "paper/pdas.nw"
+#line 313 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
+#line 214 "paper/pdas.nw"
+static int pdas_newton_step(Qp_workspace *w);
+static int hold_stopping(Qp_workspace *w);
+static void guide(Qp_workspace *w);
+#line 236 "paper/pdas.nw"
+/* the first active set: all of I; a warm start guesses after condensing */
+void pdas_set(Qp_workspace *w, int warm)
+{
+  Pdas_workspace *pd = &w->pdas;
+  Condense *cd = w->cond;
+  pd->warm = warm, cd->condensed = 0, cd->stepped = 1;
+  pd->ip.state = GUIDE_OFF, pd->ip.guided = 0;
+  for (int c = 0; c < w->nk; c++) cd->act[c] = CONDENSE_HELD;
+}
 
-#line 269 "paper/pdas.nw"
+/* the size of the active set */
+static int count_act(const Qp_workspace *w)
+{
+  int m = 0;
+  for (int c = 0; c < w->nk; c++) m += w->cond->act[c] == CONDENSE_HELD;
+  return m;
+}
+#line 260 "paper/pdas.nw"
 /* the guide's vectors, nc each; nonzero when out of memory */
 static int alloc_guide(Pdas_guide *ip, size_t nc)
 {
@@ -37,8 +57,7 @@ int pdas_alloc(Qp_workspace *w, Status *st)
                       "nc = %d)", w->nk);
   return STATUS_OK;
 }
-
-#line 296 "paper/pdas.nw"
+#line 287 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -47,27 +66,48 @@ void pdas_free(Qp_workspace *w)
   free(pd->ip.as), free(pd->ip.at), free(pd->ip.h), free(pd->ip.pred), free(pd->ip.own);
   free(pd->ip.b), free(pd->ip.db), free(pd->ip.ab);
 }
-
-#line 245 "paper/pdas.nw"
-/* the first active set: all of I; a warm start guesses after condensing */
-void pdas_set(Qp_workspace *w, int warm)
+#line 317 "paper/pdas.nw"
+int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
-  Condense *cd = w->cond;
-  pd->warm = warm, cd->condensed = 0, cd->stepped = 1;
-  pd->ip.state = GUIDE_OFF, pd->ip.guided = 0;
-  for (int c = 0; c < w->nk; c++) cd->act[c] = CONDENSE_HELD;
+  int code;
+  if (!w->cond->condensed) {
+    
+#line 345 "paper/pdas.nw"
+if ((code = condense_factor(w, st))) return code;
+if (pd->warm) condense_states_at_x(w);
+#line 323 "paper/pdas.nw"
+  }
+  if (w->qp->slides) hold_stopping(w);
+  if (w->iter > 0) guide(w);
+  if (w->qp->slides && pd->ip.guided) hold_stopping(w);
+  if ((code = pdas_newton_step(w)) == SINGULAR && pd->ip.guided) {
+    memcpy(w->cond->act, pd->ip.own, (size_t) w->nk); /* the guide's set: retake */
+    pd->ip.guided = 0;
+    code = pdas_newton_step(w);
+  }
+  if (code == SINGULAR && w->iter == 0 && pd->warm) {
+    pdas_set(w, 0), w->cond->condensed = 1; /* the guess holds nothing: cold */
+    code = pdas_newton_step(w);
+  }
+  if (code == SINGULAR)
+    return qp_not_held(w, st, "the Newton matrix is singular", count_act(w));
+  condense_forces(w);
+  w->kkt = condense_kkt(w);
+  
+#line 365 "paper/pdas.nw"
+int same = condense_predict(w), solved = w->kkt <= w->opt.tol;
+if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
+if ((code = condense_expand(w, st))) return code;
+if (w->kkt > w->opt.tol && (same || solved) && (code = condense_refine(w, st)))
+  return code;
+if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
+return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
+  "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
+  "%.3g", w->iter + 1, w->kkt, w->opt.tol);
+#line 341 "paper/pdas.nw"
 }
-
-/* the size of the active set */
-static int count_act(const Qp_workspace *w)
-{
-  int m = 0;
-  for (int c = 0; c < w->nk; c++) m += w->cond->act[c] == CONDENSE_HELD;
-  return m;
-}
-
-#line 403 "paper/pdas.nw"
+#line 394 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int pdas_newton_step(Qp_workspace *w)
 {
@@ -76,7 +116,7 @@ static int pdas_newton_step(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 427 "paper/pdas.nw"
+#line 418 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (cd->act[c] == CONDENSE_HELD) cd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -88,7 +128,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) cd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 411 "paper/pdas.nw"
+#line 402 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -98,8 +138,7 @@ for (int a = 0; a < m; a++) {
   for (int a = 0; a < m; a++) cd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
-
-#line 509 "paper/pdas.nw"
+#line 500 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -118,7 +157,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 531 "paper/pdas.nw"
+#line 522 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -139,7 +178,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 490 "paper/pdas.nw"
+#line 481 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -154,8 +193,7 @@ static int hold_stopping(Qp_workspace *w)
   }
   return held > 0;
 }
-
-#line 561 "paper/pdas.nw"
+#line 552 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -191,21 +229,20 @@ static int guide_start(Qp_workspace *w)
       ip->s[c] = slide, ip->t[c] = w->flo[c];
     } else {
       
-#line 610 "paper/pdas.nw"
+#line 601 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 596 "paper/pdas.nw"
+#line 587 "paper/pdas.nw"
     }
   }
   memcpy(ip->pred, cd->act, (size_t) nk);   /* its first prediction */
   ip->state = GUIDE_ON;
   return 1;
 }
-
-#line 656 "paper/pdas.nw"
+#line 647 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -338,8 +375,7 @@ static int guide_step(Qp_workspace *w)
   }
   return !inside;
 }
-
-#line 797 "paper/pdas.nw"
+#line 788 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
@@ -363,46 +399,4 @@ static void guide(Qp_workspace *w)
   memcpy(ip->own, cd->act, (size_t) nk);
   memcpy(cd->act, ip->pred, (size_t) nk);
   ip->guided = 1;
-}
-
-#line 326 "paper/pdas.nw"
-int pdas_iterate(Qp_workspace *w, Status *st)
-{
-  Pdas_workspace *pd = &w->pdas;
-  int code;
-  if (!w->cond->condensed) {
-    
-#line 354 "paper/pdas.nw"
-if ((code = condense_factor(w, st))) return code;
-if (pd->warm) condense_states_at_x(w);
-#line 332 "paper/pdas.nw"
-  }
-  if (w->qp->slides) hold_stopping(w);
-  if (w->iter > 0) guide(w);
-  if (w->qp->slides && pd->ip.guided) hold_stopping(w);
-  if ((code = pdas_newton_step(w)) == SINGULAR && pd->ip.guided) {
-    memcpy(w->cond->act, pd->ip.own, (size_t) w->nk); /* the guide's set: retake */
-    pd->ip.guided = 0;
-    code = pdas_newton_step(w);
-  }
-  if (code == SINGULAR && w->iter == 0 && pd->warm) {
-    pdas_set(w, 0), w->cond->condensed = 1; /* the guess holds nothing: cold */
-    code = pdas_newton_step(w);
-  }
-  if (code == SINGULAR)
-    return qp_not_held(w, st, "the Newton matrix is singular", count_act(w));
-  condense_forces(w);
-  w->kkt = condense_kkt(w);
-  
-#line 374 "paper/pdas.nw"
-int same = condense_predict(w), solved = w->kkt <= w->opt.tol;
-if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
-if ((code = condense_expand(w, st))) return code;
-if (w->kkt > w->opt.tol && (same || solved) && (code = condense_refine(w, st)))
-  return code;
-if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
-return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
-  "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
-  "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 350 "paper/pdas.nw"
 }
