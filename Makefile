@@ -303,7 +303,13 @@ out/accuracy/plan.dat: accuracy-plan
 	@{ echo '# family points: the plan of make accuracy, ACCURACY_NMAX=$(ACCURACY_NMAX)'; \
 	  $(foreach f,$(ACC_FAMILIES),echo '$(f) $(ACC.$(f))';) } > $@.new
 	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
-out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS)
+# the limit of each mesh: one CHOLMOD analyse + factorise + solve of its
+# stiffness (bench_cholmod --limit), measured in the same sweep
+ACC_LIMITS := $(ACC_N:%=out/accuracy/limit/N%.dat)
+out/accuracy/limit/N%.dat: build/bench/bench_cholmod
+	@mkdir -p $(@D)
+	$< --limit data/example-5.1.scene mesh.refine=$$(($* / 16)) > $@.partial && mv $@.partial $@
+out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS) $(ACC_LIMITS)
 	sh $< out/accuracy > $@.partial && mv $@.partial $@
 figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures

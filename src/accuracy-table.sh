@@ -25,22 +25,25 @@ function setting(f) { if (f ~ /^(pdas|cgssor)-/) return tol($5)
 /^# nmax / { nmax = $3 } /^# E_inf / { Einf = $3 } /^# p / { p = $3 }
 /^# levels / { lv = $3 " " $4 " " $5; gsub(/N|_[^ ]*/, "", lv); gsub(/ /, ", ", lv) }
 /^#/ || NF == 0 { next }
-!head++ { print "\\begin{tabular}{@{}lrrrrrrl@{}}\\toprule"
+!head++ { print "\\begin{tabular}{@{}lrrrrrrrl@{}}\\toprule"
   print "& $E^*$ [J/m] & $|E^*-E_\\infty|/|E_\\infty|$ & same mesh & shape [m]" \
-        " & solves & s & stop\\\\" }
-$1 != last { print "\\midrule\\multicolumn{8}{@{}l}{" heading($1) "}\\\\"; last = $1 }
+        " & solves & s & limits & stop\\\\" }
+$1 != last { print "\\midrule\\multicolumn{9}{@{}l}{" heading($1) "}\\\\"; last = $1 }
 { stop = $15 == "converged" ? "" : "\\texttt{" $15 "}"; gsub(/_/, "\\_", stop)
   same = $1 == "mesh" ? "--" : sci($10, 1)
   shape = $1 == "mesh" && $3 == nmax ? "--" : sci($11, 1)
-  printf "%s & %s & %s & %s & %s & %d & %.2f & %s\\\\\n", setting($1), sci($8, 8),
-    sci($9, 1), same, shape, $12, $13, stop }
+  limits = $16 ~ /^[0-9.]+$/ && $16 > 0 ? sprintf("%.1f", $13 / $16) : "--"
+  printf "%s & %s & %s & %s & %s & %d & %.2f & %s & %s\\\\\n", setting($1), sci($8, 8),
+    sci($9, 1), same, shape, $12, $13, limits, stop }
 END { print "\\bottomrule\\end{tabular}"
       printf "\\par\\smallskip\\footnotesize Made by \\texttt{make accuracy} with"
       printf " \\texttt{ACCURACY\\_NMAX=%s}: $E_\\infty = %s$\\,J/m", nmax, num(Einf, 8)
       printf " from $N = %s$, observed rate $p = %.2f$. Errors relative to $|E_\\infty|$;", lv, p
       print " \\emph{same mesh}: against the run of (a) on the same mesh; \\emph{shape}:"
       print "largest difference from the final $\\alpha$ of (a) on $N = " nmax "$;"
-      print "\\emph{s}: seconds of the optimisation; \\emph{stop} blank: converged."
+      print "\\emph{s}: seconds of the optimisation; \\emph{limits}: those seconds over one"
+      print "CHOLMOD analysis, factorisation and solve of the stiffness of that mesh, measured"
+      print "in the same sweep; \\emph{stop} blank: converged."
       while ((getline line < once) > 0) {
         if (line ~ /^#/) continue
         split(line, f, " ")

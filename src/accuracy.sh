@@ -4,6 +4,8 @@
 # Tangled from paper/accuracy.nw; do not edit.
 out=${1:-out/accuracy}
 acc_val() { awk -v k=$1 '$1 == k { print $2; exit }' $out/$2/summary.dat; }
+acc_limit() { if [ -f $out/limit/N$1.dat ]; then
+  awk '{ printf "%.6f", $3 + $4; exit }' $out/limit/N$1.dat; else echo NaN; fi; }
 acc_seconds() { s=$(acc_val seconds $1)
   [ -n "$s" ] || s=$(awk '$1 == "wall_seconds" { print $2 }' $out/$1/wall.dat)
   echo $s; }
@@ -29,7 +31,8 @@ echo "# levels $levels"
 echo "# E_inf $Einf"
 echo "# p $p"
 echo "# family point N state solver_tol method optimizer_tol energy[J/m] rel_error" \
-     "same_mesh_error shape_error[m] state_solves seconds iterations stop_reason"
+     "same_mesh_error shape_error[m] state_solves seconds iterations stop_reason" \
+     "limit_seconds"
 grep -v '^#' $out/plan.dat | while read -r family points; do
   for pt in $points; do
     set -- $(echo "$pt" | tr _ ' ')
@@ -40,6 +43,6 @@ grep -v '^#' $out/plan.dat | while read -r family points; do
       BEGIN { printf "%.3e %.3e", abs(E - i) / abs(i), abs(E - r) / abs(i) }')
     echo $family $pt ${n#N} $state $tol $method $otol $E $1 $2 \
       $(acc_shape_error $pt) $(acc_val evaluations $pt) $(acc_seconds $pt) \
-      $(acc_val iterations $pt) $(acc_val stop_reason $pt)
+      $(acc_val iterations $pt) $(acc_val stop_reason $pt) $(acc_limit ${n#N})
   done
 done

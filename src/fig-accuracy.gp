@@ -70,6 +70,10 @@ do for [fmt in "pdf png"] {
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
        for [f in oneN] sweep using (strcol(1) eq f ? $13 : NaN):9 \
          with points pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
+       sweep using (strcol(1) eq "mesh" ? $16 : NaN):9:($13 - $16):(0) \
+         with vectors nohead dt 3 lw 1 lc rgb "gray50" notitle, \
+       sweep using (strcol(1) eq "mesh" ? $16 : NaN):9 \
+         with points pt 6 ps 0.9 lc rgb "gray30" title "one factorisation of its mesh", \
        sweep using (strcol(1) eq "mesh" ? $13 : NaN):9:(sprintf("%d", $3)) \
          with labels offset 0, 0.8 font sprintf(",%g", 0.8*fsz) notitle
   c = 1; eps = 1e-15

@@ -4,6 +4,11 @@
    bench); not a test.
 
      bench_cholmod SCENE [section.key=value ...]
+     bench_cholmod --limit SCENE [section.key=value ...]
+
+   With --limit it prints only the reference (analyse, factor_solve,
+   below) of the stiffness at alpha0, which the accuracy sweep draws as
+   the limit of each N: "N dofs analyse factor_solve residual".
 
    On the scene (with the overrides, as -s gives them) at its initial
    shape alpha0 it times, wall-clock (CLOCK_MONOTONIC):
@@ -42,6 +47,8 @@
 #include "model.h"
 #include "grad.h"
 #include "design.h"
+#include "mesh.h"
+#include "fem.h"
 
 static double now(void)
 {
@@ -64,17 +71,18 @@ static double maxrss_mib(void)
   return ru.ru_maxrss / 1024.0;
 }
 
-/* x = A\b by CHOLMOD from scratch, A = md->A (both triangles) and b = md->b;
+/* x = A\b by CHOLMOD from scratch (A both triangles, b its load);
    *analyse, *factor_solve its times; returns |b - Ax| / (|A||x| + |b|) */
-static double cholmod_reference(const Model *md, cholmod_common *cm,
-                                double *analyse, double *factor_solve)
+static double cholmod_reference(const cholmod_sparse *A, const double *bx,
+                                cholmod_common *cm, double *analyse,
+                                double *factor_solve)
 {
-  int n = (int) md->A->nrow;
+  int n = (int) A->nrow;
   double one[2] = { 1, 0 }, minus_one[2] = { -1, 0 };
-  cholmod_sparse *C = cholmod_copy(md->A, -1, 1, cm);   /* lower triangle */
+  cholmod_sparse *C = cholmod_copy((cholmod_sparse *) A, -1, 1, cm);   /* lower triangle */
   cholmod_dense *b = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm), *x, *r;
   if (!C || !b) die("CHOLMOD", "out of memory for the copy of A");
-  memcpy(b->x, md->b, n * sizeof(double));
+  memcpy(b->x, bx, n * sizeof(double));
   double t0 = now();
   cholmod_factor *L = cholmod_analyze(C, cm);
   double t1 = now();
@@ -142,7 +150,7 @@ static Model *measure_cold(const Scene *s, cholmod_common *cm, Times *T)
     setup = now() - t;
     cold = timed_solve(md, s->alpha0, &T->cold_steps);
     if (k == 0) T->rss = maxrss_mib();    /* before CHOLMOD's own factor */
-    T->residual = cholmod_reference(md, cm, &a, &f);
+    T->residual = cholmod_reference(md->A, md->b, cm, &a, &f);
     if (!(T->residual < 1e-10)) die("CHOLMOD", "the residual of its solve is not small");
     T->setup = fmin(T->setup, setup), T->cold = fmin(T->cold, cold);
     T->analyse = fmin(T->analyse, a), T->factor_solve = fmin(T->factor_solve, f);
@@ -178,17 +186,53 @@ static void measure_warm(const Scene *s, Model *md, Times *T)
   free(X1), free(X2), free(G);
 }
 
+/* --limit: the stiffness A and load b at alpha0 assembled by the fem
+   module alone (no model, no state solve), then only the reference, the
+   least of its repetitions: "N dofs analyse factor_solve residual" */
+static void measure_limit(const Scene *s, cholmod_common *cm)
+{
+  Status st;
+  Mesh *m = mesh_new(&s->problem, &st);
+  if (!m || mesh_move(m, s->alpha0, &st)) die("mesh", st.msg);
+  Dofs *d = fem_dofs_new(m, &s->problem, &st);
+  if (!d) die("fem_dofs_new", st.msg);
+  Hooke H = fem_hooke(&s->problem);
+  cholmod_sparse *A = fem_stiffness_new(m, d, cm, &st);
+  if (!A || fem_stiffness_fill(A, m, d, &H, &st)) die("fem_stiffness", st.msg);
+  double *b = malloc(A->nrow * sizeof *b), an = HUGE_VAL, fs = HUGE_VAL, res = 0, spent = 0;
+  if (!b) die("bench_cholmod", "out of memory");
+  fem_load(m, d, &s->problem, b);
+  for (int k = 0; k < 10 && (k == 0 || spent < 1.0); k++) {
+    double a, f;
+    res = cholmod_reference(A, b, cm, &a, &f);
+    an = fmin(an, a), fs = fmin(fs, f), spent += a + f;
+  }
+  printf("%d %d %.6f %.6f %.1e\n", s->problem.N, (int) A->nrow, an, fs, res);
+  free(b);
+  cholmod_free_sparse(&A, cm);
+  fem_dofs_free(d);
+  mesh_free(m);
+}
+
 int main(int argc, char **argv)
 {
   Scene s;
   Status st;
   Times T = { 0 };
   cholmod_common cm;
-  if (argc < 2) die("usage", "bench_cholmod SCENE [section.key=value ...]");
-  if (scene_load(&s, argv[1], argc - 2, argv + 2, &st)) die(argv[1], st.msg);
+  int limit = argc > 1 && !strcmp(argv[1], "--limit");
+  if (argc < 2 + limit) die("usage", "bench_cholmod [--limit] SCENE [section.key=value ...]");
+  if (scene_load(&s, argv[1 + limit], argc - 2 - limit, argv + 2 + limit, &st))
+    die(argv[1 + limit], st.msg);
   cholmod_start(&cm);
   gsl_set_error_handler_off();   /* failures come back as codes */
   cm.print = 0;
+  if (limit) {
+    measure_limit(&s, &cm);
+    cholmod_finish(&cm);
+    scene_free(&s);
+    return 0;
+  }
   Model *md = measure_cold(&s, &cm, &T);
   measure_warm(&s, md, &T);
   printf("%d %d %.6f %.6f %d %.6f %.6f %.3f %.1f %.6f %d %.3e %.4f %.1e\n",
