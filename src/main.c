@@ -304,8 +304,8 @@ static int command_optimize(Run *r, Status *st)
   if (!grad_available(&r->s.problem)) rc = no_gradient(r, "optimize", st);
   else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
     rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
-                    "the energy only; objective.kind = %s needs slsqp or "
-                    "projgrad", r->s.path, objective_name(J->kind));
+                    "the energy only; objective.kind = %s needs slsqp, "
+                    "mma or projgrad", r->s.path, objective_name(J->kind));
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
   else if (!(rc = begin(r, &o, st))) {

@@ -1,12 +1,12 @@
-#line 322 "paper/opt.nw"
+#line 341 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 335 "paper/opt.nw"
-const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", NULL};
+#line 355 "paper/opt.nw"
+const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
 Opt_options opt_options_default(Opt_method method)
@@ -18,14 +18,14 @@ Opt_options opt_options_default(Opt_method method)
 
 const char *opt_method_name(Opt_method m)
 {
-  return (unsigned)m <= OPT_NEWTON ? opt_method_names[m] : "?";
+  return (unsigned)m <= OPT_MMA ? opt_method_names[m] : "?";
 }
 
 const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 390 "paper/opt.nw"
+#line 413 "paper/opt.nw"
 /* the rounding of another objective than E: relative to |J| + 1 (the
    pressure spread is a difference from 1) */
 #define OPT_J_ROUNDING (64 * DBL_EPSILON)
@@ -39,9 +39,11 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->solves++;
   const Objective *o = &ev->o->objective;
   double J = 0;
-  if (!rc) rc = o->kind == OBJECTIVE_ENERGY ? grad_energy(ev->md, ev->G, ev->st)
-    : objective_value(ev->md, o, &J, ev->st) || objective_gradient(ev->md, o, ev->G, ev->st)
-    ? (int) ev->st->code : STATUS_OK;
+  ev->lifted = 0;
+  if (!rc && o->kind == OBJECTIVE_ENERGY) rc = grad_energy(ev->md, ev->G, ev->st);
+  else if (!rc && (rc = objective_value(ev->md, o, &J, ev->st)))
+    ev->lifted = rc == STATUS_NUMERIC;          /* no contact node presses */
+  else if (!rc) rc = objective_gradient(ev->md, o, ev->G, ev->st);
   if (ev->rep)
     ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
   if (rc) return rc;
@@ -52,7 +54,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 451 "paper/opt.nw"
+#line 476 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -61,7 +63,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 462 "paper/opt.nw"
+#line 487 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -70,9 +72,11 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
                      ev->md->report.iterations, start - ev->start };
   int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
   ev->rep->monitor_seconds += resources_clock() - start;
+  memcpy(ev->Xacc, ev->X, ev->n * sizeof *ev->X);
+  ev->accepted++;
   return stop;
 }
-#line 493 "paper/opt.nw"
+#line 520 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -93,36 +97,51 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1359 "paper/opt.nw"
+#line 1727 "paper/opt.nw"
+/* after a method failed at a design that lifts off: back to the last
+   iterate, stop_reason lift_off */
+static int opt_lift_off(Evaluator *ev, double *X)
+{
+  snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "lift_off");
+  snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "a trial design "
+           "after iterate %d: %.400s", ev->rep->iterations, ev->st->msg);
+  *ev->st = (Status) { STATUS_OK, "" };
+  memcpy(X, ev->Xacc, ev->n * sizeof *X);
+  return opt_evaluate(ev, X);
+}
+
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st)
 {
   int n = B->N + 1, rc;
-  Evaluator ev = { .md = md, .B = B, .o = o, .n = n, .X = malloc(2 * n * sizeof(double)),
+  Evaluator ev = { .md = md, .B = B, .o = o, .n = n, .X = malloc(3 * n * sizeof(double)),
                    .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
-  ev.G = ev.X + n;
+  ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1384 "paper/opt.nw"
+#line 1766 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1372 "paper/opt.nw"
+#line 1752 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
+       : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
+    if (rc && ev.lifted && ev.accepted) rc = opt_lift_off(&ev, X);
   }
   if (!rc) rep->energy = md->energy;
   rep->seconds = resources_clock() - ev.start;
   free(ev.X);
   return rc;
 }
-#line 1400 "paper/opt.nw"
+#line 1783 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
-  double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
+  double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
+                        : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }

@@ -1,4 +1,4 @@
-#line 148 "paper/opt.nw"
+#line 152 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_H
 #define CONTACTOPT_OPT_H
 #include "status.h"
@@ -6,15 +6,15 @@
 #include "design.h"
 #include "objective.h"
 
-#line 167 "paper/opt.nw"
-typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON } Opt_method;
+#line 171 "paper/opt.nw"
+typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON, OPT_MMA } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
-extern const char *const opt_method_names[]; /* slsqp, projgrad, newton */
+extern const char *const opt_method_names[]; /* slsqp, projgrad, newton, mma */
 extern const char *const opt_metric_names[]; /* schur, euclidean, NULL */
 
 typedef struct {
-  Opt_method method;      /* slsqp (NLopt), projgrad (Algorithm 4.1) or
-                             newton (Section sec:newton) */
+  Opt_method method;      /* slsqp (NLopt), projgrad (Algorithm 4.1),
+                             newton (Section sec:newton) or mma (NLopt) */
   Opt_metric metric;      /* the metric of the design space SLSQP starts in */
   double tol;             /* projected-gradient norm pi at which it stops */
   int max_iter;           /* iteration limit */
@@ -22,7 +22,7 @@ typedef struct {
                              energy only */
 } Opt_options;
 
-#line 197 "paper/opt.nw"
+#line 201 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -36,15 +36,16 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 213 "paper/opt.nw"
+#line 217 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
   double energy;          /* E at the final design */
   double pgnorm;          /* pi at the final design */
   char stop_reason[32];   /* "converged", "max_iter", "no_progress",
-                             "interrupted" */
-  char stop_detail[512];  /* with no_progress: what was measured, or "" */
+                             "interrupted", "lift_off" */
+  char stop_detail[512];  /* with no_progress and lift_off: what was
+                             measured, or "" */
   double seconds;         /* wall time of the whole optimisation */
   double metric_seconds;  /* of it, setting up SLSQP's metric */
   double model_seconds;   /* of it, building and solving Newton's models */
@@ -52,7 +53,7 @@ typedef struct {
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
 } Opt_report;
 
-#line 230 "paper/opt.nw"
+#line 235 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -66,5 +67,5 @@ double opt_memory(const Opt_options *o, int N);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);
-#line 162 "paper/opt.nw"
+#line 166 "paper/opt.nw"
 #endif

@@ -1,9 +1,9 @@
-#line 266 "paper/opt.nw"
+#line 272 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_PRIVATE_H
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 363 "paper/opt.nw"
+#line 383 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -25,9 +25,12 @@ typedef struct {
   double last_E, last_noise; /* E and its rounding at the last accepted iterate */
   double pg_best;         /* the smallest pi of the accepted iterates */
   int idle;               /* accepted iterates in a row without measured progress */
+  double *Xacc;           /* n: the last accepted iterate */
+  int accepted;           /* iterates reported so far */
+  int lifted;             /* the last evaluation failed: the body lifts off */
 } Evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
-#line 271 "paper/opt.nw"
+#line 277 "paper/opt.nw"
 /* solve the state at X, then E and grad E, unless X was the last design */
 int opt_evaluate(Evaluator *ev, const double *X);
 /* report the accepted iterate at the evaluator's design; 1 if the
@@ -37,8 +40,9 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg);
 int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
 void opt_idle_detail(Evaluator *ev);
-/* the three methods: from X to the terminal check, X the final design */
+/* the four methods: from X to the terminal check, X the final design */
 int opt_projgrad(Evaluator *ev, double *X);
 int opt_slsqp(Evaluator *ev, double *X);
 int opt_newton(Evaluator *ev, double *X);
+int opt_mma(Evaluator *ev, double *X);
 #endif

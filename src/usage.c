@@ -66,7 +66,7 @@ const char usage_optimize[] =
   "                  [--matrix-market FILE] [--plot-files]\n"
   "Minimise the total potential energy E over the design set B (4.4) from\n"
   "the scene's initial design (projected onto B if outside), by\n"
-  "optimizer.method = newton (default), slsqp or projgrad (Algorithm 4.1).\n"
+  "optimizer.method = newton (default), slsqp, mma or projgrad (Algorithm 4.1).\n"
   "Prints a line per iteration: E, projected gradient, contact, seconds.\n\n"
   "  -o DIR                output folder (default: out/NAME-optimize)\n"
   "  -s section.key=value  override a key of the scene (repeatable;\n"

@@ -1,8 +1,9 @@
 # objective.sh: the objectives other than the energy (paper/objective.nw).
 # Their gradients by the adjoint agree with finite differences at the
 # initial designs of the shipped scenes (with friction too) and on N = 32
-# in plane strain; SLSQP minimises each to a KKT point; every bad input
-# is refused in one line with exit 2.
+# in plane strain; SLSQP minimises each to a KKT point, and so does MMA,
+# at SLSQP's optimum of the compliance; every bad input is refused in one
+# line with exit 2.
 . tests/lib.sh
 for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene \
              data/example-5.1-tresca.scene; do
@@ -39,13 +40,44 @@ if $BIN optimize data/example-5.1.scene -o $TMP/c -s objective.kind=compliance \
 else
   fail "optimize compliance: $(cat $TMP/err)"
 fi
-# every bad input: one line, exit 2
+# MMA (optimizer.method = mma): on the compliance of Example 5.1 from its
+# arc it converges to a KKT point, every iterate in B, at SLSQP's optimum
+# to 1e-6 relative (both to optimizer.tol = 1e-9); where it cannot
+# converge (the energy) it stops no_progress, exit 3, with its files
+B51="0.05 0.00625 0.09 4 0.25"
+for m in slsqp mma; do
+  $BIN optimize data/example-5.1.scene -o $TMP/c-$m -s objective.kind=compliance \
+    -s optimizer.method=$m -s optimizer.tol=1e-9 >/dev/null 2>$TMP/err-$m
+  echo $? > $TMP/rc-$m
+done
+if [ "$(cat $TMP/rc-mma)" -eq 0 ] && [ "$(cat $TMP/rc-slsqp)" -eq 0 ]; then
+  check "mma compliance: converged in $(value iterations $TMP/c-mma) iterations" \
+    holds 'r == 1' r=$(grep -c '^stop_reason converged' $TMP/c-mma/summary.dat)
+  check "mma and slsqp: the same least compliance to 1e-6 ($(value objective_value $TMP/c-mma), $(value objective_value $TMP/c-slsqp))" \
+    near_ref "$(value objective_value $TMP/c-slsqp)" "$(value objective_value $TMP/c-mma)" 1e-6
+  kkt_point "mma compliance" $TMP/c-mma 0.05 0.00625 0.25
+  in_B "mma compliance" $TMP/c-mma 1e-12 $B51
+else
+  fail "optimize compliance, mma and slsqp: $(cat $TMP/err-mma $TMP/err-slsqp)"
+fi
+$BIN optimize data/example-5.1.scene -o $TMP/e-mma -s optimizer.method=mma >/dev/null 2>$TMP/err; rc=$?
+check "mma energy: exit $rc = 3, one line, stop_reason $(value stop_reason $TMP/e-mma) is no_progress, its files written" \
+  holds 'rc == 3 && lines == 1 && r == 1 && f == 1' rc=$rc lines=$(wc -l <$TMP/err) \
+  r=$(grep -c '^stop_reason no_progress' $TMP/e-mma/summary.dat) f=$(ls $TMP/e-mma/multipliers.dat | wc -l)
+in_B "mma energy" $TMP/e-mma 1e-12 $B51
 bad() { desc=$1; shift
   $BIN "$@" -o $TMP/bad >/dev/null 2>$TMP/err; rc=$?
   check "$desc: exit $rc = 2, one line ($(cat $TMP/err))" \
     holds 'rc == 2 && lines == 1' rc=$rc lines=$(wc -l <$TMP/err); }
+# a start that lifts off has no iterate to fall back on: the objective's message, exit 3
+$BIN optimize data/example-5.1.scene -o $TMP/lift -s optimizer.method=mma -s objective.kind=pressure_spread \
+  -s top.P2=5.75e8 >/dev/null 2>$TMP/err; rc=$?
+check "a start that lifts off: exit $rc = 3, one line ($(cat $TMP/err))" \
+  holds 'rc == 3 && lines == 1 && m == 1' rc=$rc lines=$(wc -l <$TMP/err) m=$(grep -c "lifts off" $TMP/err)
+# every bad input: one line, exit 2
 bad "an unknown objective.kind" gradcheck data/example-5.1.scene -s objective.kind=stress
 bad "objective.q < 1" gradcheck data/example-5.1.scene -s objective.kind=pressure_peak -s objective.q=0.5
 bad "objective.q with kind compliance" gradcheck data/example-5.1.scene -s objective.kind=compliance -s objective.q=4
 bad "newton with another objective" optimize data/example-5.1.scene -s objective.kind=pressure_spread
+bad "an unknown metric with mma" optimize data/example-5.1.scene -s optimizer.method=mma -s optimizer.metric=sobolev
 finish
