@@ -1,9 +1,9 @@
-#line 266 "paper/opt.nw"
+#line 278 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_PRIVATE_H
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 363 "paper/opt.nw"
+#line 375 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -27,7 +27,7 @@ typedef struct {
   int idle;               /* accepted iterates in a row without measured progress */
 } Evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
-#line 271 "paper/opt.nw"
+#line 283 "paper/opt.nw"
 /* solve the state at X, then E and grad E, unless X was the last design */
 int opt_evaluate(Evaluator *ev, const double *X);
 /* report the accepted iterate at the evaluator's design; 1 if the

@@ -71,31 +71,31 @@ static double cholmod_reference(const Model *md, cholmod_common *cm,
 {
   int n = (int) md->A->nrow;
   double one[2] = { 1, 0 }, minus_one[2] = { -1, 0 };
-  cholmod_sparse *C = cholmod_copy(md->A, -1, 1, cm);   /* lower triangle */
-  cholmod_dense *b = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm), *x, *r;
+  cholmod_sparse *C = cholmod_l_copy(md->A, -1, 1, cm);   /* lower triangle */
+  cholmod_dense *b = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm), *x, *r;
   if (!C || !b) die("CHOLMOD", "out of memory for the copy of A");
   memcpy(b->x, md->b, n * sizeof(double));
   double t0 = now();
-  cholmod_factor *L = cholmod_analyze(C, cm);
+  cholmod_factor *L = cholmod_l_analyze(C, cm);
   double t1 = now();
   if (!L) die("cholmod_analyze", "failed");
-  if (!cholmod_factorize(C, L, cm) || cm->status != CHOLMOD_OK || L->minor < L->n)
+  if (!cholmod_l_factorize(C, L, cm) || cm->status != CHOLMOD_OK || L->minor < L->n)
     die("cholmod_factorize", "failed (A not positive definite?)");
-  x = cholmod_solve(CHOLMOD_A, L, b, cm);
+  x = cholmod_l_solve(CHOLMOD_A, L, b, cm);
   double t2 = now();
   if (!x) die("cholmod_solve", "failed");
   *analyse = t1 - t0, *factor_solve = t2 - t1;
-  if (!(r = cholmod_copy_dense(b, cm))
-      || !cholmod_sdmult(C, 0, minus_one, one, x, r, cm))   /* r = b - Ax */
+  if (!(r = cholmod_l_copy_dense(b, cm))
+      || !cholmod_l_sdmult(C, 0, minus_one, one, x, r, cm))   /* r = b - Ax */
     die("cholmod_sdmult", "failed");
-  double res = cholmod_norm_dense(r, 0, cm)
-    / (cholmod_norm_sparse(C, 0, cm) * cholmod_norm_dense(x, 0, cm)
-       + cholmod_norm_dense(b, 0, cm));
-  cholmod_free_dense(&r, cm);
-  cholmod_free_dense(&x, cm);
-  cholmod_free_dense(&b, cm);
-  cholmod_free_factor(&L, cm);
-  cholmod_free_sparse(&C, cm);
+  double res = cholmod_l_norm_dense(r, 0, cm)
+    / (cholmod_l_norm_sparse(C, 0, cm) * cholmod_l_norm_dense(x, 0, cm)
+       + cholmod_l_norm_dense(b, 0, cm));
+  cholmod_l_free_dense(&r, cm);
+  cholmod_l_free_dense(&x, cm);
+  cholmod_l_free_dense(&b, cm);
+  cholmod_l_free_factor(&L, cm);
+  cholmod_l_free_sparse(&C, cm);
   return res;
 }
 
@@ -186,7 +186,7 @@ int main(int argc, char **argv)
   cholmod_common cm;
   if (argc < 2) die("usage", "bench_cholmod SCENE [section.key=value ...]");
   if (scene_load(&s, argv[1], argc - 2, argv + 2, &st)) die(argv[1], st.msg);
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();   /* failures come back as codes */
   cm.print = 0;
   Model *md = measure_cold(&s, &cm, &T);
@@ -196,7 +196,7 @@ int main(int argc, char **argv)
          T.factor_solve, (T.setup + T.cold) / (T.analyse + T.factor_solve),
          T.rss, T.warm, T.warm_steps, T.grad, T.grad / T.warm, T.residual);
   model_free(md);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   scene_free(&s);
   return 0;
 }
