@@ -17,13 +17,15 @@ INNER   := pdas mprgp psor condense_adjoint objective_grad design_project newton
            plot_text plot_body plot_results \
            scene_keys scene_ini scene_value scene_check scene_shape scene_write \
            output_path output_state output_vtu output_solve output_optimize
+# A header of no module: the index type of CHOLMOD's arrays (paper/fem.nw).
+HEADERS := sparse
 PRIVATE := qp_private opt_private plot_private design_private newton_private scene_private output_private
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
            src/man.sh src/completion.sh
-TANGLED := $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
+TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
 B       := $(if $(filter 1,$(SAN)),build/san,build)
@@ -48,7 +50,7 @@ CC      ?= cc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -Wall -Wextra -pedantic -D_POSIX_C_SOURCE=200809L \
            -I/usr/include/suitesparse -Isrc
-LDLIBS  := -lcholmod -lnlopt -lgsl -lblas -linih -lm
+LDLIBS  := -lcholmod -lsuitesparseconfig -lnlopt -lgsl -lblas -linih -lm
 ifeq ($(SAN),1)
 CFLAGS  += -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
            -fno-omit-frame-pointer
@@ -242,7 +244,9 @@ faults: $(PROGRAM) $(FAULT_SHIM)
 # make bench: the state-solver table, then the performance tables (issue 5;
 # BENCH_NMAX=256 shortens the latter), the optimisation and the whole solve
 # (issue 14: tests/bench/output.sh) against one CHOLMOD factorisation, and
-# the optimisation under each thread setting (issue 26: tests/bench/threads.sh).  bench_cholmod links the modules
+# the optimisation under each thread setting (issue 26: tests/bench/threads.sh), and
+# CHOLMOD's long integers against its ints (tests/bench/cholmod_long.sh), and the
+# coarse-to-fine start of optimize (issue 27: tests/bench/levels.sh).  bench_cholmod links the modules
 # like a test program; walltime times a whole run of the program.
 build/bench/bench_cholmod: tests/bench/bench_cholmod.c $(OBJ)
 	@mkdir -p build/bench
@@ -258,6 +262,8 @@ bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/optimize.sh
 	@sh tests/bench/output.sh
 	@sh tests/bench/threads.sh
+	@sh tests/bench/cholmod_long.sh
+	@sh tests/bench/levels.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of
@@ -339,7 +345,8 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 	noweave -n -indexfrom build/paper/all.defs $< > $@
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
-                       paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex | deps
+                       paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex \
+                       paper/cholmod-long.tex paper/bench-levels.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \

@@ -6,7 +6,7 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 370 "paper/condense.nw"
+#line 393 "paper/condense.nw"
 #define SINGULAR (-1)    /* K is singular (not a Status_code) */
 #line 230 "paper/condense.nw"
 static int cholmod_failed(const cholmod_common *cm, const char *what, Status *st);
@@ -20,7 +20,7 @@ static int condensed_load(Condense *cd, const double *b, Status *st);
 static int alloc_arrays(Condense *cd, Status *st)
 {
   const cholmod_sparse *A = cd->A;
-  size_t nz = (size_t) ((const int *) A->p)[cd->n], nc = (size_t) cd->nk + 1;
+  size_t nz = (size_t) ((const Sparse_index *) A->p)[cd->n], nc = (size_t) cd->nk + 1;
   cd->K = *A;                /* the header: p and i are shared with A */
   cd->K.x = malloc((nz + 1) * sizeof(double));
   cd->K.nzmax = nz, cd->K.stype = -1;
@@ -44,7 +44,7 @@ static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
   size_t n = (size_t) cd->n;
-  int *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
+  Sparse_index *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
   int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
   int postorder = cm->postorder, ok = last && perm;
   if (!ok) {
@@ -53,19 +53,19 @@ static int analyse_contact_last(Condense *cd, Status *st)
   }
   for (int c = 0; c < cd->nk; c++) last[cd->ik[c]] = 1;
   cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
-  ok = ok && cholmod_camd(&cd->K, NULL, 0, last, perm, cm)
-          && (cd->Ls = cholmod_analyze_p(&cd->K, perm, NULL, 0, cm));
+  ok = ok && cholmod_l_camd(&cd->K, NULL, 0, last, perm, cm)
+          && (cd->Ls = cholmod_l_analyze_p(&cd->K, perm, NULL, 0, cm));
   cm->nmethods = nmethods, cm->method[0].ordering = ordering;
   cm->postorder = postorder;
   free(last), free(perm);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
 #line 312 "paper/condense.nw"
-if (!(cd->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
-    || !(cd->Lb = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
+if (!(cd->rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
+    || !(cd->Lb = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
                         "vectors of the solves", st);
-const int *P = cd->Ls->Perm;
+const Sparse_index *P = cd->Ls->Perm;
 for (int t = 0; t < cd->nk; t++)
   if ((cd->tc[t] = cd->at[P[cd->first + t]]) < 0)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
@@ -92,25 +92,44 @@ void condense_free(Condense *cd)
   if (!cd) return;
   free(cd->K.x), free(cd->at), free(cd->act), free(cd->tc);
   free(cd->f), free(cd->y), free(cd->Lcc), free(cd->S), free(cd->M);
-  cholmod_free_factor(&cd->Ls, cd->cm), cholmod_free_factor(&cd->L, cd->cm);
-  cholmod_free_dense(&cd->rhs, cd->cm), cholmod_free_dense(&cd->sol, cd->cm);
-  cholmod_free_dense(&cd->Lb, cd->cm);
-  cholmod_free_dense(&cd->solve_Y, cd->cm), cholmod_free_dense(&cd->solve_E, cd->cm);
+  cholmod_l_free_factor(&cd->Ls, cd->cm), cholmod_l_free_factor(&cd->L, cd->cm);
+  cholmod_l_free_dense(&cd->rhs, cd->cm), cholmod_l_free_dense(&cd->sol, cd->cm);
+  cholmod_l_free_dense(&cd->Lb, cd->cm);
+  cholmod_l_free_dense(&cd->solve_Y, cd->cm), cholmod_l_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
-#line 355 "paper/condense.nw"
+#line 359 "paper/condense.nw"
+/* the name of CHOLMOD's status s (cholmod_core.h) */
+static const char *cholmod_status_name(int s)
+{
+  switch (s) {
+  case CHOLMOD_OK: return "CHOLMOD_OK";
+  case CHOLMOD_NOT_INSTALLED: return "CHOLMOD_NOT_INSTALLED";
+  case CHOLMOD_OUT_OF_MEMORY: return "CHOLMOD_OUT_OF_MEMORY";
+  case CHOLMOD_TOO_LARGE: return "CHOLMOD_TOO_LARGE";
+  case CHOLMOD_INVALID: return "CHOLMOD_INVALID";
+  case CHOLMOD_GPU_PROBLEM: return "CHOLMOD_GPU_PROBLEM";
+  case CHOLMOD_NOT_POSDEF: return "CHOLMOD_NOT_POSDEF";
+  case CHOLMOD_DSMALL: return "CHOLMOD_DSMALL";
+  default: return "unknown";
+  }
+}
+
 /* what failed, with CHOLMOD's status: STATUS_MEMORY when it ran out */
 static int cholmod_failed(const cholmod_common *cm, const char *what,
                           Status *st)
 {
-  if (cm->status == CHOLMOD_OUT_OF_MEMORY)
-    return status_set(st, STATUS_MEMORY, "%s: out of memory", what);
-  if (cm->status == CHOLMOD_TOO_LARGE)
+  int s = cm->status;
+  const char *name = cholmod_status_name(s);
+  if (s == CHOLMOD_OUT_OF_MEMORY)
+    return status_set(st, STATUS_MEMORY, "%s: out of memory (CHOLMOD status "
+                      "%d, %s)", what, s, name);
+  if (s == CHOLMOD_TOO_LARGE)
     return status_set(st, STATUS_MEMORY, "%s: the problem is too large for "
-                      "CHOLMOD's 32-bit integers", what);
-  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d)", what, cm->status);
+                      "CHOLMOD's integers (CHOLMOD status %d, %s)", what, s, name);
+  return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d, %s)", what, s, name);
 }
-#line 391 "paper/condense.nw"
+#line 414 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
    d the diagonal of A; SINGULAR when K is */
 static int condense(Condense *cd, const double *b, const double *d, Status *st)
@@ -119,11 +138,11 @@ static int condense(Condense *cd, const double *b, const double *d, Status *st)
   int print = cm->print, final_ll = cm->final_ll, ok;
   fill_contact_matrix(cd, d);
   cm->print = 0, cm->final_ll = 1;  /* a singular K is our message to give */
-  if (!cd->L) cd->L = cholmod_copy_factor(cd->Ls, cm);
-  ok = cd->L && cholmod_factorize(&cd->K, cd->L, cm) && cm->status >= CHOLMOD_OK;
+  if (!cd->L) cd->L = cholmod_l_copy_factor(cd->Ls, cm);
+  ok = cd->L && cholmod_l_factorize(&cd->K, cd->L, cm) && cm->status >= CHOLMOD_OK;
   cm->print = print, cm->final_ll = final_ll;
   if (!ok || cd->L->minor < cd->L->n) {
-    cholmod_free_factor(&cd->L, cm);     /* the next starts from Ls */
+    cholmod_l_free_factor(&cd->L, cm);     /* the next starts from Ls */
     return ok ? SINGULAR
               : cholmod_failed(cm, "condense: CHOLMOD failed to factorise K", st);
   }
@@ -142,20 +161,20 @@ int condense_factor(Qp_workspace *w, Status *st)
   return code != SINGULAR ? code : qp_not_held(w, st,
     "A is singular even with every bound held", w->nc);
 }
-#line 425 "paper/condense.nw"
+#line 448 "paper/condense.nw"
 /* K = A + diag(A_ii) on the condensed unknowns; the values only */
 static void fill_contact_matrix(Condense *cd, const double *d)
 {
-  const int *Ap = cd->A->p, *Ai = cd->A->i;
+  const Sparse_index *Ap = cd->A->p, *Ai = cd->A->i;
   double *Kx = cd->K.x;
   memcpy(Kx, cd->A->x, (size_t) Ap[cd->n] * sizeof *Kx);
   for (int c = 0; c < cd->nk; c++) {
     int j = cd->ik[c];
-    for (int k = Ap[j]; k < Ap[j + 1]; k++)
+    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++)
       if (Ai[k] == j) Kx[k] += d[j];
   }
 }
-#line 445 "paper/condense.nw"
+#line 468 "paper/condense.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Condense *cd)
 {
@@ -165,24 +184,24 @@ static void read_trailing_block(Condense *cd)
   memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
   if (L->is_super) {
     
-#line 464 "paper/condense.nw"
-const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
+#line 487 "paper/condense.nw"
+const Sparse_index *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
-  int k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
-  for (int k = k1 > first ? k1 : first; k < k2; k++)
-    for (int q = k - k1; q < nrow; q++)
+  Sparse_index k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
+  for (Sparse_index k = k1 > first ? k1 : first; k < k2; k++)
+    for (Sparse_index q = k - k1; q < nrow; q++)
       cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 454 "paper/condense.nw"
+#line 477 "paper/condense.nw"
   } else {
-    const int *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    const Sparse_index *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < cd->n; k++)
-      for (int q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
+      for (Sparse_index q = Lp[k]; q < Lp[k] + Lnz[k]; q++)
         cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
   }
 }
-#line 477 "paper/condense.nw"
+#line 500 "paper/condense.nw"
 static void schur_complement(Condense *cd, const double *d)
 {
   int nc = cd->nk;
@@ -197,7 +216,7 @@ static void schur_complement(Condense *cd, const double *d)
       cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
     }
 }
-#line 496 "paper/condense.nw"
+#line 519 "paper/condense.nw"
 static int condensed_load(Condense *cd, const double *b, Status *st)
 {
   memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
@@ -215,18 +234,18 @@ static int condensed_load(Condense *cd, const double *b, Status *st)
   }
   return STATUS_OK;
 }
-#line 517 "paper/condense.nw"
+#line 540 "paper/condense.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
 static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
 {
   cholmod_common *cm = cd->cm;
-  if (!cholmod_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
-      || !cholmod_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
+  if (!cholmod_l_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
+      || !cholmod_l_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
     return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
   return STATUS_OK;
 }
-#line 546 "paper/condense.nw"
+#line 569 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -237,13 +256,13 @@ void condense_forces(Qp_workspace *w)
     w->T[c] = s;
   }
 }
-#line 560 "paper/condense.nw"
+#line 583 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 572 "paper/condense.nw"
+#line 595 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -257,12 +276,12 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 565 "paper/condense.nw"
+#line 588 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
-#line 592 "paper/condense.nw"
+#line 615 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -304,7 +323,7 @@ void condense_states_at_x(Qp_workspace *w)
   condense_predict(w);
   cd->stepped = 1;
 }
-#line 654 "paper/condense.nw"
+#line 677 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -322,7 +341,7 @@ int condense_expand(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 679 "paper/condense.nw"
+#line 702 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -337,7 +356,7 @@ int condense_refine(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 704 "paper/condense.nw"
+#line 727 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -349,7 +368,7 @@ int condense_end(Qp_workspace *w, Status *st)
   if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
   return code;
 }
-#line 726 "paper/condense.nw"
+#line 749 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -358,7 +377,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 746 "paper/condense.nw"
+#line 769 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -372,7 +391,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 766 "paper/condense.nw"
+#line 789 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -395,11 +414,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 759 "paper/condense.nw"
+#line 782 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 795 "paper/condense.nw"
+#line 818 "paper/condense.nw"
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
 {
   Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
@@ -423,7 +442,7 @@ static int schur_apart(const Qp_workspace *w, double shift, double *S,
   condense_free(cd);
   return STATUS_OK;
 }
-#line 832 "paper/condense.nw"
+#line 855 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

@@ -3,7 +3,7 @@
 #define CONTACTOPT_CONDENSE_H
 /* The state problem condensed onto its contact unknowns: qp.c, pdas.c,
    mprgp.c and condense.c include this header, no other file does. */
-#include <cholmod.h>
+#include "sparse.h"
 #include "qp.h"
 
 #line 116 "paper/condense.nw"
@@ -77,7 +77,7 @@ int condense_end(Qp_workspace *w, Status *st);
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
 
-#line 823 "paper/condense.nw"
+#line 846 "paper/condense.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);

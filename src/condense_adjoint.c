@@ -1,11 +1,11 @@
-#line 869 "paper/condense.nw"
+#line 892 "paper/condense.nw"
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
 
-#line 882 "paper/condense.nw"
+#line 905 "paper/condense.nw"
 /* held[k] = 1 where condensed unknown k is held: a bound touched, or
    (friction) sticking */
 static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
@@ -14,13 +14,13 @@ static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
     held[k] = k < w->nc ? !qp_is_free(w, w->ik[k])
                         : cd->act[k] == CONDENSE_HELD;
 }
-#line 895 "paper/condense.nw"
+#line 918 "paper/condense.nw"
 /* z = L \ P g in cd->rhs; r (nk, ik order) = L_cc z_c */
 static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
 {
   memcpy(cd->rhs->x, g, (size_t) cd->n * sizeof *g);
-  if (!cholmod_solve2(CHOLMOD_P, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
-      || !cholmod_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
+  if (!cholmod_l_solve2(CHOLMOD_P, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
+      || !cholmod_l_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
     return status_set(st, STATUS_SYSTEM, "adjoint: CHOLMOD failed to solve "
                       "with the factor of K (status %d)", cd->cm->status);
   const double *z = cd->rhs->x;
@@ -31,7 +31,7 @@ static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
   }
   return STATUS_OK;
 }
-#line 916 "paper/condense.nw"
+#line 939 "paper/condense.nw"
 /* y (nk) = 0 on the held, S_FF \ r_F on the others */
 static int adjoint_condensed(const Condense *cd, const char *held,
                              const double *r, double *y, Status *st)
@@ -61,7 +61,7 @@ static int adjoint_condensed(const Condense *cd, const char *held,
   free(fr), free(SFF);
   return code;
 }
-#line 948 "paper/condense.nw"
+#line 971 "paper/condense.nw"
 int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
                char *held, Status *st)
 {
@@ -84,8 +84,8 @@ int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
       for (int u = t; u < nk; u++) s += cd->Lcc[(size_t) u * nk + t] * y[cd->tc[u]];
       v[cd->first + t] = s;
     }
-    if (!cholmod_solve2(CHOLMOD_Lt, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
-        || !cholmod_solve2(CHOLMOD_Pt, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
+    if (!cholmod_l_solve2(CHOLMOD_Lt, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
+        || !cholmod_l_solve2(CHOLMOD_Pt, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
       code = status_set(st, STATUS_SYSTEM, "adjoint: CHOLMOD failed to solve "
                         "with the factor of K (status %d)", cd->cm->status);
   }

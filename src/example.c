@@ -19,7 +19,7 @@ int main(int argc, char **argv)
   Opt_report rep;
   if (argc != 2) { fprintf(stderr, "usage: example SCENE\n"); return STATUS_INPUT; }
   if (scene_load(&s, argv[1], 0, NULL, &st)) { fprintf(stderr, "%s\n", st.msg); return st.code; }
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   cm.print = 0;                       /* failures come back as a Status */
   gsl_set_error_handler_off();
   Design_set B = design_set(&s.problem);
@@ -37,7 +37,7 @@ int main(int argc, char **argv)
               rep.stop_reason);
   free(X);
   model_free(md);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   scene_free(&s);
   return rc;
 }

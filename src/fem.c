@@ -1,9 +1,9 @@
-#line 114 "paper/fem.nw"
+#line 136 "paper/fem.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
-#line 126 "paper/fem.nw"
+#line 148 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
@@ -25,7 +25,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 153 "paper/fem.nw"
+#line 175 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -38,10 +38,10 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 147 "paper/fem.nw"
+#line 169 "paper/fem.nw"
   return d;
 }
-#line 169 "paper/fem.nw"
+#line 191 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -54,7 +54,7 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
     if (kind == BC_CLAMPED || normal == 1) held[2 * k + 1] = -1;
   }
 }
-#line 185 "paper/fem.nw"
+#line 207 "paper/fem.nw"
 void fem_dofs_free(Dofs *d)
 {
   if (!d) return;
@@ -65,7 +65,7 @@ void fem_dofs_free(Dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 213 "paper/fem.nw"
+#line 235 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -80,7 +80,7 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 275 "paper/fem.nw"
+#line 297 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -98,7 +98,7 @@ void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 296 "paper/fem.nw"
+#line 318 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -108,7 +108,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 309 "paper/fem.nw"
+#line 331 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -120,7 +120,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 327 "paper/fem.nw"
+#line 349 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -140,7 +140,7 @@ void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 355 "paper/fem.nw"
+#line 377 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -152,13 +152,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 369 "paper/fem.nw"
+#line 391 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 378 "paper/fem.nw"
+#line 400 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -168,9 +168,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 374 "paper/fem.nw"
+#line 396 "paper/fem.nw"
 }
-#line 431 "paper/fem.nw"
+#line 453 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -186,19 +186,19 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 453 "paper/fem.nw"
+#line 475 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 446 "paper/fem.nw"
+#line 468 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 461 "paper/fem.nw"
+#line 483 "paper/fem.nw"
 static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
-                      int *rows)
+                      Sparse_index *rows)
 {
   int n = 0;
   for (int q = adj_p[b]; q < adj_p[b + 1]; q++)
@@ -213,18 +213,18 @@ static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
 static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
                           void *Ap, void *Ai)
 {
-  int *p = Ap, *i = Ai;
+  Sparse_index *p = Ap, *i = Ai;
   size_t nnz = 0;
   for (int k = 0, col = 0; k < d->ndof; k++)
     if (d->unknown[k] >= 0) {
-      if (p) p[col] = (int) nnz;
+      if (p) p[col] = (Sparse_index) nnz;
       nnz += fem_column(d, adj_p, adj, k / 2, i ? i + nnz : NULL);
-      if (p) p[++col] = (int) nnz;
+      if (p) p[++col] = (Sparse_index) nnz;
     }
   return nnz;
 }
 
-#line 409 "paper/fem.nw"
+#line 431 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -232,14 +232,14 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
   cholmod_sparse *A = NULL;
   if (!fem_neighbours(m, &adj_p, &adj)) {
     size_t nnz = fem_pattern(d, adj_p, adj, NULL, NULL);
-    A = cholmod_allocate_sparse(d->n, d->n, nnz, 1, 1, 0, CHOLMOD_REAL, cm);
+    A = cholmod_l_allocate_sparse(d->n, d->n, nnz, 1, 1, 0, CHOLMOD_REAL, cm);
     if (A) fem_pattern(d, adj_p, adj, A->p, A->i);
   }
   free(adj_p), free(adj);
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 491 "paper/fem.nw"
+#line 513 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -248,45 +248,45 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 504 "paper/fem.nw"
+#line 526 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
-static int fem_entry(const cholmod_sparse *A, int r, int c)
+static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
-  const int *Ap = A->p, *Ai = A->i;
-  int lo = Ap[c], hi = Ap[c + 1] - 1;
+  const Sparse_index *Ap = A->p, *Ai = A->i;
+  Sparse_index lo = Ap[c], hi = Ap[c + 1] - 1;
   while (lo < hi) {
-    int mid = (lo + hi) / 2;
+    Sparse_index mid = (lo + hi) / 2;
     if (Ai[mid] < r) lo = mid + 1; else hi = mid;
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 530 "paper/fem.nw"
+#line 552 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
 static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
                          const int gr[2], const int gc[2])
 {
-  const int *Ap = A->p, *Ai = A->i;
+  const Sparse_index *Ap = A->p, *Ai = A->i;
   double *Ax = A->x;
   int r1 = gr[0] >= 0 ? 0 : 1, c1 = gc[0] >= 0 ? 0 : 1;
   if (gr[r1] < 0 || gc[c1] < 0) return 0;          /* the vertex is held */
-  int first = fem_entry(A, gr[r1], gc[c1]);
+  Sparse_index first = fem_entry(A, gr[r1], gc[c1]);
   if (first < 0) return -1;
   for (int c = c1; c < 2; c++)
     for (int r = r1; r < 2; r++) {
       if (gc[c] < 0 || gr[r] < 0) continue;
-      int q = first - Ap[gc[c1]] + Ap[gc[c]] + gr[r] - gr[r1];
+      Sparse_index q = first - Ap[gc[c1]] + Ap[gc[c]] + gr[r] - gr[r1];
       if (q >= Ap[gc[c] + 1] || Ai[q] != gr[r]) return -1;
       Ax[q] += K[r0 + r][c0 + c];
     }
   return 0;
 }
-#line 556 "paper/fem.nw"
+#line 578 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
-  memset(A->x, 0, ((int *) A->p)[A->ncol] * sizeof(double));
+  memset(A->x, 0, (size_t) ((Sparse_index *) A->p)[A->ncol] * sizeof(double));
   for (int t = 0; t < m->ntri; t++) {
     double xy[6], K[6][6];
     int g[6];
@@ -294,17 +294,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 573 "paper/fem.nw"
+#line 595 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 567 "paper/fem.nw"
+#line 589 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 589 "paper/fem.nw"
+#line 611 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b);
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
@@ -318,14 +318,14 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], b);
 }
-#line 606 "paper/fem.nw"
+#line 628 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
                           double *b)
 {
   for (int c = 0; c < 2; c++)
     if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
 }
-#line 615 "paper/fem.nw"
+#line 637 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
                                double *b)
 {
@@ -333,7 +333,7 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
 }
-#line 629 "paper/fem.nw"
+#line 651 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
                              const Side *load, double *b)
 {
@@ -351,20 +351,20 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
   }
 }
-#line 678 "paper/fem.nw"
+#line 700 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 692 "paper/fem.nw"
+#line 714 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 684 "paper/fem.nw"
+#line 706 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -1,7 +1,7 @@
-#line 55 "paper/fem.nw"
+#line 77 "paper/fem.nw"
 #ifndef CONTACTOPT_FEM_H
 #define CONTACTOPT_FEM_H
-#include <cholmod.h>
+#include "sparse.h"
 #include "status.h"
 #include "problem.h"
 #include "mesh.h"
@@ -22,11 +22,11 @@ typedef struct {
 /* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
 typedef struct { double D[3][3]; } Hooke;
 
-#line 83 "paper/fem.nw"
+#line 105 "paper/fem.nw"
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 254 "paper/fem.nw"
+#line 276 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -43,7 +43,7 @@ double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
                            int t, long double e[3]);
 /* s = D e, the stress (s11, s22, s12) of the strain e [Pa when E is] */
 void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]);
-#line 87 "paper/fem.nw"
+#line 109 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
@@ -54,5 +54,5 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
-#line 79 "paper/fem.nw"
+#line 101 "paper/fem.nw"
 #endif

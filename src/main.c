@@ -289,7 +289,22 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 761 "paper/main.nw"
+#line 758 "paper/main.nw"
+/* X = the coarse-to-fine start when the levels of the run are > 1 */
+static int optimize_coarse(Run *r, double *X, Status *st)
+{
+  int levels = opt_levels(&r->s.problem, &r->s.optimizer), N = r->s.problem.N;
+  Opt_report c;
+  if (levels < 2) return STATUS_OK;
+  int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
+                            levels, X, r->md->cm, &c, st);
+  if (!rc)
+    printf("%s: coarse to fine: N = %d .. %d in %d evaluations, %.2f s; "
+           "N = %d starts from their optimum\n", r->s.path, N >> (levels - 1),
+           N / 2, c.evaluations, c.seconds, N);
+  return rc;
+}
+#line 781 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -313,6 +328,7 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved,
                                               r->s.optimizer.objective.q, &start, st))
+        && !(rc = optimize_coarse(r, X, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
@@ -344,7 +360,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 825 "paper/main.nw"
+#line 846 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -363,7 +379,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 855 "paper/main.nw"
+#line 876 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -379,7 +395,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 883 "paper/main.nw"
+#line 904 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },
@@ -407,7 +423,7 @@ int main(int argc, char **argv)
   }
   if (help) { fputs(c->usage, stdout); return STATUS_OK; }
   cholmod_common cm;
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   cm.print = 0;             /* the library reports through Status, not stderr */
   gsl_set_error_handler_off();  /* likewise GSL: its codes are checked */
   int rc = args_read(argc, argv, &a, &st);
@@ -419,6 +435,6 @@ int main(int argc, char **argv)
                     "checks no gradient", c->name);
   if (!rc) rc = run_command(&a, c, &cm, &st);
   if (rc) fprintf(stderr, "contactopt: %s\n", st.msg);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   return rc;
 }

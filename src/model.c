@@ -161,7 +161,7 @@ void model_free(Model *md)
 {
   if (!md) return;
   qp_free(md->solver);
-  cholmod_free_sparse(&md->A, md->cm);
+  cholmod_l_free_sparse(&md->A, md->cm);
   mesh_free(md->mesh);
   fem_dofs_free(md->dofs);
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);

@@ -1,7 +1,7 @@
 #line 39 "paper/model.nw"
 #ifndef CONTACTOPT_MODEL_H
 #define CONTACTOPT_MODEL_H
-#include <cholmod.h>
+#include "sparse.h"
 #include "status.h"
 #include "problem.h"
 #include "mesh.h"

@@ -54,18 +54,18 @@ void mprgp_free(Qp_workspace *w)
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
-  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
+  const Sparse_index *Ap = w->qp->A->p, *Ai = w->qp->A->i;
   const double *Ax = w->qp->A->x;
   double *z = w->mprgp.z, om = w->opt.omega;
   for (int i = 0; i < w->n; i++) {          /* (D + omega L) y = phi */
     double s = w->g[i];
-    for (int k = Ap[i]; k < Ap[i + 1] && Ai[k] < i; k++) s -= om * Ax[k] * z[Ai[k]];
+    for (Sparse_index k = Ap[i]; k < Ap[i + 1] && Ai[k] < i; k++) s -= om * Ax[k] * z[Ai[k]];
     z[i] = qp_is_free(w, i) ? s / w->d[i] : 0;
   }
   for (int i = w->n - 1; i >= 0; i--) {     /* (D + omega U) z = D y */
     double s = 0;
     if (!qp_is_free(w, i)) continue;
-    for (int k = Ap[i + 1] - 1; k >= Ap[i] && Ai[k] > i; k--) s += Ax[k] * z[Ai[k]];
+    for (Sparse_index k = Ap[i + 1] - 1; k >= Ap[i] && Ai[k] > i; k--) s += Ax[k] * z[Ai[k]];
     z[i] -= om * s / w->d[i];
   }
 }

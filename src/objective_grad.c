@@ -10,7 +10,7 @@ static void adjoint_rhs(const Model *md, const Objective *o, const double *AQ,
                         const double *dT, double *g)
 {
   const Dofs *d = md->dofs;
-  const int *Ap = md->A->p, *Ai = md->A->i;
+  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int i = 0; i < d->n; i++)
     g[i] = o->kind == OBJECTIVE_ENERGY ? AQ[i] - md->b[i]
@@ -22,7 +22,7 @@ static void adjoint_rhs(const Model *md, const Objective *o, const double *AQ,
     }
   for (int c = 0; c < d->nc; c++)
     if (dT[c] != 0)
-      for (int k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
+      for (Sparse_index k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
         g[Ai[k]] += Ax[k] * dT[c];
 }
 #line 317 "paper/objective.nw"
@@ -30,13 +30,13 @@ static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
   const Dofs *d = md->dofs;
-  const int *Ap = md->A->p, *Ai = md->A->i;
+  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int c = 0; c < d->nc; c++) {
     if (!held[c]) continue;
     int j = d->contact[c];
     double Al = 0;
-    for (int k = Ap[j]; k < Ap[j + 1]; k++) Al += Ax[k] * lam[Ai[k]];
+    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) Al += Ax[k] * lam[Ai[k]];
     G[d->contact_col[c]] -= g[j] - Al;
   }
 }

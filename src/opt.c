@@ -1,11 +1,11 @@
-#line 341 "paper/opt.nw"
+#line 353 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 355 "paper/opt.nw"
+#line 367 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -13,7 +13,7 @@ Opt_options opt_options_default(Opt_method method)
 {
   return (Opt_options) { method, method == OPT_PROJGRAD ? OPT_METRIC_EUCLIDEAN
                                                        : OPT_METRIC_SCHUR,
-                         1e-6, 200, objective_default() };
+                         1e-6, 200, objective_default(), 0 };
 }
 
 const char *opt_method_name(Opt_method m)
@@ -25,7 +25,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 413 "paper/opt.nw"
+#line 425 "paper/opt.nw"
 /* the rounding of another objective than E: relative to |J| + 1 (the
    pressure spread is a difference from 1) */
 #define OPT_J_ROUNDING (64 * DBL_EPSILON)
@@ -54,7 +54,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 476 "paper/opt.nw"
+#line 488 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -63,7 +63,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 487 "paper/opt.nw"
+#line 499 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -76,7 +76,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 520 "paper/opt.nw"
+#line 532 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -97,7 +97,7 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1727 "paper/opt.nw"
+#line 1739 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -123,11 +123,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1766 "paper/opt.nw"
+#line 1778 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1752 "paper/opt.nw"
+#line 1764 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -138,10 +138,76 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1783 "paper/opt.nw"
+#line 1795 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
+}
+#line 1830 "paper/opt.nw"
+/* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
+   X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
+void opt_interpolate(double *X, int Nc)
+{
+  for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
+  for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
+}
+#line 1844 "paper/opt.nw"
+#define LEVELS_FROM 256       /* the least N that the default refines to */
+#define LEVELS_COARSEST 64    /* the least N of a default coarse level */
+int opt_levels(const Problem *p, const Opt_options *o)
+{
+  int want = o->levels, n = p->N, m = p->M, r = p->R, l = 1;
+  if (want == 0 && n < LEVELS_FROM) return 1;
+  while ((want ? l < want : n / 2 >= LEVELS_COARSEST)
+         && n % 2 == 0 && m % 2 == 0 && r % 2 == 0)
+    n /= 2, m /= 2, r /= 2, l++;
+  return l;
+}
+#line 1861 "paper/opt.nw"
+static int opt_level(const Problem *q, const Qp_options *solver,
+                     const Opt_options *o, double *Y, cholmod_common *cm,
+                     Opt_report *coarse, Status *st);
+int opt_coarse_start(const Problem *p, const Qp_options *solver,
+                     const Opt_options *o, int levels, double *X,
+                     cholmod_common *cm, Opt_report *coarse, Status *st)
+{
+  int f = 1 << (levels - 1), rc = STATUS_OK;
+  Problem q = *p;
+  q.N /= f, q.M /= f, q.R /= f;
+  double *Y = malloc(2 * ((size_t) p->N + 1) * sizeof *Y);
+  memset(coarse, 0, sizeof *coarse);
+  if (!Y) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
+  for (int i = 0; i <= q.N; i++) Y[i] = X[i * f];
+  for (int l = 1; !rc && l < levels; l++) {
+    rc = opt_level(&q, solver, o, Y, cm, coarse, st);
+    opt_interpolate(Y, q.N);
+    q.N *= 2, q.M *= 2, q.R *= 2;
+  }
+  Design_set B = design_set(p);
+  double v, moved;
+  if (!rc) rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, st);
+  free(Y);
+  return rc;
+}
+#line 1890 "paper/opt.nw"
+static int opt_level(const Problem *q, const Qp_options *solver,
+                     const Opt_options *o, double *Y, cholmod_common *cm,
+                     Opt_report *coarse, Status *st)
+{
+  Design_set B = design_set(q);
+  Opt_report rep;
+  double v, moved, *Z = malloc(((size_t) q->N + 1) * sizeof *Z);
+  Model *md = Z ? model_new(q, solver, cm, st) : NULL;
+  int rc = !Z ? status_set(st, STATUS_MEMORY, "optimiser: out of memory")
+         : !md ? (int) st->code : design_feasible_start(&B, Y, 1e-12, Z, &v, &moved, st);
+  if (!rc) memcpy(Y, Z, ((size_t) q->N + 1) * sizeof *Y);
+  if (!rc && !(rc = opt_minimize(md, &B, o, Y, NULL, NULL, &rep, st))) {
+    coarse->evaluations += rep.evaluations, coarse->iterations += rep.iterations;
+    coarse->seconds += rep.seconds;
+  }
+  model_free(md);
+  free(Z);
+  return rc;
 }

@@ -20,9 +20,11 @@ typedef struct {
   int max_iter;           /* iteration limit */
   Objective objective;    /* what it minimises ([objective]); newton: the
                              energy only */
+  int levels;             /* meshes of the coarse-to-fine start
+                             (sec:levels): 1 none, 0 chosen by N */
 } Opt_options;
 
-#line 201 "paper/opt.nw"
+#line 203 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double energy;          /* E at the iterate */
@@ -36,7 +38,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 217 "paper/opt.nw"
+#line 219 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -53,7 +55,7 @@ typedef struct {
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
 } Opt_report;
 
-#line 235 "paper/opt.nw"
+#line 237 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);
@@ -64,6 +66,16 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  Status *st);
 /* bytes the optimiser o needs beyond its model, for N + 1 design nodes */
 double opt_memory(const Opt_options *o, int N);
+/* X (2 Nc + 1 entries) = X (Nc + 1) interpolated linearly, in place */
+void opt_interpolate(double *X, int Nc);
+/* the meshes of o's coarse-to-fine start for p (sec:levels), >= 1 */
+int opt_levels(const Problem *p, const Opt_options *o);
+/* X (p->N + 1, in B) = the optimum of the levels - 1 coarser meshes,
+   interpolated onto p's nodes, the first started from X; their work in
+   coarse (evaluations, iterations, seconds) */
+int opt_coarse_start(const Problem *p, const Qp_options *solver,
+                     const Opt_options *o, int levels, double *X,
+                     cholmod_common *cm, Opt_report *coarse, Status *st);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);

@@ -46,7 +46,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   snprintf(tmp, sizeof tmp, "%s.partial", path);
   FILE *f = fopen(tmp, "w");
   if (!f) return output_errno(st, errno, path, "cannot write");
-  int ok = cholmod_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
+  int ok = cholmod_l_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
   int memory = !ok && md->cm->status == CHOLMOD_OUT_OF_MEMORY;
   ok = !ferror(f) && ok;    /* CHOLMOD does not check every fprintf */
   ok = !fclose(f) && ok;

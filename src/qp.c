@@ -19,12 +19,12 @@ double qp_kkt_eval(const Qp *qp, double normA, const double *x,
                    const double *g, double *T)
 {
   const double *b = qp->b;
-  const int *Ap = qp->A->p;
+  const Sparse_index *Ap = qp->A->p;
   double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
   int m = 0;                               /* the longest column of A */
   for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
     double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
-    if (Ap[j + 1] - Ap[j] > m) m = Ap[j + 1] - Ap[j];
+    if (Ap[j + 1] - Ap[j] > m) m = (int) (Ap[j + 1] - Ap[j]);
     bb += b[j] * b[j];
     axax += axj * axj;
     xx += x[j] * x[j];
@@ -66,12 +66,12 @@ double qp_kkt(const Qp *qp, const double *x, double *T)
 /* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
 static double qp_norm_bound(const cholmod_sparse *A)
 {
-  const int *Ap = A->p;
+  const Sparse_index *Ap = A->p;
   const double *Ax = A->x;
   double m = 0;
   for (int j = 0; j < (int) A->ncol; j++) {
     double sum = 0;
-    for (int k = Ap[j]; k < Ap[j + 1]; k++) sum += fabs(Ax[k]);
+    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) sum += fabs(Ax[k]);
     m = fmax(m, sum);
   }
   return m;
@@ -118,10 +118,10 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
     return status_set(st, STATUS_INPUT, "qp_alloc: a NULL argument");
   const cholmod_sparse *A = qp->A;
   if (A->nrow != A->ncol || A->ncol > INT_MAX || A->stype != 0
-      || A->itype != CHOLMOD_INT || A->xtype != CHOLMOD_REAL
+      || A->itype != CHOLMOD_LONG || A->xtype != CHOLMOD_REAL
       || A->dtype != CHOLMOD_DOUBLE || !A->packed || !A->sorted)
     return status_set(st, STATUS_INPUT, "qp_alloc: A must be square, real "
-                      "double with int indices, both triangles stored "
+                      "double with long indices (cholmod_l_), both triangles stored "
                       "(stype 0), sorted and packed");
   if (qp->nc < 0 || qp->nc > (int) A->ncol)
     return status_set(st, STATUS_INPUT, "qp_alloc: nc = %d is not in [0, %d]",
@@ -183,9 +183,9 @@ static int alloc_common(Qp_workspace *w, Status *st)
                       w->n);
   int m = 0;
   for (int i = 0; i < w->n; i++) {
-    const int *Ap = w->qp->A->p;
+    const Sparse_index *Ap = w->qp->A->p;
     w->bnd[i] = -1;
-    if (Ap[i + 1] - Ap[i] > m) m = Ap[i + 1] - Ap[i];
+    if (Ap[i + 1] - Ap[i] > m) m = (int) (Ap[i + 1] - Ap[i]);
   }
   w->gamma = qp_gamma(m + 2);    /* as qp_kkt_eval finds it */
   for (int k = 0; k < w->nk; k++) {
@@ -201,13 +201,13 @@ static int alloc_common(Qp_workspace *w, Status *st)
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
-  const int *Ap = w->qp->A->p, *Ai = w->qp->A->i;
-  int *next = malloc(((size_t) w->n + 1) * sizeof *next);
+  const Sparse_index *Ap = w->qp->A->p, *Ai = w->qp->A->i;
+  Sparse_index *next = malloc(((size_t) w->n + 1) * sizeof *next);
   int oom = !next, bad = oom;
   for (int i = 0; !bad && i < w->n; i++) next[i] = Ap[i];
   for (int j = 0; !bad && j < w->n; j++)
-    for (int k = Ap[j]; !bad && k < Ap[j + 1]; k++) {
-      int i = Ai[k];
+    for (Sparse_index k = Ap[j]; !bad && k < Ap[j + 1]; k++) {
+      Sparse_index i = Ai[k];
       bad = next[i] >= Ap[i + 1] || Ai[next[i]++] != j;
     }
   for (int i = 0; !bad && i < w->n; i++) bad = next[i] != Ap[i + 1];
@@ -233,15 +233,15 @@ void qp_free(Qp_workspace *w)
 static int read_matrix(Qp_workspace *w, Status *st)
 {
   const cholmod_sparse *A = w->qp->A;
-  const int *Ap = A->p, *Ai = A->i;
+  const Sparse_index *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x;
   w->normA = 0;
   for (int j = 0; j < w->n; j++) {
     double sum = 0;
     w->d[j] = 0;
-    for (int k = Ap[j]; k < Ap[j + 1]; k++) {
+    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) {
       if (!isfinite(Ax[k])) return status_set(st, STATUS_NUMERIC,
-        "qp_set: A(%d,%d) = %g is not finite", Ai[k], j, Ax[k]);
+        "qp_set: A(%d,%d) = %g is not finite", (int) Ai[k], j, Ax[k]);
       sum += fabs(Ax[k]);
       if (Ai[k] == j) w->d[j] = Ax[k];
     }

@@ -1,7 +1,7 @@
 #line 58 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_H
 #define CONTACTOPT_QP_H
-#include <cholmod.h>
+#include "sparse.h"
 #include "status.h"
 
 #line 72 "paper/qp.nw"

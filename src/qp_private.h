@@ -125,10 +125,10 @@ static inline double qp_kkt_combine(double rf, double tn, double inf,
 static inline double qp_row_dot(const cholmod_sparse *A, int j,
                                 const double *x)
 {
-  const int *Ap = A->p, *Ai = A->i;
+  const Sparse_index *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x;
   double s = 0;
-  for (int k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
+  for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) s += Ax[k] * x[Ai[k]];
   return s;
 }
 

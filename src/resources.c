@@ -1,18 +1,17 @@
 #line 29 "paper/resources.nw"
-#include <limits.h>
 #include <math.h>
 #include <time.h>
 #include <unistd.h>
 #include <sys/resource.h>
 #include "resources.h"
-#line 40 "paper/resources.nw"
+#line 39 "paper/resources.nw"
 double resources_clock(void)
 {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
-#line 64 "paper/resources.nw"
+#line 63 "paper/resources.nw"
 /* the unknowns of the mesh, and the entries of the sparse factor of K */
 static double resources_unknowns(const Problem *p)
 {
@@ -31,14 +30,10 @@ double resources_memory(const Problem *p)
   double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
   return 3 * 8 * nk * nk + 12 * resources_factor_entries(p) + 400 * n;
 }
-#line 96 "paper/resources.nw"
+#line 97 "paper/resources.nw"
 int resources_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
-  double need = resources_memory(p) + extra, entries = resources_factor_entries(p);
-  if (entries > INT_MAX)
-    return status_set(st, STATUS_MEMORY, "%s: N = %d (%d rows of cells) needs a "
-                      "factor of about %.3g entries, more than CHOLMOD's 32-bit "
-                      "integers index (%d)", origin, p->N, p->M + p->R, entries, INT_MAX);
+  double need = resources_memory(p) + extra;
   double have = (double) sysconf(_SC_PHYS_PAGES) * (double) sysconf(_SC_PAGESIZE);
   struct rlimit lim;
   if (!getrlimit(RLIMIT_AS, &lim) && lim.rlim_cur != RLIM_INFINITY)

@@ -9,6 +9,6 @@ double resources_clock(void);
    allocated (see below) */
 double resources_memory(const Problem *p);
 /* STATUS_MEMORY, naming origin, if the model of p and extra bytes exceed
-   the memory this process may use, or its factor CHOLMOD's integers */
+   the memory this process may use */
 int resources_fits(const Problem *p, double extra, const char *origin, Status *st);
 #endif

@@ -33,7 +33,7 @@ static inline void close_case(Case *c)
 {
   model_free(c->md);
   if (c->s.alpha0) scene_free(&c->s);
-  cholmod_finish(&c->cm);
+  cholmod_l_finish(&c->cm);
 }
 
 static inline double max_abs(const double *v, int n)

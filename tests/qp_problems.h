@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <cholmod.h>
+#include "sparse.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include "check.h"
@@ -52,23 +52,23 @@ static inline Qp_problem *problem_new(const char *name, int n, int nc)
 static inline void problem_finish(Qp_problem *P)
 {
   int n = P->n, k = 0;
-  cholmod_triplet *t = cholmod_allocate_triplet(n, n, (size_t) n * n, 0,
+  cholmod_triplet *t = cholmod_l_allocate_triplet(n, n, (size_t) n * n, 0,
                                                 CHOLMOD_REAL, &cm);
-  int *ti = t->i, *tj = t->j;
+  Sparse_index *ti = t->i, *tj = t->j;
   double *tx = t->x;
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++)
       if (P->D[i * n + j] != 0 || i == j)
         ti[k] = i, tj[k] = j, tx[k] = P->D[i * n + j], k++;
   t->nnz = k;
-  P->A = cholmod_triplet_to_sparse(t, k, &cm);
-  cholmod_free_triplet(&t, &cm);
+  P->A = cholmod_l_triplet_to_sparse(t, k, &cm);
+  cholmod_l_free_triplet(&t, &cm);
   P->qp = (Qp) { P->A, P->b, P->nc, P->ic, P->lo, 0, NULL, NULL, 0 };
 }
 
 static inline void problem_free(Qp_problem *P)
 {
-  cholmod_free_sparse(&P->A, &cm);
+  cholmod_l_free_sparse(&P->A, &cm);
   free(P->D), free(P->b), free(P->lo), free(P->ic), free(P);
 }
 
@@ -355,7 +355,7 @@ static inline void check_solvers(Qp_problem *P[6], int m)
 /* A and b times s leave x and the iteration count of method m unchanged */
 static inline void check_scaling(Qp_problem *P, int m)
 {
-  int n = P->n, nz = ((int *) P->A->p)[n];
+  int n = P->n, nz = ((Sparse_index *) P->A->p)[n];
   double *x0 = malloc(n * sizeof *x0), *x = malloc(n * sizeof *x);
   double *Ax0 = malloc(nz * sizeof *Ax0), *b0 = malloc(n * sizeof *b0);
   double *Ax = P->A->x, scales[2] = { 2.15e11, 1e-9 };
@@ -379,7 +379,7 @@ static inline void check_scaling(Qp_problem *P, int m)
    agrees with a cold solve in a fresh one */
 static inline void check_warm(Qp_problem *P, int m)
 {
-  int n = P->n, nz = ((int *) P->A->p)[n];
+  int n = P->n, nz = ((Sparse_index *) P->A->p)[n];
   double *x = malloc(n * sizeof *x), *x2 = malloc(n * sizeof *x2);
   double *x3 = malloc(n * sizeof *x3), *Ax = P->A->x;
   double *Ax0 = malloc(nz * sizeof *Ax0), *b0 = malloc(n * sizeof *b0);
@@ -394,8 +394,8 @@ static inline void check_warm(Qp_problem *P, int m)
         "%s %s: warm start from the solution: %d iterations (cold: %d)",
         P->name, names[m], r2.iterations, r1.iterations);
   for (int j = 0; j < n; j++)            /* stiffer diagonal, more load */
-    for (int k = ((int *) P->A->p)[j]; k < ((int *) P->A->p)[j + 1]; k++)
-      if (((int *) P->A->i)[k] == j) Ax[k] *= 1.25;
+    for (Sparse_index k = ((Sparse_index *) P->A->p)[j]; k < ((Sparse_index *) P->A->p)[j + 1]; k++)
+      if (((Sparse_index *) P->A->i)[k] == j) Ax[k] *= 1.25;
   for (int i = 0; i < n; i++) P->b[i] *= 1.5;
   code = qp_solve(w, x, x2, NULL, &r2, &st);
   Run r3 = run(P, o, NULL, x3, NULL);

@@ -2,7 +2,7 @@
 #ifndef CONTACTOPT_TEST_SETUP_H
 #define CONTACTOPT_TEST_SETUP_H
 #include <stdio.h>
-#include <cholmod.h>
+#include "sparse.h"
 #include <gsl/gsl_errno.h>
 #include "scene.h"
 
@@ -10,7 +10,7 @@
    every failure through its Status, as the program does */
 static inline void test_start(cholmod_common *cm)
 {
-  cholmod_start(cm);
+  cholmod_l_start(cm);
   cm->print = 0;
   gsl_set_error_handler_off();
 }

@@ -10,7 +10,9 @@
    the documented shift of 1e-6 of themselves in both.  Also: S is
    positive definite, and for a body that only the foundation holds (the
    flat punch) S without the shift annihilates the vertical rigid motion,
-   which the shift makes invertible. */
+   which the shift makes invertible.  And a failure of CHOLMOD's analysis
+   (its allocations made to fail) is reported with CHOLMOD's own status,
+   as out of memory (exit status 5). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +21,7 @@
 #include "setup.h"
 #include "scene.h"
 #include "model.h"
+#include "condense.h"
 
 /* the dense Schur complement of A onto the contact unknowns, ordered by
    contact number c, the contact diagonals multiplied by 1 + shift */
@@ -27,10 +30,10 @@ static gsl_matrix *dense_schur(const Model *md, double shift)
   const Dofs *d = md->dofs;
   int n = d->n, nc = d->nc, ni = n - nc, *is_c = calloc(n, sizeof *is_c), *pos = malloc(n * sizeof *pos);
   gsl_matrix *A = gsl_matrix_calloc(n, n);
-  const int *Ap = md->A->p, *Ai = md->A->i;
+  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int j = 0; j < n; j++)
-    for (int k = Ap[j]; k < Ap[j + 1]; k++) gsl_matrix_set(A, Ai[k], j, Ax[k]);
+    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) gsl_matrix_set(A, Ai[k], j, Ax[k]);
   for (int c = 0; c < nc; c++) {
     int j = d->contact[c];
     is_c[j] = 1, pos[j] = c;
@@ -93,7 +96,7 @@ static void compare(const char *path, int N, Qp_method state)
   free(S);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 /* the flat punch: no shift, S times the vertical rigid motion is zero */
@@ -120,7 +123,37 @@ static void floating(void)
   gsl_matrix_free(S);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
+}
+
+/* CHOLMOD's allocator, made to fail */
+static void *no_malloc(size_t n) { (void) n; return NULL; }
+static void *no_calloc(size_t n, size_t m) { (void) n, (void) m; return NULL; }
+
+/* the analysis of K fails when CHOLMOD cannot allocate: STATUS_MEMORY,
+   a message that gives CHOLMOD's status by number and name */
+static void analysis_fails(void)
+{
+  Scene s;
+  Status st;
+  cholmod_common cm;
+  test_start(&cm);
+  if (!check(scene_load(&s, "data/example-5.1.scene", 0, NULL, &st) == 0, "load example 5.1")) return;
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
+  void *(*m)(size_t) = SuiteSparse_config.malloc_func;
+  void *(*c)(size_t, size_t) = SuiteSparse_config.calloc_func;
+  SuiteSparse_config.malloc_func = no_malloc, SuiteSparse_config.calloc_func = no_calloc;
+  st.code = STATUS_OK, st.msg[0] = 0;
+  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, &cm, &st);
+  SuiteSparse_config.malloc_func = m, SuiteSparse_config.calloc_func = c;
+  check(!cd && st.code == STATUS_MEMORY && strstr(st.msg, "CHOLMOD failed to analyse A: out of memory "
+        "(CHOLMOD status -2, CHOLMOD_OUT_OF_MEMORY)"),
+        "CHOLMOD's allocations fail in the analysis: exit status 5, CHOLMOD's status in the message (%d: %s)",
+        st.code, st.msg);
+  condense_free(cd);
+  model_free(md);
+  scene_free(&s);
+  cholmod_l_finish(&cm);
 }
 
 int main(void)
@@ -132,5 +165,6 @@ int main(void)
   compare("tests/scenes/flat-punch.scene", 16, QP_PDAS);
   compare("tests/scenes/flat-punch.scene", 16, QP_PSOR);
   floating();
+  analysis_fails();
   return check_done();
 }

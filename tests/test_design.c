@@ -15,6 +15,7 @@
 #include <gsl/gsl_linalg.h>
 #include "check.h"
 #include "design.h"
+#include "opt.h"
 
 static uint64_t seed = 88172645463325252ULL;
 
@@ -543,6 +544,32 @@ static void test_feasible_start(void)
         "feasible start: an empty B is refused: %s", st.msg);
 }
 
+/* the linear interpolation of a design of B onto the mesh refined by 2
+   (opt_interpolate, the coarse-to-fine start of paper/opt.nw) stays in B:
+   the bounds, the slope bound C1 h of the finer mesh, the area */
+static void test_interpolation(void)
+{
+  Design_set B = make_set(16, 4, 0.05, 0.025, 0.09), F = make_set(32, 4, 0.05, 0.025, 0.09);
+  double Y[17], X[33], worst = 0, area = 0, slope = 0;
+  int inside = 1;
+  srand(27);
+  for (int t = 0; t < 200; t++) {
+    for (int i = 0; i <= 16; i++)
+      Y[i] = t == 0 ? 160.025 - sqrt(160.025 * 160.025 - (0.25 * i - 4) * (0.25 * i - 4))
+                    : -0.05 + 0.15 * rand() / (double) RAND_MAX;
+    design_project(&B, Y, X, NULL, NULL);
+    double a = design_area(&B, X);
+    opt_interpolate(X, 16);
+    for (int i = 0; i <= 32; i++) inside &= X[i] >= 0 && X[i] <= F.C0;
+    for (int i = 0; i < 32; i++) slope = fmax(slope, fabs(X[i + 1] - X[i]) / F.delta);
+    area = fmax(area, fabs(design_area(&F, X) - a) / a);
+    worst = fmax(worst, design_violation(&F, X));
+  }
+  check(inside && slope <= 1 + 1e-12 && area <= 1e-14 && worst <= 1e-12,
+        "interpolation onto the mesh refined by 2 stays in B (4.4): 200 designs, bounds "
+        "kept, slope at most %.15g of C1 h, area kept to %.1e, violation %.1e", slope, area, worst);
+}
+
 int main(void)
 {
   test_brute_force(0);
@@ -554,5 +581,6 @@ int main(void)
   test_errors();
   test_kkt();
   test_feasible_start();
+  test_interpolation();
   return check_done();
 }

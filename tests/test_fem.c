@@ -105,7 +105,7 @@ static void patch_test(Plane_model model)
   Problem s = free_body(N, M, R, model);
   Status st = { 0, "" };
   cholmod_common cm;
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   Mesh *m = mesh_new(&s, &st);
   double X[17];
   design(N, X);
@@ -138,16 +138,16 @@ static void patch_test(Plane_model model)
     }
     qp_matvec(A, u, r);
     double amax = 0;
-    for (int p = 0; p < ((int *) A->p)[A->ncol]; p++) amax = fmax(amax, fabs(((double *) A->x)[p]));
+    for (Sparse_index p = 0; p < ((Sparse_index *) A->p)[A->ncol]; p++) amax = fmax(amax, fabs(((double *) A->x)[p]));
     check(norm_inf(r, d->n) <= 1e-12 * amax * 4, "%s rigid motion %d has zero stiffness in A (4.3) (%.2e)",
           model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress", mode, norm_inf(r, d->n) / amax);
   }
   energy_checks(m, d, &H, A, grad, model);
   free(u); free(r); free(f);
-  cholmod_free_sparse(&A, &cm);
+  cholmod_l_free_sparse(&A, &cm);
   fem_dofs_free(d);
   mesh_free(m);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 /* a consistent traction load sums to P times the loaded length, also when
@@ -188,7 +188,7 @@ static void traction_load(void)
    couplings as triplets, sorted and summed by CHOLMOD */
 static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_common *cm)
 {
-  cholmod_triplet *T = cholmod_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri, 0,
+  cholmod_triplet *T = cholmod_l_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri, 0,
                                                 CHOLMOD_REAL, cm);
   for (int t = 0; t < m->ntri; t++)
     for (int r = 0; r < 6; r++)
@@ -196,11 +196,11 @@ static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_com
         int gr = d->unknown[2 * m->tri[3 * t + r / 2] + r % 2];
         int gc = d->unknown[2 * m->tri[3 * t + c / 2] + c % 2];
         if (gr < 0 || gc < 0) continue;
-        ((int *) T->i)[T->nnz] = gr, ((int *) T->j)[T->nnz] = gc;
+        ((Sparse_index *) T->i)[T->nnz] = gr, ((Sparse_index *) T->j)[T->nnz] = gc;
         ((double *) T->x)[T->nnz++] = 0;
       }
-  cholmod_sparse *A = cholmod_triplet_to_sparse(T, T->nnz, cm);
-  cholmod_free_triplet(&T, cm);
+  cholmod_sparse *A = cholmod_l_triplet_to_sparse(T, T->nnz, cm);
+  cholmod_l_free_triplet(&T, cm);
   return A;
 }
 
@@ -211,21 +211,21 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   Problem s = free_body(N, M, R, MODEL_PLANE_STRESS);
   Status st = { 0, "" };
   cholmod_common cm;
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   s.side[SIDE_LEFT].kind = left, s.side[SIDE_RIGHT].kind = right, s.side[SIDE_TOP].kind = top;
   Mesh *m = mesh_new(&s, &st);
   Dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
   cholmod_sparse *A = d ? fem_stiffness_new(m, d, &cm, &st) : NULL;
   cholmod_sparse *B = d ? triplet_pattern(m, d, &cm) : NULL;
   int same = A && B && A->nrow == B->nrow && A->ncol == B->ncol && A->sorted && A->packed
-             && A->stype == 0 && !memcmp(A->p, B->p, (A->ncol + 1) * sizeof(int))
-             && !memcmp(A->i, B->i, ((int *) B->p)[B->ncol] * sizeof(int));
+             && A->stype == 0 && !memcmp(A->p, B->p, (A->ncol + 1) * sizeof(Sparse_index))
+             && !memcmp(A->i, B->i, ((Sparse_index *) B->p)[B->ncol] * sizeof(Sparse_index));
   check(same, "N = %d, M = %d, R = %d, sides %d %d %d: the pattern of A (4.3) is the triplets' "
         "(%d unknowns, %d entries)", N, M, R, left, right, top, d ? d->n : -1,
-        B ? ((int *) B->p)[B->ncol] : -1);
-  cholmod_free_sparse(&A, &cm), cholmod_free_sparse(&B, &cm);
+        B ? (int) ((Sparse_index *) B->p)[B->ncol] : -1);
+  cholmod_l_free_sparse(&A, &cm), cholmod_l_free_sparse(&B, &cm);
   fem_dofs_free(d), mesh_free(m);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 int main(void)

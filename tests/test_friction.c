@@ -190,10 +190,10 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
              malloc(md->dofs->n * sizeof(double)),
              malloc((md->dofs->nc + md->dofs->nt) * sizeof(double)), 0, 0,
              0, INFINITY, INFINITY, 0 };
-  const int *Ap = md->A->p, *Ai = md->A->i;
+  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int j = 0; j < e.n; j++)
-    for (int q = Ap[j]; q < Ap[j + 1]; q++) gsl_matrix_set(e.A, Ai[q], j, Ax[q]);
+    for (Sparse_index q = Ap[j]; q < Ap[j + 1]; q++) gsl_matrix_set(e.A, Ai[q], j, Ax[q]);
   int m = e.nc + e.nt;
   double Tmax = max_abs(md->T, m), umax = max_abs(md->Q, e.n);
   enumerate(&e, 1e-9 * Tmax, 1e-9 * umax);

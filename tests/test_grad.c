@@ -75,7 +75,7 @@ static void weakly_active(const char *path, Plane_model model)
   free(X); free(G);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 typedef struct { int calls, in_order; } Progress;
@@ -136,7 +136,7 @@ static void check_grad_check(const char *path)
   grad_check_free(gc);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 int main(void)

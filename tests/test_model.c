@@ -81,7 +81,7 @@ static void curvature(void)
   free(X), free(H), free(S);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 /* The energy is evaluated accurately enough that two solvers' states,
@@ -106,7 +106,7 @@ static void energy_agreement(const char *path, int N)
   }
   model_free(a), model_free(b);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 int main(void)

@@ -257,10 +257,10 @@ static void test_tol_below_rounding(const char *tol)
 
 int main(void)
 {
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();
   check_method(2);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   weakly_active_nodes(QP_CGSSOR);
   static const char *g[] = { "1e7", "2.5e8", "1e9" };
   int mixed = 0;

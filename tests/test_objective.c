@@ -47,7 +47,7 @@ static void energy_is_48(const char *path)
   free(G);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 static void uniform_pressure(void)
@@ -68,7 +68,7 @@ static void uniform_pressure(void)
         Js, Jq - 1);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 static void compliance_is_minus_2E(const char *path)
@@ -88,7 +88,7 @@ static void compliance_is_minus_2E(const char *path)
         fabs(J + 2 * md->energy) / fabs(J));
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 static void lift_off(void)
@@ -107,7 +107,7 @@ static void lift_off(void)
         "the body off leaves the pressure spread undefined: %s", st.msg);
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 int main(void)

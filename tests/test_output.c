@@ -94,7 +94,7 @@ int main(void)
 
   model_free(md);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   snprintf(path, sizeof path, "rm -rf %s", dir);
   if (system(path)) check(0, "removing %s", dir);
   return check_done();

@@ -39,8 +39,8 @@ static void check_repeated(void)
 {
   Qp_problem *P = obstacle_1d("unsymmetric values", 30, 3);
   double *Ax = P->A->x, x[30];
-  const int *Ap = P->A->p, *Ai = P->A->i;
-  for (int k = Ap[1]; k < Ap[2]; k++)  /* A(0,1), not A(1,0): unknown 1 is free */
+  const Sparse_index *Ap = P->A->p, *Ai = P->A->i;
+  for (Sparse_index k = Ap[1]; k < Ap[2]; k++)  /* A(0,1), not A(1,0): unknown 1 is free */
     if (Ai[k] == 0) Ax[k] *= 1.5;
   Run r = run(P, options(QP_PDAS), NULL, x, NULL);
   check(r.code == STATUS_NUMERIC && has(r.st.msg, "repeated")
@@ -51,7 +51,7 @@ static void check_repeated(void)
 
 int main(void)
 {
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();
   check_method(0);
   Qp_problem *P[6];
@@ -60,7 +60,7 @@ int main(void)
   check_warm_floating(P[2]);
   check_repeated();
   problems_free(P);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   weakly_active_nodes(QP_PDAS);
   return check_done();
 }

@@ -7,10 +7,10 @@
 
 int main(void)
 {
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();
   check_method(1);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   weakly_active_nodes(QP_PSOR);
   return check_done();
 }

@@ -62,7 +62,7 @@ static void check_bad_matrices(void)
   Qp_problem *P = obstacle_1d("unsymmetric", 6, 2);
   Status st = { STATUS_OK, "" };
   Qp_options o = options(QP_PDAS);
-  cholmod_free_sparse(&P->A, &cm);
+  cholmod_l_free_sparse(&P->A, &cm);
   P->D[0 * 6 + 3] = 0.5;
   problem_finish(P);
   check(!qp_alloc(&P->qp, &o, &cm, &st) && st.code == STATUS_INPUT,
@@ -96,7 +96,7 @@ static void test_psor_refused(void)
 
 int main(void)
 {
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();
   Qp_problem *P[6];
   problems_new(P);
@@ -105,6 +105,6 @@ int main(void)
   check_bad_matrices();
   test_psor_refused();
   problems_free(P);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   return check_done();
 }

@@ -60,7 +60,7 @@ static double energy(const Scene *s, const char *what)
     check(0, "%s: the state is solved: %s", what, st.msg);
   else e = md->energy;
   model_free(md);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   return e;
 }
 

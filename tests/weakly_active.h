@@ -130,7 +130,7 @@ static inline void weakly_active_node(const char *path, Plane_model model,
   model_free(md);
   free(X);
   scene_free(&s);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
 }
 
 /* Examples 5.1 (plane stress and plane strain) and 5.2 */

@@ -83,31 +83,31 @@ static double cholmod_reference(const cholmod_sparse *A, const double *bx,
 {
   int n = (int) A->nrow;
   double one[2] = { 1, 0 }, minus_one[2] = { -1, 0 };
-  cholmod_sparse *C = cholmod_copy((cholmod_sparse *) A, -1, 1, cm);   /* lower triangle */
-  cholmod_dense *b = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, cm), *x, *r;
+  cholmod_sparse *C = cholmod_l_copy((cholmod_sparse *) A, -1, 1, cm);   /* lower triangle */
+  cholmod_dense *b = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm), *x, *r;
   if (!C || !b) die("CHOLMOD", "out of memory for the copy of A");
   memcpy(b->x, bx, n * sizeof(double));
   double t0 = now();
-  cholmod_factor *L = cholmod_analyze(C, cm);
+  cholmod_factor *L = cholmod_l_analyze(C, cm);
   double t1 = now();
   if (!L) die("cholmod_analyze", "failed");
-  if (!cholmod_factorize(C, L, cm) || cm->status != CHOLMOD_OK || L->minor < L->n)
+  if (!cholmod_l_factorize(C, L, cm) || cm->status != CHOLMOD_OK || L->minor < L->n)
     die("cholmod_factorize", "failed (A not positive definite?)");
-  x = cholmod_solve(CHOLMOD_A, L, b, cm);
+  x = cholmod_l_solve(CHOLMOD_A, L, b, cm);
   double t2 = now();
   if (!x) die("cholmod_solve", "failed");
   *analyse = t1 - t0, *factor_solve = t2 - t1;
-  if (!(r = cholmod_copy_dense(b, cm))
-      || !cholmod_sdmult(C, 0, minus_one, one, x, r, cm))   /* r = b - Ax */
+  if (!(r = cholmod_l_copy_dense(b, cm))
+      || !cholmod_l_sdmult(C, 0, minus_one, one, x, r, cm))   /* r = b - Ax */
     die("cholmod_sdmult", "failed");
-  double res = cholmod_norm_dense(r, 0, cm)
-    / (cholmod_norm_sparse(C, 0, cm) * cholmod_norm_dense(x, 0, cm)
-       + cholmod_norm_dense(b, 0, cm));
-  cholmod_free_dense(&r, cm);
-  cholmod_free_dense(&x, cm);
-  cholmod_free_dense(&b, cm);
-  cholmod_free_factor(&L, cm);
-  cholmod_free_sparse(&C, cm);
+  double res = cholmod_l_norm_dense(r, 0, cm)
+    / (cholmod_l_norm_sparse(C, 0, cm) * cholmod_l_norm_dense(x, 0, cm)
+       + cholmod_l_norm_dense(b, 0, cm));
+  cholmod_l_free_dense(&r, cm);
+  cholmod_l_free_dense(&x, cm);
+  cholmod_l_free_dense(&b, cm);
+  cholmod_l_free_factor(&L, cm);
+  cholmod_l_free_sparse(&C, cm);
   return res;
 }
 
@@ -232,7 +232,7 @@ static void measure_limit(const Scene *s, cholmod_common *cm)
   }
   printf("%d %d %.6f %.6f %.1e\n", s->problem.N, (int) A->nrow, an, fs, res);
   free(b);
-  cholmod_free_sparse(&A, cm);
+  cholmod_l_free_sparse(&A, cm);
   fem_dofs_free(d);
   mesh_free(m);
 }
@@ -247,12 +247,12 @@ int main(int argc, char **argv)
   if (argc < 2 + limit) die("usage", "bench_cholmod [--limit] SCENE [section.key=value ...]");
   if (scene_load(&s, argv[1 + limit], argc - 2 - limit, argv + 2 + limit, &st))
     die(argv[1 + limit], st.msg);
-  cholmod_start(&cm);
+  cholmod_l_start(&cm);
   gsl_set_error_handler_off();   /* failures come back as codes */
   cm.print = 0;
   if (limit) {
     measure_limit(&s, &cm);
-    cholmod_finish(&cm);
+    cholmod_l_finish(&cm);
     scene_free(&s);
     return 0;
   }
@@ -264,7 +264,7 @@ int main(int argc, char **argv)
          T.rss, T.warm, T.warm_steps, T.grad, T.grad / T.warm, T.residual,
          T.adjoint[0], T.adjoint[1], T.adjoint[2]);
   model_free(md);
-  cholmod_finish(&cm);
+  cholmod_l_finish(&cm);
   scene_free(&s);
   return 0;
 }

@@ -1,0 +1,41 @@
+# levels.sh: the coarse-to-fine start of optimize (optimizer.levels,
+# paper/opt.nw).  At N = 256 and 512 (Example 5.1, plane stress, Newton)
+# the default levels reach the single level's E* to 1e-9 relative and its
+# design to 1e-7 C0, and say so in one line; optimizer.levels = 1 runs no
+# coarse level; at the article's N = 16 the default is one level, the same
+# run, bit for bit, as optimizer.levels = 1.
+. tests/lib.sh
+ex=data/example-5.1.scene
+# same_run A B: the data files of two runs without times are the same
+same_run() {
+  for f in final/shape.dat final/contact.dat iterates.dat multipliers.dat; do
+    cmp -s "$1/$f" "$2/$f" || return 1
+  done
+}
+# agree A B: E* to 1e-9 relative, the final design to 1e-7 C0 (C0 = 0.05)
+agree() {
+  awk -v tolE=1e-9 -v tolX=5e-9 'FNR == 1 { f++ }
+    f == 1 && $1 == "energy" { e1 = $2 } f == 2 && $1 == "energy" { e2 = $2 }
+    f == 3 && !/^#/ { x[FNR] = $2 }
+    f == 4 && !/^#/ { d = $2 - x[FNR]; if (d < 0) d = -d; if (d > dx) dx = d }
+    END { de = (e2 - e1) / e1; if (de < 0) de = -de; exit !(de <= tolE && dx <= tolX) }' \
+    "$1/summary.dat" "$2/summary.dat" "$1/final/shape.dat" "$2/final/shape.dat"
+}
+for K in 16 32; do
+  N=$((16 * K))
+  $BIN optimize $ex -s mesh.refine=$K -s optimizer.levels=1 -o $TMP/one-$N > $TMP/one.log
+  $BIN optimize $ex -s mesh.refine=$K -o $TMP/lev-$N > $TMP/lev.log
+  check "N = $N: the default runs coarse levels and says so in one line" \
+    grep -q "coarse to fine: N = 64 \.\. $((N / 2)) in [0-9]* evaluations" $TMP/lev.log
+  check "N = $N: optimizer.levels = 1 runs no coarse level" \
+    sh -c "! grep -q 'coarse to fine' $TMP/one.log"
+  check "N = $N: the levels reach the single level's E* to 1e-9 relative and its design to 1e-7 C0" \
+    agree $TMP/one-$N $TMP/lev-$N
+done
+$BIN optimize $ex -s optimizer.levels=1 -o $TMP/one-16 > /dev/null
+$BIN optimize $ex -o $TMP/lev-16 > $TMP/lev.log
+check "N = 16: the default is one level, bit for bit the run of optimizer.levels = 1" \
+  same_run $TMP/one-16 $TMP/lev-16
+$BIN optimize $ex -s optimizer.levels=-1 -o $TMP/bad > /dev/null 2> $TMP/err
+check "optimizer.levels = -1 is refused (exit 2)" test $? -eq 2
+finish
