@@ -1,11 +1,11 @@
-#line 353 "paper/opt.nw"
+#line 356 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 367 "paper/opt.nw"
+#line 370 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -25,7 +25,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 425 "paper/opt.nw"
+#line 428 "paper/opt.nw"
 /* the rounding of another objective than E: relative to |J| + 1 (the
    pressure spread is a difference from 1) */
 #define OPT_J_ROUNDING (64 * DBL_EPSILON)
@@ -54,7 +54,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 488 "paper/opt.nw"
+#line 491 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -63,7 +63,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 499 "paper/opt.nw"
+#line 502 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -76,7 +76,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 532 "paper/opt.nw"
+#line 535 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -97,7 +97,22 @@ void opt_idle_detail(Evaluator *ev)
            "lowered E by no more than its rounding (%.1e J/m) and did not halve pi: "
            "the rounding of E allows no smaller pi", ev->idle, ev->noise);
 }
-#line 1739 "paper/opt.nw"
+#line 560 "paper/opt.nw"
+const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
+{
+  double pg;
+  if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) return NULL;
+  int stop = opt_report_iterate(ev, k, pg), idle = opt_idle_iterates(ev, k, pg, 0);
+  memcpy(bestX, ev->X, ev->n * sizeof *ev->X);
+  ev->rep->iterations = k;
+  ev->rep->pgnorm = pg;
+  if (pg <= ev->o->tol) return "converged";
+  if (stop) return "interrupted";
+  if (k >= ev->o->max_iter) return "max_iter";
+  if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
+  return NULL;
+}
+#line 1742 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -123,11 +138,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1778 "paper/opt.nw"
+#line 1781 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1764 "paper/opt.nw"
+#line 1767 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -138,14 +153,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1795 "paper/opt.nw"
+#line 1798 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1830 "paper/opt.nw"
+#line 1833 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -153,7 +168,7 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1844 "paper/opt.nw"
+#line 1847 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 int opt_levels(const Problem *p, const Opt_options *o)
@@ -165,7 +180,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1861 "paper/opt.nw"
+#line 1864 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st);
@@ -191,7 +206,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1890 "paper/opt.nw"
+#line 1893 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st)

@@ -3,7 +3,7 @@
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 395 "paper/opt.nw"
+#line 398 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -40,6 +40,9 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg);
 int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
 void opt_idle_detail(Evaluator *ev);
+/* the k-th iterate of an NLopt method, at the evaluator's design, kept
+   in bestX: its stop reason, or NULL to go on (ev->failed if pi failed) */
+const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX);
 /* the four methods: from X to the terminal check, X the final design */
 int opt_projgrad(Evaluator *ev, double *X);
 int opt_slsqp(Evaluator *ev, double *X);
