@@ -103,15 +103,19 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                    .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);
+  if (md->problem->contact == CONTACT_COULOMB && o->method == OPT_NEWTON)
+    return free(ev.X), status_set(st, STATUS_INPUT, "optimiser: the Newton "
+                                  "method has no model of a Coulomb state's cost");
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n;
+  md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1384 "paper/opt.nw"
+#line 1388 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1372 "paper/opt.nw"
+#line 1376 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
   }
@@ -120,7 +124,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1400 "paper/opt.nw"
+#line 1404 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4 : o->method == OPT_SLSQP ? 12 : 0;
