@@ -1,4 +1,4 @@
-#line 8 "paper/coulomb.nw"
+#line 130 "paper/coulomb.nw"
 #ifndef CONTACTOPT_COULOMB_H
 #define CONTACTOPT_COULOMB_H
 #include "status.h"
