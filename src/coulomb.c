@@ -1,11 +1,11 @@
-#line 147 "paper/coulomb.nw"
+#line 159 "paper/coulomb.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "coulomb.h"
 
-#line 161 "paper/coulomb.nw"
+#line 173 "paper/coulomb.nw"
 /* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
    normal unknown c at its node, held with T_c > 0; returns m */
 static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
@@ -20,7 +20,7 @@ static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
   }
   return m;
 }
-#line 178 "paper/coulomb.nw"
+#line 195 "paper/coulomb.nw"
 /* (A q)_j, A stored with both triangles */
 static double row_times(const cholmod_sparse *A, int j, const double *q)
 {
@@ -51,7 +51,7 @@ static int coulomb_sensitivity(const Model *md, int m, const int *kk,
   free(e);
   return rc;
 }
-#line 211 "paper/coulomb.nw"
+#line 231 "paper/coulomb.nw"
 /* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
 static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
 {
@@ -74,7 +74,7 @@ static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
   gsl_permutation_free(p);
   return rc;
 }
-#line 236 "paper/coulomb.nw"
+#line 258 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
@@ -105,7 +105,7 @@ static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
   work_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
-#line 269 "paper/coulomb.nw"
+#line 296 "paper/coulomb.nw"
 /* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
