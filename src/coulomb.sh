@@ -63,8 +63,8 @@ awk 'function sci(x,  e) { if (x == 0) return "0"; e = int(log(x < 0 ? -x : x) /
   FILENAME ~ /initial/ && !/^#/ { e = $3 > e ? $3 : e
     lo = lo == "" || $4 < lo ? $4 : lo; hi = $5 > hi ? $5 : hi
     row[++n] = sprintf("$%s$ & $%.10g$ & $%s$ & %d & %d" nl, $1, $2, sci($3), $4, $5) }
-  END { printf "\\newcommand{\\coulombgraderr}{%s}\\newcommand{\\coulombfplo}{%d}" \
-               "\\newcommand{\\coulombfphi}{%d}\n", sci(e), lo, hi
+  END { printf "\\gdef\\coulombgraderr{%s}\\gdef\\coulombfplo{%d}" \
+               "\\gdef\\coulombfphi{%d}\n", sci(e), lo, hi
         print "\\begin{tabular}{@{}rrrrr@{}}\\toprule"
         print "$\\mathcal F$ & $J_{\\mathcal F}$ [J/m] & gradient error & \\multicolumn{2}{c}{fixed-point its}" nl
         print "& & & to $10^{-10}$ & to rounding" nl "\\midrule"
