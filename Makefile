@@ -12,7 +12,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # optimisers, the projection onto B, the interior point of the Newton
 # model, the figures' parts, the parts of the scene and output modules),
 # which share the module's private header; and the program.
-MODULES := status resources problem scene mesh fem qp condense friction model grad objective design newton opt output usage interrupt args threads plot
+MODULES := status resources problem scene mesh fem qp condense friction model grad objective coulomb design newton opt output usage interrupt args threads plot
 INNER   := pdas mprgp psor condense_adjoint objective_grad design_project newton_ip opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_body plot_results \
            scene_keys scene_ini scene_value scene_check scene_shape scene_write \
@@ -22,7 +22,7 @@ HEADERS := sparse
 PRIVATE := qp_private opt_private plot_private design_private newton_private scene_private output_private
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
-           src/friction.sh src/fig-friction.gp \
+           src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
            src/man.sh src/completion.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
@@ -40,7 +40,8 @@ RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
         out/example-5.1-C2arc-optimize/summary.dat
 FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
            figures/reproduction.tex figures/suite.tex \
-           figures/fig-friction.pdf figures/fig-friction.png figures/friction.tex
+           figures/fig-friction.pdf figures/fig-friction.png figures/friction.tex \
+           figures/fig-coulomb.pdf figures/fig-coulomb.png figures/coulomb.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -367,7 +368,7 @@ figures/keys.tex: bin/contactopt
 # meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
 figures: $(FIGURES) $(ACCURACY_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction figure as PDF and PNG, the reproduction, suite and friction tables, the accuracy figure and table)"
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null
@@ -422,6 +423,14 @@ figures/friction.tex: src/friction.sh data/example-5.1-tresca.scene bin/contacto
 	sh $< data/example-5.1-tresca.scene out/friction > $@.partial && mv $@.partial $@
 figures/fig-friction.pdf figures/fig-friction.png &: src/fig-friction.gp figures/friction.tex
 	gnuplot -e "runs='out/friction'; out='figures/fig-friction'" $<
+# Shape optimisation with Coulomb friction (paper/coulomb.nw): the friction
+# scene as a Coulomb scene optimised for four coefficients on two meshes,
+# its gradient check, the Tresca comparison, their tables and figure.
+figures/coulomb.tex: src/coulomb.sh data/example-5.1-tresca.scene bin/contactopt
+	@mkdir -p figures
+	sh $< data/example-5.1-tresca.scene out/coulomb > $@.partial && mv $@.partial $@
+figures/fig-coulomb.pdf figures/fig-coulomb.png &: src/fig-coulomb.gp figures/coulomb.tex
+	gnuplot -e "runs='out/coulomb'; out='figures/fig-coulomb'" $<
 figures/reproduction.tex: src/reproduction.sh $(RUNS)
 	@mkdir -p figures
 	sh $< out > $@.partial && mv $@.partial $@

@@ -1,4 +1,4 @@
-#line 182 "paper/overview.nw"
+#line 183 "paper/overview.nw"
 /* example.c: the contact shape of least energy of the body of a scene,
    as contactopt optimize finds it, without the files: example SCENE */
 #include <stdio.h>
@@ -23,12 +23,10 @@ int main(int argc, char **argv)
   cm.print = 0;                       /* failures come back as a Status */
   gsl_set_error_handler_off();
   Design_set B = design_set(&s.problem);
-  Model *md = grad_available(&s.problem) ? model_new(&s.problem, &s.solver, &cm, &st) : NULL;
+  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
   double *X = malloc((s.problem.N + 1) * sizeof *X), violation, moved;
   int rc = STATUS_OK;
-  if (!grad_available(&s.problem))
-    rc = status_set(&st, STATUS_INPUT, "%s: E has no gradient here", s.path);
-  else if (!md) rc = st.code;
+  if (!md) rc = st.code;
   else if (!X) rc = status_set(&st, STATUS_MEMORY, "example: out of memory");
   if (!rc) rc = design_feasible_start(&B, s.alpha0, 1e-12, X, &violation, &moved, &st);
   if (!rc) rc = opt_minimize(md, &B, &s.optimizer, X, NULL, NULL, &rep, &st);

@@ -5,14 +5,12 @@
 #include "model.h"
 #include "objective.h"
 
-/* 1 if E has a gradient: not under Coulomb friction, whose state
-   minimises no energy */
-int grad_available(const Problem *p);
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
-   model solved last.  It is a checked error to call it before a solve,
-   or with Coulomb friction. */
+   model solved last; under Coulomb friction the gradient of J_F through
+   the fixed point (coulomb_gradient).  It is a checked error to call it
+   before a solve. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 75 "paper/grad.nw"
+#line 73 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */
@@ -27,7 +25,7 @@ typedef struct {
   const Objective *objective; /* NULL (as made) or energy: E and (4.8);
                      another: its J and its gradient by the adjoint */
   char *crossed;  /* N+1: 1 where a difference met other held sets than
-                     the design's (another objective only), else 0 */
+                     the design's (another objective, or Coulomb), else 0 */
   char *held;     /* the held sets at X while checking (scratch) */
 } Grad_check;
 
@@ -43,5 +41,5 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
 /* the state solves that grad_check(md, X, gc, ...) takes, md's problem's */
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X);
-#line 48 "paper/grad.nw"
+#line 46 "paper/grad.nw"
 #endif

@@ -177,7 +177,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 476 "paper/main.nw"
+#line 480 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -200,7 +200,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 502 "paper/main.nw"
+#line 506 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -219,13 +219,14 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 530 "paper/main.nw"
-/* the refusal of a command that needs the gradient of an energy */
-static int no_gradient(const Run *r, const char *command, Status *st)
+#line 534 "paper/main.nw"
+/* the refusal of the Newton method for a Coulomb scene */
+static int no_newton(const Run *r, Status *st)
 {
-  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: %s needs "
-                    "the gradient of an energy, and a Coulomb state minimises "
-                    "none (contact.model = tresca has one)", r->s.path, command);
+  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: "
+                    "optimizer.method = newton models the Hessian of a Tresca "
+                    "energy, not the cost J_F of a Coulomb state; use slsqp or "
+                    "projgrad", r->s.path);
 }
 
 /* the nodes whose differences met other held sets than the design's:
@@ -246,7 +247,7 @@ static void gradcheck_crossed(const Grad_check *gc)
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
-  if (!grad_available(&r->s.problem)) return no_gradient(r, "gradcheck", st);
+  r->md->fixed_point_rounding = 1;              /* Coulomb: see above */
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
   Gradcheck_progress g = { 0, 0, 0 };
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
@@ -266,7 +267,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 724 "paper/main.nw"
+#line 729 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
@@ -276,7 +277,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 740 "paper/main.nw"
+#line 745 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -289,7 +290,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 758 "paper/main.nw"
+#line 763 "paper/main.nw"
 /* X = the coarse-to-fine start when the levels of the run are > 1 */
 static int optimize_coarse(Run *r, double *X, Status *st)
 {
@@ -304,7 +305,7 @@ static int optimize_coarse(Run *r, double *X, Status *st)
            N / 2, c.evaluations, c.seconds, N);
   return rc;
 }
-#line 781 "paper/main.nw"
+#line 786 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -316,7 +317,9 @@ static int command_optimize(Run *r, Status *st)
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
   const Objective *J = &r->s.optimizer.objective;
-  if (!grad_available(&r->s.problem)) rc = no_gradient(r, "optimize", st);
+  r->md->fixed_point_rounding = 1;
+  if (r->s.problem.contact == CONTACT_COULOMB && r->s.optimizer.method == OPT_NEWTON)
+    rc = no_newton(r, st);
   else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
     rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
                     "the energy only; objective.kind = %s needs slsqp, "
@@ -360,7 +363,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 846 "paper/main.nw"
+#line 853 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -379,7 +382,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 876 "paper/main.nw"
+#line 883 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -395,7 +398,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 904 "paper/main.nw"
+#line 911 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -34,9 +34,11 @@ typedef struct {
   double seconds;       /* wall time of the last model_solve */
   int solved;           /* Q holds a state: warm start the next solve */
   double fixed_point_tol; /* Coulomb: the solver's tol, relative */
+  int fixed_point_rounding; /* Coulomb: 1 to go on past the tol while the
+                           change halves, to rounding (for a gradient) */
 } Model;
 
-#line 85 "paper/model.nw"
+#line 87 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */

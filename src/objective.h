@@ -31,6 +31,14 @@ int objective_partials(const Model *md, const Objective *o, double *J,
    held NULL: write it */
 int objective_same_sets(const Model *md, char *held, int write);
 /* G (N+1) = grad J by the adjoint of the last state; for energy the same
-   path gives (4.8).  A checked error before a solve or under Coulomb. */
+   path gives (4.8); under Coulomb friction the gradient through the fixed
+   point (coulomb_gradient).  A checked error before a solve. */
 int objective_gradient(Model *md, const Objective *o, double *G, Status *st);
+/* G (N+1) = the gradient at fixed slip bounds of J (o; NULL: none) plus
+   t'T (t, nc, may be NULL, zero off the held contact unknowns); lam (n)
+   and held_out (nc + nt), each may be NULL, receive the adjoint and the
+   held sets.  A checked error before a solve. */
+int objective_gradient_fixed(const Model *md, const Objective *o,
+                             const double *t, double *lam, char *held_out,
+                             double *G, Status *st);
 #endif

@@ -1,21 +1,22 @@
-#line 276 "paper/objective.nw"
+#line 284 "paper/objective.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
+#include "coulomb.h"
 
-#line 293 "paper/objective.nw"
+#line 303 "paper/objective.nw"
 /* g = dJ/dQ + A_{:H} t, t = dT on the held contact unknowns */
-static void adjoint_rhs(const Model *md, const Objective *o, const double *AQ,
+static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
 {
   const Dofs *d = md->dofs;
   const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int i = 0; i < d->n; i++)
-    g[i] = o->kind == OBJECTIVE_ENERGY ? AQ[i] - md->b[i]
-         : o->kind == OBJECTIVE_COMPLIANCE ? md->b[i] : 0;
-  if (o->kind == OBJECTIVE_ENERGY)            /* the slide's s sigma */
+    g[i] = kind == OBJECTIVE_ENERGY ? AQ[i] - md->b[i]
+         : kind == OBJECTIVE_COMPLIANCE ? md->b[i] : 0;
+  if (kind == OBJECTIVE_ENERGY)            /* the slide's s sigma */
     for (int k = 0; k < d->nt; k++) {
       double u = md->Q[d->tangent[k]];
       g[d->tangent[k]] += md->slip[k] * ((u > 0) - (u < 0));
@@ -25,7 +26,7 @@ static void adjoint_rhs(const Model *md, const Objective *o, const double *AQ,
       for (Sparse_index k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
         g[Ai[k]] += Ax[k] * dT[c];
 }
-#line 317 "paper/objective.nw"
+#line 327 "paper/objective.nw"
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
@@ -40,7 +41,7 @@ static void held_term(const Model *md, const char *held, const double *g,
     G[d->contact_col[c]] -= g[j] - Al;
   }
 }
-#line 336 "paper/objective.nw"
+#line 346 "paper/objective.nw"
 /* d (u'K_e q) / d y_m: eu, eq the strains (times d) of u and q, Du, Dq
    D times them, d = 2|T| */
 static double bilinear_height(const double gy[3], const double u[6],
@@ -55,7 +56,7 @@ static double bilinear_height(const double gy[3], const double u[6],
   return (du0 * Dq[0] + du2 * Dq[2] + dq0 * Du[0] + dq2 * Du[2]) / (2 * d)
        - uDq * gy[m] / (2 * d * d);
 }
-#line 355 "paper/objective.nw"
+#line 365 "paper/objective.nw"
 /* the strain (times d) of q on the triangle, and D times it */
 static void strain_of(const Model *md, const double gx[3], const double gy[3],
                       const double q[6], double e[3], double De[3])
@@ -93,7 +94,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
     G[node % m->ncol] += rate * dy;
   }
 }
-#line 398 "paper/objective.nw"
+#line 408 "paper/objective.nw"
 /* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
 static void tributary_term(const Mesh *m, int nc, const int *col,
                            const double *dw, double *G)
@@ -107,7 +108,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
         G[k + 1] += r, G[k] -= r;
       }
 }
-#line 418 "paper/objective.nw"
+#line 428 "paper/objective.nw"
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
@@ -123,20 +124,21 @@ static int sliding_term(const Model *md, const char *held, const double *lam,
   free(dw);
   return STATUS_OK;
 }
-#line 437 "paper/objective.nw"
-static int gradient_terms(Model *md, const Objective *o, double *v, char *held,
-                          double *G, Status *st)
+#line 447 "paper/objective.nw"
+/* G from the partials dT, dw already in v; kind OBJECTIVE_COUNT: a
+   functional of T alone */
+static int gradient_terms(const Model *md, Objective_kind kind, double *v,
+                          char *held, double *G, Status *st)
 {
   const Dofs *d = md->dofs;
   int n = d->n, nc = d->nc, rc;
   double *AQ = v, *g = AQ + n, *lam = g + n, *u = lam + n, *vb = u + n;
-  double *dT = vb + n, *dw = dT + nc + 1, J;
-  if ((rc = objective_partials(md, o, &J, dT, dw, st))) return rc;
+  double *dT = vb + n, *dw = dT + nc + 1;
   qp_matvec(md->A, md->Q, AQ);
-  adjoint_rhs(md, o, AQ, dT, g);
+  adjoint_rhs(md, kind, AQ, dT, g);
   if ((rc = qp_adjoint(md->solver, g, lam, held, st))) return rc;
-  double a = o->kind == OBJECTIVE_ENERGY, s = o->kind == OBJECTIVE_ENERGY ? 1
-           : o->kind == OBJECTIVE_COMPLIANCE ? -1 : 0;
+  double a = kind == OBJECTIVE_ENERGY, s = kind == OBJECTIVE_ENERGY ? 1
+           : kind == OBJECTIVE_COMPLIANCE ? -1 : 0;
   for (int i = 0; i < n; i++) u[i] = -lam[i], vb[i] = -lam[i] + s * md->Q[i];
   for (int c = 0; c < nc; c++)
     if (held[c]) u[d->contact[c]] += dT[c], vb[d->contact[c]] += dT[c];
@@ -145,24 +147,56 @@ static int gradient_terms(Model *md, const Objective *o, double *v, char *held,
   held_term(md, held, g, lam, G);
   for (int t = 0; t < 2 * md->mesh->N * md->mesh->M; t++) triangle_terms(md, t, u, vb, G);
   tributary_term(md->mesh, nc, d->contact_col, dw, G);
-  if (d->nt && (rc = sliding_term(md, held, lam, G, st))) return rc;
+  if (md->problem->contact == CONTACT_TRESCA && (rc = sliding_term(md, held, lam, G, st)))
+    return rc;
   if (a && md->problem->contact == CONTACT_TRESCA)
     friction_gradient(md->problem, md->mesh, md->dofs, md->Q, G);
   return STATUS_OK;
+}
+
+/* the work vectors of gradient_terms: 5 n, then dT and dw (nc + 1 each) */
+static int gradient_work(const Model *md, double **v, char **held, Status *st)
+{
+  size_t n = md->dofs->n, nk = md->dofs->nc + md->dofs->nt;
+  *v = calloc(5 * n + 2 * nk + 2, sizeof **v);
+  *held = malloc(nk + 1);
+  if (*v && *held) return STATUS_OK;
+  free(*v), free(*held);
+  return status_set(st, STATUS_MEMORY, "objective: out of memory");
 }
 
 int objective_gradient(Model *md, const Objective *o, double *G, Status *st)
 {
   if (!md->solved)
     return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
-  if (md->problem->contact == CONTACT_COULOMB)
-    return status_set(st, STATUS_INPUT, "gradient: contact.model = coulomb: "
-                      "a Coulomb state has no adjoint here");
-  size_t n = md->dofs->n, nk = md->dofs->nc + md->dofs->nt;
-  double *v = malloc((5 * n + 2 * nk + 2) * sizeof *v);
-  char *held = malloc(nk + 1);
-  int rc = v && held ? gradient_terms(md, o, v, held, G, st)
-                     : status_set(st, STATUS_MEMORY, "objective: out of memory");
+  if (md->problem->contact == CONTACT_COULOMB) return coulomb_gradient(md, o, G, st);
+  double *v, J;
+  char *held;
+  int rc = gradient_work(md, &v, &held, st), n = md->dofs->n;
+  if (rc) return rc;
+  double *dT = v + 5 * n, *dw = dT + md->dofs->nc + 1;
+  if (!(rc = objective_partials(md, o, &J, dT, dw, st)))
+    rc = gradient_terms(md, o->kind, v, held, G, st);
+  free(v), free(held);
+  return rc;
+}
+#line 513 "paper/objective.nw"
+int objective_gradient_fixed(const Model *md, const Objective *o,
+                             const double *t, double *lam, char *held_out,
+                             double *G, Status *st)
+{
+  if (!md->solved)
+    return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
+  double *v, J;
+  char *held;
+  int rc = gradient_work(md, &v, &held, st), n = md->dofs->n, nc = md->dofs->nc;
+  if (rc) return rc;
+  double *dT = v + 5 * n, *dw = dT + nc + 1;
+  if (o) rc = objective_partials(md, o, &J, dT, dw, st);
+  for (int c = 0; t && c < nc; c++) dT[c] += t[c];
+  if (!rc) rc = gradient_terms(md, o ? o->kind : OBJECTIVE_COUNT, v, held, G, st);
+  if (!rc && lam) memcpy(lam, v + 2 * n, n * sizeof *lam);
+  if (!rc && held_out) memcpy(held_out, held, md->dofs->nc + md->dofs->nt);
   free(v), free(held);
   return rc;
 }

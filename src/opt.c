@@ -134,15 +134,19 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                    .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);
+  if (md->problem->contact == CONTACT_COULOMB && o->method == OPT_NEWTON)
+    return free(ev.X), status_set(st, STATUS_INPUT, "optimiser: the Newton "
+                                  "method has no model of a Coulomb state's cost");
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
+  md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1781 "paper/opt.nw"
+#line 1785 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1767 "paper/opt.nw"
+#line 1771 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -153,14 +157,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1798 "paper/opt.nw"
+#line 1802 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1833 "paper/opt.nw"
+#line 1837 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -168,7 +172,7 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1847 "paper/opt.nw"
+#line 1851 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 int opt_levels(const Problem *p, const Opt_options *o)
@@ -180,7 +184,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1864 "paper/opt.nw"
+#line 1868 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st);
@@ -206,7 +210,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1893 "paper/opt.nw"
+#line 1897 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st)

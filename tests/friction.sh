@@ -7,8 +7,8 @@
 # own limit or when it stalls; a body that only friction holds sideways is
 # solved when friction can hold it (|Tt| <= g omega, the forces carry the
 # loads) and refused with the numbers when it cannot; and what has no
-# meaning (the gradient of a Coulomb state, psor with friction) or does not
-# converge is refused cleanly.
+# meaning (the Newton method on a Coulomb state, psor with friction) or
+# does not converge is refused cleanly.
 . tests/lib.sh
 ex=data/example-5.1.scene; tr=data/example-5.1-tresca.scene
 head6='# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]'
@@ -104,11 +104,9 @@ for m in pdas cgssor; do
   check "coulomb, a fixed point that cycles ($m): stops on the stall within 20 rounds: exit 3, one line, no folder: $(cat $TMP/err)" \
     clean_failure $? 3 $TMP/err $TMP/co-cycle-$m 'stopped converging: the change of the normal forces did not halve in its last 10 of 1[0-9] iterations'
 done
-for cmd in optimize gradcheck; do
-  $BIN $cmd $tr -o $TMP/co-$cmd $co >/dev/null 2>$TMP/err
-  check "coulomb: $cmd refused (no gradient of an energy): exit 2, one line, no folder" \
-    clean_failure $? 2 $TMP/err $TMP/co-$cmd "contact.model = coulomb: $cmd needs the gradient"
-done
+$BIN optimize $tr -o $TMP/co-newton $co -s optimizer.method=newton >/dev/null 2>$TMP/err
+check "coulomb: the Newton method refused (its model is a Tresca energy's): exit 2, one line, no folder" \
+  clean_failure $? 2 $TMP/err $TMP/co-newton "contact.model = coulomb: optimizer.method = newton models"
 $BIN solve $tr -o $TMP/psor -s solver.state=psor >/dev/null 2>$TMP/err
 check "psor with friction: refused, exit 2, one line naming the key" \
   clean_failure $? 2 $TMP/err $TMP/psor 'solver.state = psor: cannot take friction'

@@ -1,0 +1,147 @@
+#line 159 "paper/coulomb.nw"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_linalg.h>
+#include "coulomb.h"
+
+#line 173 "paper/coulomb.nw"
+/* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
+   normal unknown c at its node, held with T_c > 0; returns m */
+static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
+{
+  const Dofs *d = md->dofs;
+  int c = 0, m = 0;
+  for (int k = 0; k < d->nt; k++) {
+    while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
+    if (c < d->nc && d->contact_col[c] == d->tangent_col[k] && held[c]
+        && !held[d->nc + k] && md->T[c] > 0 && md->T[d->nc + k] != 0)
+      kk[m] = k, cc[m++] = c;
+  }
+  return m;
+}
+#line 195 "paper/coulomb.nw"
+/* (A q)_j, A stored with both triangles */
+static double row_times(const cholmod_sparse *A, int j, const double *q)
+{
+  const int *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  double s = 0;
+  for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * q[Ai[p]];
+  return s;
+}
+
+/* S (m x m, row-major) = dT_c[a] / ds_k[b] on the state's sets: the
+   state's answer to the load -sigma_b of the slide at k[b] */
+static int coulomb_sensitivity(const Model *md, int m, const int *kk,
+                               const int *cc, double *S, Status *st)
+{
+  const Dofs *d = md->dofs;
+  double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
+  if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+  int rc = STATUS_OK;
+  for (int b = 0; !rc && b < m; b++) {
+    int t = d->tangent[kk[b]];
+    e[t] = md->T[d->nc + kk[b]] > 0 ? 1 : -1;     /* -sigma = sign T_t */
+    rc = qp_adjoint(md->solver, e, q, NULL, st);
+    e[t] = 0;
+    for (int a = 0; !rc && a < m; a++)
+      S[(size_t) a * m + b] = row_times(md->A, d->contact[cc[a]], q);
+  }
+  free(e);
+  return rc;
+}
+#line 231 "paper/coulomb.nw"
+/* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
+static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
+{
+  for (int a = 0; a < m; a++)                  /* S := (I - F S)' */
+    for (int b = 0; b <= a; b++) {
+      double x = S[(size_t) a * m + b], y = S[(size_t) b * m + a];
+      S[(size_t) a * m + b] = (a == b) - F * y;
+      S[(size_t) b * m + a] = (a == b) - F * x;
+    }
+  gsl_matrix_view M = gsl_matrix_view_array(S, m, m);
+  gsl_vector_view x = gsl_vector_view_array(v, m);
+  gsl_permutation *p = gsl_permutation_alloc(m);
+  int sign, rc = STATUS_OK;
+  if (!p) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+  if (gsl_linalg_LU_decomp(&M.matrix, p, &sign)
+      || !(gsl_linalg_LU_lndet(&M.matrix) > -700)
+      || gsl_linalg_LU_svx(&M.matrix, p, &x.vector))
+    rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point's derivative "
+                    "I - F dT/ds is singular on the state's sets");
+  gsl_permutation_free(p);
+  return rc;
+}
+#line 258 "paper/coulomb.nw"
+typedef struct {
+  double *lam;  /* n: the adjoint of the objective at fixed bounds */
+  char *held;   /* nc + nt: the state's held sets */
+  int *k, *c;   /* m <= nt: the pairs of coulomb_pairs */
+  double *v;    /* m: F dJ/ds_k, then mu */
+  double *S;    /* m x m: dT/ds, then I - F dT/ds */
+  double *mu;   /* nc: mu on the normal unknowns */
+  double *G2;   /* N + 1: the gradient of mu'T at fixed bounds */
+} Coulomb_work;
+
+static void work_free(Coulomb_work *w)
+{
+  free(w->lam), free(w->held), free(w->k), free(w->c);
+  free(w->v), free(w->S), free(w->mu), free(w->G2);
+}
+
+static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
+{
+  size_t n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
+  *w = (Coulomb_work) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
+                        malloc((nt + 1) * sizeof(int)), malloc((nt + 1) * sizeof(int)),
+                        malloc((nt + 1) * sizeof(double)),
+                        malloc((nt * nt + 1) * sizeof(double)),
+                        calloc(nc + 1, sizeof(double)),
+                        malloc(md->mesh->ncol * sizeof(double)) };
+  if (w->lam && w->held && w->k && w->c && w->v && w->S && w->mu && w->G2)
+    return STATUS_OK;
+  work_free(w);
+  return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+}
+#line 296 "paper/coulomb.nw"
+/* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
+   -sigma lam_t through the state */
+static void coulomb_rhs(const Model *md, const Objective *o, int m,
+                        Coulomb_work *w)
+{
+  const Dofs *d = md->dofs;
+  for (int a = 0; a < m; a++) {
+    int t = d->tangent[w->k[a]];
+    double sigma = md->T[d->nc + w->k[a]] > 0 ? -1 : 1;
+    w->v[a] = md->problem->friction * ((o->kind == OBJECTIVE_ENERGY) * fabs(md->Q[t])
+                                       - sigma * w->lam[t]);
+  }
+}
+
+static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
+                         double *G, Status *st)
+{
+  double F = md->problem->friction;
+  int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, st);
+  int m = rc ? 0 : coulomb_pairs(md, w->held, w->k, w->c);
+  if (rc || m == 0 || F == 0) return rc;
+  coulomb_rhs(md, o, m, w);
+  if ((rc = coulomb_sensitivity(md, m, w->k, w->c, w->S, st))
+      || (rc = coulomb_multiplier(m, F, w->S, w->v, st))) return rc;
+  for (int a = 0; a < m; a++) w->mu[w->c[a]] = w->v[a];
+  if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, st))) return rc;
+  for (int i = 0; i < md->mesh->ncol; i++) G[i] += w->G2[i];
+  return STATUS_OK;
+}
+
+int coulomb_gradient(const Model *md, const Objective *o, double *G, Status *st)
+{
+  Coulomb_work w;
+  int rc = work_alloc(md, &w, st);
+  if (rc) return rc;
+  rc = coulomb_terms(md, o, &w, G, st);
+  work_free(&w);
+  return rc;
+}
