@@ -24,7 +24,7 @@ static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
 /* (A q)_j, A stored with both triangles */
 static double row_times(const cholmod_sparse *A, int j, const double *q)
 {
-  const int *Ap = A->p, *Ai = A->i;
+  const Sparse_index *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x;
   double s = 0;
   for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * q[Ai[p]];
