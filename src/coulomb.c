@@ -4,77 +4,7 @@
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "coulomb.h"
-
-#line 173 "paper/coulomb.nw"
-/* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
-   normal unknown c at its node, held with T_c > 0; returns m */
-static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
-{
-  const Dofs *d = md->dofs;
-  int c = 0, m = 0;
-  for (int k = 0; k < d->nt; k++) {
-    while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
-    if (c < d->nc && d->contact_col[c] == d->tangent_col[k] && held[c]
-        && !held[d->nc + k] && md->T[c] > 0 && md->T[d->nc + k] != 0)
-      kk[m] = k, cc[m++] = c;
-  }
-  return m;
-}
-#line 195 "paper/coulomb.nw"
-/* (A q)_j, A stored with both triangles */
-static double row_times(const cholmod_sparse *A, int j, const double *q)
-{
-  const Sparse_index *Ap = A->p, *Ai = A->i;
-  const double *Ax = A->x;
-  double s = 0;
-  for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * q[Ai[p]];
-  return s;
-}
-
-/* S (m x m, row-major) = dT_c[a] / ds_k[b] on the state's sets: the
-   state's answer to the load -sigma_b of the slide at k[b] */
-static int coulomb_sensitivity(const Model *md, int m, const int *kk,
-                               const int *cc, double *S, Status *st)
-{
-  const Dofs *d = md->dofs;
-  double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
-  if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
-  int rc = STATUS_OK;
-  for (int b = 0; !rc && b < m; b++) {
-    int t = d->tangent[kk[b]];
-    e[t] = md->T[d->nc + kk[b]] > 0 ? 1 : -1;     /* -sigma = sign T_t */
-    rc = qp_adjoint(md->solver, e, q, NULL, st);
-    e[t] = 0;
-    for (int a = 0; !rc && a < m; a++)
-      S[(size_t) a * m + b] = row_times(md->A, d->contact[cc[a]], q);
-  }
-  free(e);
-  return rc;
-}
-#line 231 "paper/coulomb.nw"
-/* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
-static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
-{
-  for (int a = 0; a < m; a++)                  /* S := (I - F S)' */
-    for (int b = 0; b <= a; b++) {
-      double x = S[(size_t) a * m + b], y = S[(size_t) b * m + a];
-      S[(size_t) a * m + b] = (a == b) - F * y;
-      S[(size_t) b * m + a] = (a == b) - F * x;
-    }
-  gsl_matrix_view M = gsl_matrix_view_array(S, m, m);
-  gsl_vector_view x = gsl_vector_view_array(v, m);
-  gsl_permutation *p = gsl_permutation_alloc(m);
-  int sign, rc = STATUS_OK;
-  if (!p) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
-  if (gsl_linalg_LU_decomp(&M.matrix, p, &sign)
-      || !(gsl_linalg_LU_lndet(&M.matrix) > -700)
-      || gsl_linalg_LU_svx(&M.matrix, p, &x.vector))
-    rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point's derivative "
-                    "I - F dT/ds is singular on the state's sets");
-  gsl_permutation_free(p);
-  return rc;
-}
-#line 258 "paper/coulomb.nw"
+#line 254 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
@@ -105,7 +35,76 @@ static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
   work_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
-#line 296 "paper/coulomb.nw"
+#line 169 "paper/coulomb.nw"
+/* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
+   normal unknown c at its node, held with T_c > 0; returns m */
+static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
+{
+  const Dofs *d = md->dofs;
+  int c = 0, m = 0;
+  for (int k = 0; k < d->nt; k++) {
+    while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
+    if (c < d->nc && d->contact_col[c] == d->tangent_col[k] && held[c]
+        && !held[d->nc + k] && md->T[c] > 0 && md->T[d->nc + k] != 0)
+      kk[m] = k, cc[m++] = c;
+  }
+  return m;
+}
+#line 191 "paper/coulomb.nw"
+/* (A q)_j, A stored with both triangles */
+static double row_times(const cholmod_sparse *A, int j, const double *q)
+{
+  const Sparse_index *Ap = A->p, *Ai = A->i;
+  const double *Ax = A->x;
+  double s = 0;
+  for (int p = Ap[j]; p < Ap[j + 1]; p++) s += Ax[p] * q[Ai[p]];
+  return s;
+}
+
+/* S (m x m, row-major) = dT_c[a] / ds_k[b] on the state's sets: the
+   state's answer to the load -sigma_b of the slide at k[b] */
+static int coulomb_sensitivity(const Model *md, int m, const int *kk,
+                               const int *cc, double *S, Status *st)
+{
+  const Dofs *d = md->dofs;
+  double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
+  if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+  int rc = STATUS_OK;
+  for (int b = 0; !rc && b < m; b++) {
+    int t = d->tangent[kk[b]];
+    e[t] = md->T[d->nc + kk[b]] > 0 ? 1 : -1;     /* -sigma = sign T_t */
+    rc = qp_adjoint(md->solver, e, q, NULL, st);
+    e[t] = 0;
+    for (int a = 0; !rc && a < m; a++)
+      S[(size_t) a * m + b] = row_times(md->A, d->contact[cc[a]], q);
+  }
+  free(e);
+  return rc;
+}
+#line 227 "paper/coulomb.nw"
+/* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
+static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
+{
+  for (int a = 0; a < m; a++)                  /* S := (I - F S)' */
+    for (int b = 0; b <= a; b++) {
+      double x = S[(size_t) a * m + b], y = S[(size_t) b * m + a];
+      S[(size_t) a * m + b] = (a == b) - F * y;
+      S[(size_t) b * m + a] = (a == b) - F * x;
+    }
+  gsl_matrix_view M = gsl_matrix_view_array(S, m, m);
+  gsl_vector_view x = gsl_vector_view_array(v, m);
+  gsl_permutation *p = gsl_permutation_alloc(m);
+  int sign, rc = STATUS_OK;
+  if (!p) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+  if (gsl_linalg_LU_decomp(&M.matrix, p, &sign)
+      || !(gsl_linalg_LU_lndet(&M.matrix) > -700)
+      || gsl_linalg_LU_svx(&M.matrix, p, &x.vector))
+    rc = status_set(st, STATUS_NUMERIC, "coulomb: the fixed point's derivative "
+                    "I - F dT/ds is singular on the state's sets");
+  gsl_permutation_free(p);
+  return rc;
+}
+#line 292 "paper/coulomb.nw"
 /* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,

@@ -5,29 +5,22 @@
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-
-#line 1677 "paper/output.nw"
-/* J = every objective at the model's state, the peak's exponent q, NaN
-   where undefined (a body that lifts off has no pressure) */
-static void output_objectives(const Model *md, double q, double *J)
+#line 1499 "paper/output.nw"
+static void output_objectives(const Model *md, double q, double *J);
+static int history_pvd(Output *o, const Output_history *h, Status *st);
+#line 1376 "paper/output.nw"
+static void output_objectives_summary(FILE *f, const Objective *ob,
+                                      const Model *md, const Output_start *start)
 {
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
-    Objective o = { (Objective_kind) k, q };
-    Status st;
-    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
+  double J[OBJECTIVE_COUNT];
+  output_objectives(md, ob->q, J);
+  fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
+          J[ob->kind]);
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
+    if (k != OBJECTIVE_ENERGY && !isnan(start->J[k]))  /* initial_energy: above */
+      fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J[k]);
+    if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
-}
-
-int output_start(Output *o, const Model *md, const double *X, double moved,
-                 double q, Output_start *start, Status *st)
-{
-  int rc = output_state(o, "initial", md, X, st);
-  if (rc) return rc;
-  start->energy = md->energy;
-  start->cv = model_pressure_cv(md);
-  start->moved = moved;
-  output_objectives(md, q, start->J);
-  return STATUS_OK;
 }
 #line 1568 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
@@ -95,19 +88,6 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1632 "paper/output.nw"
-static int history_pvd(Output *o, const Output_history *h, Status *st)
-{
-  FILE *f = output_open(o, "iterates.pvd", st);
-  if (!f) return st->code;
-  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-             "version=\"0.1\">\n<Collection>\n");
-  for (int k = 0; k < h->n; k++)
-    fprintf(f, "<DataSet timestep=\"%d\" part=\"0\" file=\"iterates/"
-               ITERATE_VTU "\"/>\n", h->p[k].iteration, h->p[k].iteration);
-  fputs("</Collection>\n</VTKFile>\n", f);
-  return output_close(o, f, st);
-}
 #line 1596 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
@@ -140,6 +120,19 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
+#line 1632 "paper/output.nw"
+static int history_pvd(Output *o, const Output_history *h, Status *st)
+{
+  FILE *f = output_open(o, "iterates.pvd", st);
+  if (!f) return st->code;
+  fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n");
+  for (int k = 0; k < h->n; k++)
+    fprintf(f, "<DataSet timestep=\"%d\" part=\"0\" file=\"iterates/"
+               ITERATE_VTU "\"/>\n", h->p[k].iteration, h->p[k].iteration);
+  fputs("</Collection>\n</VTKFile>\n", f);
+  return output_close(o, f, st);
+}
 #line 1655 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
@@ -159,19 +152,28 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1376 "paper/output.nw"
-static void output_objectives_summary(FILE *f, const Objective *ob,
-                                      const Model *md, const Output_start *start)
+#line 1677 "paper/output.nw"
+/* J = every objective at the model's state, the peak's exponent q, NaN
+   where undefined (a body that lifts off has no pressure) */
+static void output_objectives(const Model *md, double q, double *J)
 {
-  double J[OBJECTIVE_COUNT];
-  output_objectives(md, ob->q, J);
-  fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
-          J[ob->kind]);
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
-    if (k != OBJECTIVE_ENERGY && !isnan(start->J[k]))  /* initial_energy: above */
-      fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J[k]);
-    if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
+    Objective o = { (Objective_kind) k, q };
+    Status st;
+    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
   }
+}
+
+int output_start(Output *o, const Model *md, const double *X, double moved,
+                 double q, Output_start *start, Status *st)
+{
+  int rc = output_state(o, "initial", md, X, st);
+  if (rc) return rc;
+  start->energy = md->energy;
+  start->cv = model_pressure_cv(md);
+  start->moved = moved;
+  output_objectives(md, q, start->J);
+  return STATUS_OK;
 }
 #line 1705 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,

@@ -98,7 +98,7 @@ PRINTF_LIKE(2, 3) int scene_blame(Loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Loader *L, const char *override, char *buf,
                   size_t size);
-#line 920 "paper/scene.nw"
+#line 916 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Entry *scene_find(Loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
@@ -109,7 +109,7 @@ int scene_apply_override(Loader *L, const char *o);
 int scene_for_memory(Loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1299 "paper/scene.nw"
+#line 1295 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
@@ -123,10 +123,10 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1796 "paper/scene.nw"
+#line 1777 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Loader *L, Scene *s);
-#line 1551 "paper/scene.nw"
+#line 1538 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s);
 #line 325 "paper/scene.nw"

@@ -1,4 +1,4 @@
-#line 1770 "paper/scene.nw"
+#line 1757 "paper/scene.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -7,71 +7,7 @@
 #include <unistd.h>
 #include "design.h"
 #include "scene_private.h"
-
-#line 1804 "paper/scene.nw"
-/* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
-static int read_arc_shape(Loader *L, Scene *s)
-{
-  int rc;
-  s->shape.kind = SHAPE_ARC;
-  if ((rc = scene_get(L, s, "design", "arc_x1"))
-      || (rc = scene_get(L, s, "design", "arc_x2"))
-      || (rc = scene_get(L, s, "design", "arc_radius")))
-    return rc;
-  if (!(s->shape.radius > 0)) return scene_blame(L, "the radius must be > 0");
-  return 0;
-}
-#line 1820 "paper/scene.nw"
-/* the keys of a line: line_start at x1 = a, line_end at x1 = b */
-static int read_line_shape(Loader *L, Scene *s)
-{
-  int rc;
-  s->shape.kind = SHAPE_LINE;
-  if ((rc = scene_get(L, s, "design", "line_start")))
-    return rc;
-  return scene_get(L, s, "design", "line_end");
-}
-#line 1832 "paper/scene.nw"
-/* the key of a constant */
-static int read_constant_shape(Loader *L, Scene *s)
-{
-  s->shape.kind = SHAPE_CONSTANT;
-  return scene_get(L, s, "design", "constant");
-}
-#line 1844 "paper/scene.nw"
-/* alpha0 = the shape of the keys read by read_keys, sampled */
-static int fill_formula(Loader *L, Scene *s,
-                        int (*read_keys)(Loader *, Scene *))
-{
-  Status why = {STATUS_OK, ""};
-  int rc = read_keys(L, s);
-  if (!rc && design_shape(&s->problem, &s->shape, s->alpha0, &why))
-    rc = scene_blame(L, "%s", why.msg);
-  return rc;
-}
-#line 1859 "paper/scene.nw"
-/* buf = file, relative to the directory of the scene file; 0 if it fits */
-static int resolve(const char *scene, const char *file, char *buf,
-                   size_t size)
-{
-  const char *slash = strrchr(scene, '/');
-  int n;
-  if (file[0] == '/' || !slash) n = snprintf(buf, size, "%s", file);
-  else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
-  return n < 0 || (size_t)n >= size;
-}
-#line 1872 "paper/scene.nw"
-/* buf = path, absolute; 0 if it fits */
-static int absolute(const char *path, char *buf, size_t size)
-{
-  char cwd[4096];
-  int n;
-  if (path[0] == '/') n = snprintf(buf, size, "%s", path);
-  else if (!getcwd(cwd, sizeof cwd)) return 1;
-  else n = snprintf(buf, size, "%s/%s", cwd, path);
-  return n < 0 || (size_t)n >= size;
-}
-#line 1889 "paper/scene.nw"
+#line 1870 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -99,7 +35,73 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 1919 "paper/scene.nw"
+#line 1772 "paper/scene.nw"
+static void resample(const Problem *p, const Rows *r, double *alpha0);
+static int shape_from_rows(Loader *L, Scene *s, const char *path, const Rows *r);
+#line 1785 "paper/scene.nw"
+/* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
+static int read_arc_shape(Loader *L, Scene *s)
+{
+  int rc;
+  s->shape.kind = SHAPE_ARC;
+  if ((rc = scene_get(L, s, "design", "arc_x1"))
+      || (rc = scene_get(L, s, "design", "arc_x2"))
+      || (rc = scene_get(L, s, "design", "arc_radius")))
+    return rc;
+  if (!(s->shape.radius > 0)) return scene_blame(L, "the radius must be > 0");
+  return 0;
+}
+#line 1801 "paper/scene.nw"
+/* the keys of a line: line_start at x1 = a, line_end at x1 = b */
+static int read_line_shape(Loader *L, Scene *s)
+{
+  int rc;
+  s->shape.kind = SHAPE_LINE;
+  if ((rc = scene_get(L, s, "design", "line_start")))
+    return rc;
+  return scene_get(L, s, "design", "line_end");
+}
+#line 1813 "paper/scene.nw"
+/* the key of a constant */
+static int read_constant_shape(Loader *L, Scene *s)
+{
+  s->shape.kind = SHAPE_CONSTANT;
+  return scene_get(L, s, "design", "constant");
+}
+#line 1825 "paper/scene.nw"
+/* alpha0 = the shape of the keys read by read_keys, sampled */
+static int fill_formula(Loader *L, Scene *s,
+                        int (*read_keys)(Loader *, Scene *))
+{
+  Status why = {STATUS_OK, ""};
+  int rc = read_keys(L, s);
+  if (!rc && design_shape(&s->problem, &s->shape, s->alpha0, &why))
+    rc = scene_blame(L, "%s", why.msg);
+  return rc;
+}
+#line 1840 "paper/scene.nw"
+/* buf = file, relative to the directory of the scene file; 0 if it fits */
+static int resolve(const char *scene, const char *file, char *buf,
+                   size_t size)
+{
+  const char *slash = strrchr(scene, '/');
+  int n;
+  if (file[0] == '/' || !slash) n = snprintf(buf, size, "%s", file);
+  else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
+  return n < 0 || (size_t)n >= size;
+}
+#line 1853 "paper/scene.nw"
+/* buf = path, absolute; 0 if it fits */
+static int absolute(const char *path, char *buf, size_t size)
+{
+  char cwd[4096];
+  int n;
+  if (path[0] == '/') n = snprintf(buf, size, "%s", path);
+  else if (!getcwd(cwd, sizeof cwd)) return 1;
+  else n = snprintf(buf, size, "%s/%s", cwd, path);
+  return n < 0 || (size_t)n >= size;
+}
+#line 1900 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -122,58 +124,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 2035 "paper/scene.nw"
-/* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
-static void resample(const Problem *p, const Rows *r, double *alpha0)
-{
-  int i, j = 0;
-  for (i = 0; i <= p->N; i++) {
-    double x = problem_node_x(p, i), t;
-    while (j + 2 < r->n && r->x[j + 1] < x) j++;
-    t = (x - r->x[j]) / (r->x[j + 1] - r->x[j]);
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
-  }
-}
-#line 1992 "paper/scene.nw"
-/* alpha0 = the rows r of the file at path on the design nodes, as they
-   are or resampled; refuse rows that are no shape on [a, b] */
-static int shape_from_rows(Loader *L, Scene *s, const char *path,
-                           const Rows *r)
-{
-  const Problem *p = &s->problem;
-  double tol = 1e-9 * fmax(fabs(p->a), fabs(p->b));
-  int i, j, same = r->n == p->N + 1;
-  if (r->n < 2)
-    return scene_blame(L, "%s has %d row%s x1 alpha: a shape needs rows at x1 = a "
-                       "and at x1 = b", path, r->n, r->n == 1 ? "" : "s");
-  for (j = 1; j < r->n; j++)
-    if (!(r->x[j] > r->x[j - 1]))
-      return scene_blame(L, "%s line %d: x1 = %.10g does not increase (line %d "
-                         "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
-                         r->x[j - 1]);
-  
-#line 2024 "paper/scene.nw"
-if (!(fabs(r->x[0] - p->a) <= tol))
-  return scene_blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
-                     path, r->line[0], r->x[0], p->a);
-if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
-  return scene_blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
-                     path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 2009 "paper/scene.nw"
-  for (i = 0; same && i <= p->N; i++)
-    same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
-  if (same) {
-    memcpy(s->alpha0, r->alpha, ((size_t)p->N + 1) * sizeof *s->alpha0);
-    return 0;
-  }
-  resample(p, r, s->alpha0);
-  snprintf(s->note, sizeof s->note, "design.file = %s: %d rows on [%.10g, "
-           "%.10g] resampled by linear interpolation onto the N + 1 = %d "
-           "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
-  return 0;
-}
-#line 1948 "paper/scene.nw"
+#line 1929 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Loader *L, Scene *s, const char *path)
 {
@@ -204,7 +155,58 @@ static int read_shape(Loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 2053 "paper/scene.nw"
+#line 1973 "paper/scene.nw"
+/* alpha0 = the rows r of the file at path on the design nodes, as they
+   are or resampled; refuse rows that are no shape on [a, b] */
+static int shape_from_rows(Loader *L, Scene *s, const char *path,
+                           const Rows *r)
+{
+  const Problem *p = &s->problem;
+  double tol = 1e-9 * fmax(fabs(p->a), fabs(p->b));
+  int i, j, same = r->n == p->N + 1;
+  if (r->n < 2)
+    return scene_blame(L, "%s has %d row%s x1 alpha: a shape needs rows at x1 = a "
+                       "and at x1 = b", path, r->n, r->n == 1 ? "" : "s");
+  for (j = 1; j < r->n; j++)
+    if (!(r->x[j] > r->x[j - 1]))
+      return scene_blame(L, "%s line %d: x1 = %.10g does not increase (line %d "
+                         "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
+                         r->x[j - 1]);
+  
+#line 2005 "paper/scene.nw"
+if (!(fabs(r->x[0] - p->a) <= tol))
+  return scene_blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
+                     path, r->line[0], r->x[0], p->a);
+if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
+  return scene_blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
+                     path, r->line[r->n - 1], r->x[r->n - 1], p->b);
+#line 1990 "paper/scene.nw"
+  for (i = 0; same && i <= p->N; i++)
+    same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
+  if (same) {
+    memcpy(s->alpha0, r->alpha, ((size_t)p->N + 1) * sizeof *s->alpha0);
+    return 0;
+  }
+  resample(p, r, s->alpha0);
+  snprintf(s->note, sizeof s->note, "design.file = %s: %d rows on [%.10g, "
+           "%.10g] resampled by linear interpolation onto the N + 1 = %d "
+           "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
+  return 0;
+}
+#line 2016 "paper/scene.nw"
+/* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
+static void resample(const Problem *p, const Rows *r, double *alpha0)
+{
+  int i, j = 0;
+  for (i = 0; i <= p->N; i++) {
+    double x = problem_node_x(p, i), t;
+    while (j + 2 < r->n && r->x[j + 1] < x) j++;
+    t = (x - r->x[j]) / (r->x[j + 1] - r->x[j]);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
+  }
+}
+#line 2034 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Loader *L, Scene *s)
 {
@@ -218,7 +220,7 @@ static int fill_file(Loader *L, Scene *s)
     return scene_blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 2070 "paper/scene.nw"
+#line 2051 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Loader *L, const Scene *s)
 {
@@ -233,7 +235,7 @@ static int check_alpha0(Loader *L, const Scene *s)
                  status_number(s->problem.C0prime, v[2]));
   return 0;
 }
-#line 2090 "paper/scene.nw"
+#line 2071 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Loader *L, Scene *s)
 {
