@@ -23,6 +23,7 @@ PRIVATE := qp_private opt_private plot_private design_private newton_private sce
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
+           src/objectives.sh src/fig-objectives.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
            src/man.sh src/completion.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
@@ -41,7 +42,8 @@ RUNS := $(EXAMPLES:%=out/example-%/summary.dat) \
 FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png) \
            figures/reproduction.tex figures/suite.tex \
            figures/fig-friction.pdf figures/fig-friction.png figures/friction.tex \
-           figures/fig-coulomb.pdf figures/fig-coulomb.png figures/coulomb.tex
+           figures/fig-coulomb.pdf figures/fig-coulomb.png figures/coulomb.tex \
+           figures/fig-objectives.pdf figures/fig-objectives.png figures/objectives.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -434,6 +436,12 @@ figures/fig-coulomb.pdf figures/fig-coulomb.png &: src/fig-coulomb.gp figures/co
 figures/reproduction.tex: src/reproduction.sh $(RUNS)
 	@mkdir -p figures
 	sh $< out > $@.partial && mv $@.partial $@
+# The optima of Example 5.1 for each objective (paper/objective.nw).
+figures/objectives.tex: src/objectives.sh data/example-5.1.scene bin/contactopt
+	@mkdir -p figures
+	sh $< data/example-5.1.scene out/objectives > $@.partial && mv $@.partial $@
+figures/fig-objectives.pdf figures/fig-objectives.png &: src/fig-objectives.gp figures/objectives.tex
+	gnuplot -e "runs='out/objectives'; out='figures/fig-objectives'" $<
 
 # Reference values (data/reference/) are independent computations, made by
 # hand when a change is meant to change the results; see the script.

@@ -305,7 +305,7 @@ static int optimize_coarse(Run *r, double *X, Status *st)
            N / 2, c.evaluations, c.seconds, N);
   return rc;
 }
-#line 786 "paper/main.nw"
+#line 788 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -342,11 +342,14 @@ static int command_optimize(Run *r, Status *st)
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
     rc = finish(r, &o, rc, st);
   }
+  double J0 = J->kind == OBJECTIVE_ENERGY ? start.energy : start.J[J->kind];
+  double J1 = rep.energy;                   /* the objective, E by default */
+  if (!rc && J->kind != OBJECTIVE_ENERGY) rc = objective_value(r->md, J, &J1, st);
   if (!rc)
-    printf("%s: E %.10g -> %.10g J/m in %d iterations, %d evaluations, "
-           "projected gradient %.2e (%s) -> %s/\n", r->s.path, start.energy,
-           rep.energy, rep.iterations, rep.evaluations, rep.pgnorm,
-           rep.stop_reason, r->dir);
+    printf("%s: %s %.10g -> %.10g%s in %d iterations, %d evaluations, "
+           "projected gradient %.2e (%s) -> %s/\n", r->s.path,
+           objective_symbol(J->kind), J0, J1, objective_unit(J->kind),
+           rep.iterations, rep.evaluations, rep.pgnorm, rep.stop_reason, r->dir);
   if (!rc && !strcmp(rep.stop_reason, "interrupted"))
     rc = status_set(st, STATUS_INTERRUPTED, "%s: interrupted by signal %d at "
                     "iteration %d: the files of the best design so far are in %s/",
@@ -363,7 +366,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 853 "paper/main.nw"
+#line 858 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -382,7 +385,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 883 "paper/main.nw"
+#line 888 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -398,7 +401,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 911 "paper/main.nw"
+#line 916 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -17,6 +17,10 @@ typedef struct {
 /* energy, q = 8 */
 Objective objective_default(void);
 const char *objective_name(Objective_kind k);  /* or "?" */
+/* the symbol the messages give J (E for the energy, else the name), and
+   its unit: " J/m", or "" for a dimensionless one */
+const char *objective_symbol(Objective_kind k);
+const char *objective_unit(Objective_kind k);
 /* J at the model's last state (E itself for energy); STATUS_NUMERIC for
    a pressure objective of a body that no contact node presses */
 int objective_value(const Model *md, const Objective *o, double *J,
@@ -34,6 +38,10 @@ int objective_same_sets(const Model *md, char *held, int write);
    path gives (4.8); under Coulomb friction the gradient through the fixed
    point (coulomb_gradient).  A checked error before a solve. */
 int objective_gradient(Model *md, const Objective *o, double *G, Status *st);
+/* G as objective_gradient, and dJ (may be NULL) the rounding of J at the
+   last state: its evaluation's and its state's (below) */
+int objective_gradient_rounding(Model *md, const Objective *o, double *G,
+                                double *dJ, Status *st);
 /* G (N+1) = the gradient at fixed slip bounds of J (o; NULL: none) plus
    t'T (t, nc, may be NULL, zero off the held contact unknowns); lam (n)
    and held_out (nc + nt), each may be NULL, receive the adjoint and the

@@ -2,8 +2,9 @@
 # Their gradients by the adjoint agree with finite differences at the
 # initial designs of the shipped scenes (with friction too) and on N = 32
 # in plane strain; SLSQP minimises each to a KKT point, and so does MMA,
-# at SLSQP's optimum of the compliance; every bad input is refused in one
-# line with exit 2.
+# at SLSQP's optimum of the compliance from the arc and from a line
+# start; SLSQP in the euclidean metric converges on both pressure
+# objectives; every bad input is refused in one line with exit 2.
 . tests/lib.sh
 for scene in data/example-5.1.scene data/example-5.2.scene data/example-5.2-flat.scene \
              data/example-5.1-tresca.scene; do
@@ -60,6 +61,25 @@ if [ "$(cat $TMP/rc-mma)" -eq 0 ] && [ "$(cat $TMP/rc-slsqp)" -eq 0 ]; then
 else
   fail "optimize compliance, mma and slsqp: $(cat $TMP/err-mma $TMP/err-slsqp)"
 fi
+# from a line start too: a KKT point of its own (the compliance has more
+# than one), the same for MMA and SLSQP to 1e-6 relative
+line="-s design.initial=line -s design.line_start=0.045 -s design.line_end=0"
+for m in slsqp mma; do
+  $BIN optimize data/example-5.1.scene -o $TMP/l-$m -s objective.kind=compliance $line \
+    -s optimizer.method=$m -s optimizer.tol=1e-9 >/dev/null 2>$TMP/err-$m
+  echo $? > $TMP/rc-$m
+done
+check "line start: mma and slsqp converge (exit $(cat $TMP/rc-mma), $(cat $TMP/rc-slsqp))" \
+  holds 'a == 0 && b == 0' a=$(cat $TMP/rc-mma) b=$(cat $TMP/rc-slsqp)
+check "line start: mma and slsqp, the same least compliance to 1e-6 ($(value objective_value $TMP/l-mma), $(value objective_value $TMP/l-slsqp))" \
+  near_ref "$(value objective_value $TMP/l-slsqp)" "$(value objective_value $TMP/l-mma)" 1e-6
+# the pressure objectives: SLSQP in the euclidean metric converges from the arc
+for kind in pressure_spread pressure_peak; do
+  $BIN optimize data/example-5.1.scene -o $TMP/p-$kind -s objective.kind=$kind \
+    -s optimizer.method=slsqp -s optimizer.metric=euclidean >/dev/null 2>$TMP/err
+  check "slsqp euclidean $kind: stop_reason $(value stop_reason $TMP/p-$kind) is converged" \
+    holds 'r == 1' r=$(grep -c '^stop_reason converged' $TMP/p-$kind/summary.dat)
+done
 $BIN optimize data/example-5.1.scene -o $TMP/e-mma -s optimizer.method=mma >/dev/null 2>$TMP/err; rc=$?
 check "mma energy: exit $rc = 3, one line, stop_reason $(value stop_reason $TMP/e-mma) is no_progress, its files written" \
   holds 'rc == 3 && lines == 1 && r == 1 && f == 1' rc=$rc lines=$(wc -l <$TMP/err) \
