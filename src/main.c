@@ -291,27 +291,40 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
   return rc ? rc : model_solve(r->md, X, st);
 }
 #line 763 "paper/main.nw"
-/* X = the coarse-to-fine start when the levels of the run are > 1 */
-static int optimize_coarse(Run *r, double *X, Status *st)
+/* X = the coarse-to-fine start when the levels of the run are > 1; c its
+   report (levels 1 and no cost without) */
+static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
 {
   int levels = opt_levels(&r->s.problem, &r->s.optimizer), N = r->s.problem.N;
-  Opt_report c;
+  memset(c, 0, sizeof *c);
+  c->levels = 1;
   if (levels < 2) return STATUS_OK;
   int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
-                            levels, X, r->md->cm, &c, st);
+                            levels, X, r->md->cm, c, st);
+  c->levels = levels;
   if (!rc)
     printf("%s: coarse to fine: N = %d .. %d in %d evaluations, %.2f s; "
            "N = %d starts from their optimum\n", r->s.path, N >> (levels - 1),
-           N / 2, c.evaluations, c.seconds, N);
+           N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 788 "paper/main.nw"
+#line 784 "paper/main.nw"
+/* rep, the fine level's report, with the coarse levels' c added */
+static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
+{
+  rep->levels = c->levels;
+  rep->coarse_evaluations = c->evaluations;
+  rep->coarse_seconds = c->seconds;
+  rep->seconds += c->seconds;
+  return STATUS_OK;
+}
+#line 804 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
   Output o;
   Output_start start;
-  Opt_report rep;
+  Opt_report rep, coarse;
   int n = r->s.problem.N + 1, rc;
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
@@ -331,8 +344,9 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved,
                                               r->s.optimizer.objective.q, &start, st))
-        && !(rc = optimize_coarse(r, X, st))
+        && !(rc = optimize_coarse(r, X, &coarse, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
+        && !(rc = optimize_report_coarse(&rep, &coarse))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
         && !(rc = J->kind == OBJECTIVE_ENERGY ? grad_energy(r->md, G, st)
@@ -366,7 +380,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 858 "paper/main.nw"
+#line 875 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -385,7 +399,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 888 "paper/main.nw"
+#line 905 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -401,7 +415,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 916 "paper/main.nw"
+#line 933 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -53,9 +53,12 @@ typedef struct {
   double model_seconds;   /* of it, building and solving Newton's models */
   double state_seconds;   /* of it, state solves and gradients */
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
+  int levels;             /* meshes of a coarse-to-fine start, 1 without */
+  int coarse_evaluations; /* evaluations on the coarse meshes */
+  double coarse_seconds;  /* their wall time, part of seconds */
 } Opt_report;
 
-#line 237 "paper/opt.nw"
+#line 240 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 */
 Opt_options opt_options_default(Opt_method method);

@@ -195,6 +195,9 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
+  if (r->levels > 1)
+    fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",
+            r->levels, r->coarse_evaluations, r->coarse_seconds);
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",

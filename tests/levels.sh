@@ -31,6 +31,12 @@ for K in 16 32; do
     sh -c "! grep -q 'coarse to fine' $TMP/one.log"
   check "N = $N: the levels reach the single level's E* to 1e-9 relative and its design to 1e-7 C0" \
     agree $TMP/one-$N $TMP/lev-$N
+  c=$(sed -n 's/.*coarse to fine: N = [0-9]* \.\. [0-9]* in \([0-9]*\) evaluations, \([0-9.]*\) s.*/\1 \2/p' $TMP/lev.log)
+  check "N = $N: summary.dat counts the coarse levels: levels $(value levels $TMP/lev-$N), coarse_evaluations $(value coarse_evaluations $TMP/lev-$N) and coarse_seconds $(value coarse_seconds $TMP/lev-$N) as printed ($c), within seconds $(value seconds $TMP/lev-$N)" \
+    holds 'l >= 2 && ce == c1 && cs > 0 && cs <= s && (cs - c2 <= 0.01 && c2 - cs <= 0.01)' \
+      l="$(value levels $TMP/lev-$N)" ce="$(value coarse_evaluations $TMP/lev-$N)" c1="${c% *}" \
+      cs="$(value coarse_seconds $TMP/lev-$N)" c2="${c#* }" s="$(value seconds $TMP/lev-$N)"
+  check "N = $N: one level writes no levels line" sh -c "! grep -q '^levels ' $TMP/one-$N/summary.dat"
 done
 $BIN optimize $ex -s optimizer.levels=1 -o $TMP/one-16 > /dev/null
 $BIN optimize $ex -o $TMP/lev-16 > $TMP/lev.log
