@@ -254,12 +254,15 @@ faults: $(PROGRAM) $(FAULT_SHIM)
 build/bench/bench_cholmod: tests/bench/bench_cholmod.c $(OBJ)
 	@mkdir -p build/bench
 	$(CC) $(CFLAGS) -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
+build/bench/orderings: tests/bench/orderings.c $(OBJ)
+	@mkdir -p build/bench
+	$(CC) $(CFLAGS) -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 build/bench/walltime: tests/bench/walltime.c
 	@mkdir -p build/bench
 	$(CC) $(CFLAGS) -o $@ $<
 -include $(wildcard build/bench/*.d)
 
-bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
+bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime build/bench/orderings
 	@sh tests/bench/state.sh
 	@sh tests/bench/performance.sh
 	@sh tests/bench/optimize.sh
@@ -267,6 +270,7 @@ bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime
 	@sh tests/bench/threads.sh
 	@sh tests/bench/cholmod_long.sh
 	@sh tests/bench/levels.sh
+	@sh tests/bench/orderings.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of
@@ -349,7 +353,7 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex \
-                       paper/cholmod-long.tex paper/bench-levels.tex | deps
+                       paper/cholmod-long.tex paper/bench-levels.tex paper/bench-orderings.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
 	    || { tail -40 contactopt.log; exit 1; }; \
