@@ -1,4 +1,4 @@
-#line 337 "paper/opt.nw"
+#line 339 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,7 +6,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1132 "paper/opt.nw"
+#line 1139 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -23,7 +23,7 @@ typedef struct {
   int fresh;              /* iterates accepted since MMA (re)started */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1151 "paper/opt.nw"
+#line 1158 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -44,7 +44,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < n - 1; j++) grad[j] += q->R[(size_t) i * (n - 1) + j] * G[i];
   for (int j = 0; j < n - 1; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1175 "paper/opt.nw"
+#line 1182 "paper/opt.nw"
 static void mma_constraints(unsigned m, double *c, unsigned ny,
                             const double *y, double *grad, void *data)
 {
@@ -52,20 +52,9 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   const Design_set *B = q->ev->B;
   const double *R = q->R;
   unsigned n = ny + 1;
-  double d = B->delta / B->C0, *X = q->w;
+  double *X = q->w;
   mma_design(q, y, X);
-  
-#line 772 "paper/opt.nw"
-for (unsigned i = 0; i < n; i++) {
-  c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
-  c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
-}
-for (unsigned i = 0; i + 1 < n; i++) {
-  double rise = (X[i + 1] - X[i]) / B->C0;
-  c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
-  c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
-}
-#line 1185 "paper/opt.nw"
+  opt_constraints(B, X, n, c);
   if (grad)
     for (unsigned j = 0; j < ny; j++) {
       for (unsigned i = 0; i < n; i++) {
@@ -80,7 +69,7 @@ for (unsigned i = 0; i + 1 < n; i++) {
     }
   (void) m;
 }
-#line 1211 "paper/opt.nw"
+#line 1218 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
@@ -101,7 +90,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return ev->E / q->scale;
 }
-#line 1234 "paper/opt.nw"
+#line 1241 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -119,7 +108,7 @@ static void mma_accept(Mma *q)
   if (why) mma_stop(q, why);
   q->k++;
 }
-#line 1256 "paper/opt.nw"
+#line 1263 "paper/opt.nw"
 static int mma_schur(Mma *q);
 /* Z, R and sigma at X, the evaluator's design */
 static int mma_setup(Mma *q, const double *X)
@@ -139,7 +128,7 @@ static int mma_setup(Mma *q, const double *X)
   q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   return STATUS_OK;
 }
-#line 1281 "paper/opt.nw"
+#line 1288 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
@@ -155,7 +144,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1305 "paper/opt.nw"
+#line 1312 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -169,14 +158,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1296 "paper/opt.nw"
+#line 1303 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1325 "paper/opt.nw"
+#line 1332 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
@@ -195,7 +184,7 @@ int opt_mma(Evaluator *ev, double *X)
   free(work);
   return rc;
 }
-#line 1347 "paper/opt.nw"
+#line 1354 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
@@ -211,7 +200,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   nlopt_destroy(q->opt);
   
-#line 1369 "paper/opt.nw"
+#line 1376 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -227,6 +216,6 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1362 "paper/opt.nw"
+#line 1369 "paper/opt.nw"
   return rc;
 }

@@ -3,7 +3,7 @@
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 401 "paper/opt.nw"
+#line 403 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -40,6 +40,8 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg);
 int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
 void opt_idle_detail(Evaluator *ev);
+/* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
+void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c);
 /* the k-th iterate of an NLopt method, at the evaluator's design, kept
    in bestX: its stop reason, or NULL to go on (ev->failed if pi failed) */
 const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX);
