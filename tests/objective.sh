@@ -62,11 +62,16 @@ else
   fail "optimize compliance, mma and slsqp: $(cat $TMP/err-mma $TMP/err-slsqp)"
 fi
 # from a line start too: a KKT point of its own (the compliance has more
-# than one), the same for MMA and SLSQP to 1e-6 relative
+# than one), the same for MMA and SLSQP to 1e-6 relative, to
+# optimizer.tol = 1e-8: from this start MMA reaches pi = 1.5e-9 and no
+# lower under Prescott's and Haswell's kernels, where the rounding of the
+# compliance allows no smaller pi (no_progress), and 1e-9 under others, so
+# 1e-9 asks more than the rounding allows; 1e-8 converges under every
+# family (measured under seven)
 line="-s design.initial=line -s design.line_start=0.045 -s design.line_end=0"
 for m in slsqp mma; do
   $BIN optimize data/example-5.1.scene -o $TMP/l-$m -s objective.kind=compliance $line \
-    -s optimizer.method=$m -s optimizer.tol=1e-9 >/dev/null 2>$TMP/err-$m
+    -s optimizer.method=$m -s optimizer.tol=1e-8 >/dev/null 2>$TMP/err-$m
   echo $? > $TMP/rc-$m
 done
 check "line start: mma and slsqp converge (exit $(cat $TMP/rc-mma), $(cat $TMP/rc-slsqp))" \
