@@ -1,11 +1,11 @@
-#line 361 "paper/opt.nw"
+#line 363 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 375 "paper/opt.nw"
+#line 377 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -25,7 +25,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 433 "paper/opt.nw"
+#line 435 "paper/opt.nw"
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -49,7 +49,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 491 "paper/opt.nw"
+#line 493 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -58,7 +58,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 502 "paper/opt.nw"
+#line 504 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -71,7 +71,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 535 "paper/opt.nw"
+#line 537 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -95,7 +95,7 @@ void opt_idle_detail(Evaluator *ev)
            "the rounding of %s allows no smaller pi", ev->idle, J, ev->noise,
            objective_unit(k), J);
 }
-#line 563 "paper/opt.nw"
+#line 565 "paper/opt.nw"
 const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
 {
   double pg;
@@ -110,22 +110,38 @@ const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 774 "paper/opt.nw"
+#line 773 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
   double d = B->delta / B->C0;
-for (unsigned i = 0; i < n; i++) {
-  c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
-  c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
+  for (unsigned i = 0; i < n; i++) {
+    c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
+    c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
+  }
+  for (unsigned i = 0; i + 1 < n; i++) {
+    double rise = (X[i + 1] - X[i]) / B->C0;
+    c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
+    c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
+  }
 }
-for (unsigned i = 0; i + 1 < n; i++) {
-  double rise = (X[i + 1] - X[i]) / B->C0;
-  c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
-  c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
+#line 792 "paper/opt.nw"
+/* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
+void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
+{
+  for (unsigned j = 0; j < ny; j++) {
+    for (unsigned i = 0; i < n; i++) {
+      grad[2 * i * ny + j] = -R[i * ny + j];
+      grad[(2 * i + 1) * ny + j] = R[i * ny + j];
+    }
+    for (unsigned i = 0; i + 1 < n; i++) {
+      double rise = R[(i + 1) * ny + j] - R[i * ny + j];
+      grad[(2 * n + 2 * i) * ny + j] = rise;
+      grad[(2 * n + 2 * i + 1) * ny + j] = -rise;
+    }
+  }
 }
-}
-#line 1750 "paper/opt.nw"
+#line 1745 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -155,11 +171,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1793 "paper/opt.nw"
+#line 1788 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1779 "paper/opt.nw"
+#line 1774 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -170,14 +186,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1810 "paper/opt.nw"
+#line 1805 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1845 "paper/opt.nw"
+#line 1840 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -185,7 +201,7 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1859 "paper/opt.nw"
+#line 1854 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 int opt_levels(const Problem *p, const Opt_options *o)
@@ -197,7 +213,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1876 "paper/opt.nw"
+#line 1871 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st);
@@ -223,7 +239,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1905 "paper/opt.nw"
+#line 1900 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st)

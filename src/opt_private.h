@@ -3,7 +3,7 @@
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 403 "paper/opt.nw"
+#line 405 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -42,6 +42,8 @@ int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
 void opt_idle_detail(Evaluator *ev);
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c);
+/* grad ((4n - 2) x ny) = d c / d y for X = X0 + C0 R y, R n x ny */
+void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad);
 /* the k-th iterate of an NLopt method, at the evaluator's design, kept
    in bestX: its stop reason, or NULL to go on (ev->failed if pi failed) */
 const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX);
