@@ -6,7 +6,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1145 "paper/opt.nw"
+#line 1148 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -23,7 +23,7 @@ typedef struct {
   int fresh;              /* iterates accepted since MMA (re)started */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1164 "paper/opt.nw"
+#line 1167 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -44,7 +44,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < n - 1; j++) grad[j] += q->R[(size_t) i * (n - 1) + j] * G[i];
   for (int j = 0; j < n - 1; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1188 "paper/opt.nw"
+#line 1191 "paper/opt.nw"
 static void mma_constraints(unsigned m, double *c, unsigned ny,
                             const double *y, double *grad, void *data)
 {
@@ -58,7 +58,7 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   if (grad) opt_constraints_gradient(R, n, ny, grad);
   (void) m;
 }
-#line 1213 "paper/opt.nw"
+#line 1216 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
@@ -79,7 +79,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return ev->E / q->scale;
 }
-#line 1236 "paper/opt.nw"
+#line 1239 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -97,7 +97,7 @@ static void mma_accept(Mma *q)
   if (why) mma_stop(q, why);
   q->k++;
 }
-#line 1258 "paper/opt.nw"
+#line 1261 "paper/opt.nw"
 static int mma_schur(Mma *q);
 /* Z, R and sigma at X, the evaluator's design */
 static int mma_setup(Mma *q, const double *X)
@@ -117,7 +117,7 @@ static int mma_setup(Mma *q, const double *X)
   q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   return STATUS_OK;
 }
-#line 1283 "paper/opt.nw"
+#line 1286 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
@@ -133,7 +133,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1307 "paper/opt.nw"
+#line 1310 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -147,14 +147,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1298 "paper/opt.nw"
+#line 1301 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1327 "paper/opt.nw"
+#line 1330 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
@@ -173,7 +173,7 @@ int opt_mma(Evaluator *ev, double *X)
   free(work);
   return rc;
 }
-#line 1349 "paper/opt.nw"
+#line 1352 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
@@ -189,7 +189,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   nlopt_destroy(q->opt);
   
-#line 1371 "paper/opt.nw"
+#line 1374 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -205,6 +205,6 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1364 "paper/opt.nw"
+#line 1367 "paper/opt.nw"
   return rc;
 }
