@@ -39,7 +39,8 @@ for N in 64 256 512 1024; do
       || fail "optimize $method at N = $N, exit status $?: $(tail -n 2 "$tmp/log")"
     awk -v N=$N -v m=$method -v t="$(cut -d' ' -f1 "$tmp/t")" -v ref=$ref '{ v[$1] = $2 } END {
         if (!("iterations" in v && "state_seconds" in v && "seconds" in v)) exit 1
-        print N, m, t, v["iterations"], v["evaluations"], v["seconds"], v["state_seconds"], v["stop_reason"], ref,
+        print N, m, t, v["iterations"], v["evaluations"] + v["coarse_evaluations"], v["seconds"],
+              v["state_seconds"] + v["coarse_seconds"], v["stop_reason"], ref,
               v["monitor_seconds"] + 0 }' \
       "$d/summary.dat" >> $raw || fail "optimize $method at N = $N: no summary"
     tail -n 1 $raw
@@ -67,7 +68,8 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" '
         stop[i] == "converged" ? "" : " (" stop[i] ")"
     print "\\bottomrule\\end{tabular}\\\\[2pt]"
     printf "{\\footnotesize Measured by \\texttt{make bench} on %s, %d cores. ", date, cores
-    print "\\emph{whole}: the process, files included; \\emph{state}: its state solves and gradients;"
+    print "\\emph{solves}: every state solve, those of the coarse meshes of a coarse-to-fine start included;"
+    print "\\emph{whole}: the process, files included; \\emph{state}: its state solves and gradients, and the whole time of the coarse meshes;"
     print "\\emph{outside}: the share of the optimisation (\\texttt{seconds} less the monitor) not in them;"
     print "\\emph{monitor}: the output of the command line at each iterate (its line, \\texttt{iterates/*.vtu});"
     print "\\emph{ratio}: whole over one CHOLMOD analyse, factorise and solve of the same $N$.}"
