@@ -270,14 +270,15 @@ static int command_gradcheck(Run *r, Status *st)
 #line 729 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
-  printf("%4d  E = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
-         p->iteration, p->energy, p->pgnorm, p->active, p->state_iterations,
-         p->seconds);
+  const Output_history *h = data;
+  printf("%4d  %s = %.12g  pg = %.3e  active %d  state its %d  %.3f s\n",
+         p->iteration, objective_symbol(h->objective), p->value, p->pgnorm,
+         p->active, p->state_iterations, p->seconds);
   fflush(stdout);
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 745 "paper/main.nw"
+#line 746 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -290,7 +291,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 763 "paper/main.nw"
+#line 764 "paper/main.nw"
 /* X = the coarse-to-fine start when the levels of the run are > 1; c its
    report (levels 1 and no cost without) */
 static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
@@ -308,7 +309,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 784 "paper/main.nw"
+#line 785 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -318,7 +319,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 804 "paper/main.nw"
+#line 805 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -330,6 +331,7 @@ static int command_optimize(Run *r, Status *st)
   Output_history *h = output_history_new(n, st);
   Design_multipliers *m = design_multipliers_new(&B, st);
   const Objective *J = &r->s.optimizer.objective;
+  if (h) h->objective = J->kind;
   r->md->fixed_point_rounding = 1;
   if (r->s.problem.contact == CONTACT_COULOMB && r->s.optimizer.method == OPT_NEWTON)
     rc = no_newton(r, st);
@@ -380,7 +382,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 875 "paper/main.nw"
+#line 877 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -399,7 +401,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 905 "paper/main.nw"
+#line 907 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -415,7 +417,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 933 "paper/main.nw"
+#line 935 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -44,7 +44,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
     ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
-  ev->E = o->kind == OBJECTIVE_ENERGY ? ev->md->energy : J;
+  ev->J = o->kind == OBJECTIVE_ENERGY ? ev->md->energy : J;
   ev->noise = o->kind == OBJECTIVE_ENERGY ? model_energy_rounding(ev->md) : dJ;
   ev->have = 1;
   return STATUS_OK;
@@ -63,7 +63,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
   double start = resources_clock();
-  Opt_progress p = { iteration, ev->E, pg, ev->solves, ev->md->report.active,
+  Opt_progress p = { iteration, ev->J, pg, ev->solves, ev->md->report.active,
                      ev->md->report.iterations, start - ev->start };
   int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
   ev->rep->monitor_seconds += resources_clock() - start;
@@ -78,10 +78,10 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
 {
   int measured = k == 0 || judged || pg < 0.5 * ev->pg_best
-              || ev->E < ev->last_E - (ev->noise + ev->last_noise);
+              || ev->J < ev->last_J - (ev->noise + ev->last_noise);
   ev->idle = measured ? 0 : ev->idle + 1;
   if (k == 0 || pg < ev->pg_best) ev->pg_best = pg;
-  ev->last_E = ev->E, ev->last_noise = ev->noise;
+  ev->last_J = ev->J, ev->last_noise = ev->noise;
   return ev->idle;
 }
 
@@ -141,7 +141,7 @@ void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *
     }
   }
 }
-#line 1748 "paper/opt.nw"
+#line 1842 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -171,11 +171,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1791 "paper/opt.nw"
+#line 1885 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1777 "paper/opt.nw"
+#line 1871 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -186,14 +186,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1808 "paper/opt.nw"
+#line 1902 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1843 "paper/opt.nw"
+#line 1937 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -201,7 +201,7 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1857 "paper/opt.nw"
+#line 1951 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 int opt_levels(const Problem *p, const Opt_options *o)
@@ -213,7 +213,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1874 "paper/opt.nw"
+#line 1968 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st);
@@ -239,7 +239,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1903 "paper/opt.nw"
+#line 1997 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, cholmod_common *cm,
                      Opt_report *coarse, Status *st)

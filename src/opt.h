@@ -27,7 +27,7 @@ typedef struct {
 #line 203 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
-  double energy;          /* E at the iterate */
+  double value;           /* the objective at the iterate, E by default */
   double pgnorm;          /* the projected-gradient norm pi */
   int state_solves;       /* state solves so far */
   int active;             /* contact nodes at their bound */

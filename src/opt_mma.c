@@ -6,15 +6,20 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1148 "paper/opt.nw"
+#line 1157 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
-  int n;                  /* N+1; MMA's variables y are n - 1 */
+  int n;                  /* N+1 */
+  int ny;                 /* MMA's variables y: n - 1 less the fixed faces */
   double *X0;             /* n: the design at y = 0, in B */
-  double *R;              /* n x (n-1), row-major: X = X0 + C0 R y */
+  double *R;              /* n x ny, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is J / sigma */
-  double *S, *Z;          /* n x n, n x (n-1): work of the metric */
+  double *S, *Z;          /* n x n, n x ny: work of the metric */
+  gsl_matrix *A;          /* n x 2n: the area's and the faces' normals */
+  Design_multipliers *mult;  /* of the iterate's KKT conditions */
+  char *fixed, *faces;    /* 4n - 2 each: the faces fixed at the start, at
+                             the last iterate (1 each, in opt_constraints' order) */
   double *X, *w;          /* n each: work */
   double best, best_noise;  /* the lowest J of an iterate, its rounding */
   double *bestX;          /* n: the last accepted iterate */
@@ -23,14 +28,14 @@ typedef struct {
   int fresh;              /* iterates accepted since MMA (re)started */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1167 "paper/opt.nw"
+#line 1181 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
-  int n = q->n;
+  int n = q->n, ny = q->ny;
   for (int i = 0; i < n; i++) {
     double s = 0;
-    for (int j = 0; j < n - 1; j++) s += q->R[(size_t) i * (n - 1) + j] * y[j];
+    for (int j = 0; j < ny; j++) s += q->R[(size_t) i * ny + j] * y[j];
     X[i] = q->X0[i] + q->ev->B->C0 * s;
   }
 }
@@ -38,28 +43,30 @@ static void mma_design(const Mma *q, const double *y, double *X)
 /* grad = C0 R' G / sigma */
 static void mma_gradient(const Mma *q, const double *G, double *grad)
 {
-  int n = q->n;
-  for (int j = 0; j < n - 1; j++) grad[j] = 0;
+  int n = q->n, ny = q->ny;
+  for (int j = 0; j < ny; j++) grad[j] = 0;
   for (int i = 0; i < n; i++)
-    for (int j = 0; j < n - 1; j++) grad[j] += q->R[(size_t) i * (n - 1) + j] * G[i];
-  for (int j = 0; j < n - 1; j++) grad[j] *= q->ev->B->C0 / q->scale;
+    for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
+  for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1191 "paper/opt.nw"
+#line 1205 "paper/opt.nw"
 static void mma_constraints(unsigned m, double *c, unsigned ny,
                             const double *y, double *grad, void *data)
 {
   Mma *q = data;
   const Design_set *B = q->ev->B;
   const double *R = q->R;
-  unsigned n = ny + 1;
+  unsigned n = q->n;
   double *X = q->w;
   mma_design(q, y, X);
   opt_constraints(B, X, n, c);
   if (grad) opt_constraints_gradient(R, n, ny, grad);
-  (void) m;
+  for (unsigned i = 0; i < m; i++)
+    if (q->fixed[i]) c[i] = -1;       /* met by every y; its gradient is 0 */
 }
-#line 1216 "paper/opt.nw"
+#line 1231 "paper/opt.nw"
 static void mma_accept(Mma *q);
+static int mma_faces(Mma *q, const double *X, char *face);
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
 {
@@ -73,13 +80,13 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   }
   if ((ev->failed = opt_evaluate(ev, q->X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad) mma_gradient(q, ev->G, grad);
-  if (ev->E <= q->best + q->best_noise + ev->noise
+  if (ev->J <= q->best + q->best_noise + ev->noise
       && (q->k == 0 || memcmp(ev->X, q->bestX, q->n * sizeof *ev->X))) mma_accept(q);
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
   (void) ny;
-  return ev->E / q->scale;
+  return ev->J / q->scale;
 }
-#line 1239 "paper/opt.nw"
+#line 1255 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -89,39 +96,91 @@ static void mma_stop(Mma *q, const char *why)
 static void mma_accept(Mma *q)
 {
   Evaluator *ev = q->ev;
-  if (ev->E < q->best) q->best = ev->E, q->best_noise = ev->noise;
+  if (ev->J < q->best) q->best = ev->J, q->best_noise = ev->noise;
   q->stalled = 0;
   q->fresh += q->k > 0;
   const char *why = opt_nlopt_iterate(ev, q->k, q->bestX);
   if (ev->failed) { nlopt_force_stop(q->opt); return; }
   if (why) mma_stop(q, why);
+  else if ((ev->failed = mma_faces(q, ev->X, q->faces))) nlopt_force_stop(q->opt);
+  else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1261 "paper/opt.nw"
+#line 1279 "paper/opt.nw"
+/* face[c] = 1 for each inequality c of opt_constraints on which X lies,
+   within 1e-3 tol C0, with a positive multiplier */
+static int mma_faces(Mma *q, const double *X, char *face)
+{
+  Evaluator *ev = q->ev;
+  const Design_multipliers *mu = q->mult;
+  int n = q->n, rc;
+  double *c = q->S, near = -1e-3 * ev->o->tol;   /* 4n - 2 <= n x n */
+  if ((rc = design_kkt(ev->B, X, ev->G, ev->tau, NULL, q->mult, NULL, ev->st))) return rc;
+  opt_constraints(ev->B, X, n, c);
+  for (int i = 0; i < n; i++) {
+    face[2 * i] = c[2 * i] >= near && mu->lower[i] > 0;
+    face[2 * i + 1] = c[2 * i + 1] >= near && mu->upper[i] > 0;
+  }
+  for (int i = 0; i + 1 < n; i++) {
+    face[2 * n + 2 * i] = c[2 * n + 2 * i] >= near && mu->up[i] > 0;
+    face[2 * n + 2 * i + 1] = c[2 * n + 2 * i + 1] >= near && mu->down[i] > 0;
+  }
+  return STATUS_OK;
+}
+#line 1308 "paper/opt.nw"
+static int mma_basis(Mma *q)
+{
+  int n = q->n, k = 1, rank = 0, signum;
+  gsl_matrix_set_zero(q->A);
+  for (int i = 0; i < n; i++) gsl_matrix_set(q->A, i, 0, i == 0 || i == n - 1 ? 0.5 : 1.0);
+  for (int i = 0; i < n; i++)
+    if (q->fixed[2 * i] || q->fixed[2 * i + 1]) gsl_matrix_set(q->A, i, k++, 1.0);
+  for (int i = 0; i + 1 < n; i++)
+    if (q->fixed[2 * n + 2 * i] || q->fixed[2 * n + 2 * i + 1]) {
+      gsl_matrix_set(q->A, i, k, -1.0);
+      gsl_matrix_set(q->A, i + 1, k++, 1.0);
+    }
+  int r = k < n ? k : n;
+  gsl_matrix_view A = gsl_matrix_submatrix(q->A, 0, 0, n, k);
+  gsl_matrix_view Q = gsl_matrix_view_array(q->S, n, n);
+  gsl_matrix *Rf = gsl_matrix_alloc(n, k);
+  gsl_vector *tau = gsl_vector_alloc(r), *norm = gsl_vector_alloc(k);
+  gsl_permutation *p = gsl_permutation_alloc(k);
+  if (!Rf || !tau || !norm || !p) {
+    gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
+    return status_set(q->ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  }
+  gsl_linalg_QRPT_decomp(&A.matrix, tau, p, &signum, norm);
+  gsl_linalg_QR_unpack(&A.matrix, tau, &Q.matrix, Rf);
+  double top = fabs(gsl_matrix_get(Rf, 0, 0));
+  while (rank < r && fabs(gsl_matrix_get(Rf, rank, rank)) > 1e-12 * top) rank++;
+  q->ny = n - rank;
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < q->ny; j++) q->Z[(size_t) i * q->ny + j] = gsl_matrix_get(&Q.matrix, i, rank + j);
+  gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
+  return STATUS_OK;
+}
+#line 1343 "paper/opt.nw"
+static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
-/* Z, R and sigma at X, the evaluator's design */
+/* the faces, Z, R and sigma at X, the evaluator's design */
 static int mma_setup(Mma *q, const double *X)
 {
-  int n = q->n, m = n - 1;
-  double norm = sqrt(n - 1.5), vv = 0, Gmax = 0, *v = q->w;   /* |a| / h */
-  for (int i = 0; i < n; i++) v[i] = (i == 0 || i == n - 1 ? 0.5 : 1.0) / norm;
-  v[0] += 1;
-  for (int i = 0; i < n; i++) vv += v[i] * v[i];
-  for (int i = 0; i < n; i++)
-    for (int j = 0; j < m; j++)
-      q->Z[(size_t) i * m + j] = (i == j + 1) - 2 * v[i] * v[j + 1] / vv;
+  int n = q->n, rc;
+  double Gmax = 0;
   memcpy(q->X0, X, n * sizeof *X);
+  if ((rc = mma_faces(q, X, q->fixed)) || (rc = mma_basis(q)) || q->ny == 0) return rc;
   if (q->ev->o->metric == OPT_METRIC_SCHUR) return mma_schur(q);
   for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(q->ev->G[i]));
-  memcpy(q->R, q->Z, (size_t) n * m * sizeof *q->R);
+  memcpy(q->R, q->Z, (size_t) n * q->ny * sizeof *q->R);
   q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   return STATUS_OK;
 }
-#line 1286 "paper/opt.nw"
+#line 1364 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
-  int n = q->n, m = n - 1, rc;
+  int n = q->n, m = q->ny, rc;
   double start = resources_clock();
   if ((rc = model_contact_stiffness(ev->md, q->S, ev->st))) return rc;
   gsl_matrix_view S = gsl_matrix_view_array(q->S, n, n);
@@ -133,7 +192,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1310 "paper/opt.nw"
+#line 1388 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -147,49 +206,62 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1301 "paper/opt.nw"
+#line 1379 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1330 "paper/opt.nw"
+#line 1408 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
   int n = ev->n, rc = STATUS_OK;
   size_t nn = (size_t) n * n;
   double *work = malloc((3 * nn + 8 * (size_t) n + 2) * sizeof *work);
-  Mma q = { .ev = ev, .n = n, .best = HUGE_VAL, .bestX = X };
-  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
-  q.S = work, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
-  q.X = q.X0 + n, q.w = q.X + n;
-  double *y = q.w + n, *tol = y + n;            /* n - 1 and 4n - 2 */
-  for (int more = 1; more && !rc; ) {
+  Mma q = { .ev = ev, .n = n, .best = HUGE_VAL, .bestX = X,
+            .fixed = malloc(8 * (size_t) n), .A = gsl_matrix_alloc(n, 2 * n),
+            .mult = design_multipliers_new(ev->B, ev->st) };
+  if (!work || !q.fixed || !q.A || !q.mult)
+    rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  for (int more = !rc; more && !rc; ) {
+    q.S = work, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
+    q.X = q.X0 + n, q.w = q.X + n, q.faces = q.fixed + 4 * n;
+    double *y = q.w + n, *tol = y + n;          /* n - 1 and 4n - 2 */
     if ((rc = opt_evaluate(ev, X)) || (rc = mma_setup(&q, X))) break;
     rc = mma_run(&q, y, tol, &more);
   }
-  free(work);
+  free(work), free(q.fixed), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1352 "paper/opt.nw"
+#line 1433 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
   int n = q->n, m = 2 * n + 2 * (n - 1), rc = STATUS_OK;
   double f;
-  if (!(q->opt = nlopt_create(NLOPT_LD_MMA, n - 1)))
+  if (q->ny == 0) 
+#line 1456 "paper/opt.nw"
+{
+  *more = 0;
+  snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
+  snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "MMA: every "
+           "direction of the design is fixed by a face of B that presses");
+  return opt_evaluate(ev, q->bestX);
+}
+#line 1439 "paper/opt.nw"
+  if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
-  for (int i = 0; i < n - 1; i++) y[i] = 0;
+  for (int i = 0; i < q->ny; i++) y[i] = 0;
   nlopt_result r = nlopt_add_inequality_mconstraint(q->opt, m, mma_constraints, q, tol);
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   nlopt_destroy(q->opt);
   
-#line 1374 "paper/opt.nw"
+#line 1468 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -205,6 +277,6 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1367 "paper/opt.nw"
+#line 1449 "paper/opt.nw"
   return rc;
 }

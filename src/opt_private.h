@@ -10,10 +10,10 @@ typedef struct {
   const Opt_options *o;
   int n;                  /* N+1 */
   double *X;              /* n: the last design evaluated */
-  double *G;              /* n: grad E there */
-  double E;               /* E there */
-  double noise;           /* the rounding of E there (below) */
-  int have;               /* X, G, E are valid */
+  double *G;              /* n: its gradient there */
+  double J;               /* the objective there, E by default */
+  double noise;           /* the rounding of J there (below) */
+  int have;               /* X, G, J are valid */
   int solves;             /* state solves so far */
   double tau;             /* the step of pi, fixed at the start */
   double start;           /* clock at the start */
@@ -22,7 +22,7 @@ typedef struct {
   Opt_report *rep;
   Status *st;
   int failed;             /* a status to return after NLopt stops */
-  double last_E, last_noise; /* E and its rounding at the last accepted iterate */
+  double last_J, last_noise; /* J and its rounding at the last accepted iterate */
   double pg_best;         /* the smallest pi of the accepted iterates */
   int idle;               /* accepted iterates in a row without measured progress */
   double *Xacc;           /* n: the last accepted iterate */

@@ -15,7 +15,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
                          int *accepted)
 {
   int n = ev->n, rc;
-  double E0 = ev->E, *Xn = w->trial, *Y = w->Y, *X = w->X, *G = w->G;
+  double J0 = ev->J, *Xn = w->trial, *Y = w->Y, *X = w->X, *G = w->G;
   memcpy(X, ev->X, n * sizeof *X);
   memcpy(G, ev->G, n * sizeof *G);
   *accepted = 0;
@@ -28,7 +28,7 @@ double descent = 0;
 for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = opt_evaluate(ev, Xn))) return rc;
-*accepted = ev->E <= E0 + 1e-4 * descent;
+*accepted = ev->J <= J0 + 1e-4 * descent;
 #line 630 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */

@@ -106,16 +106,16 @@ for (unsigned j = 0; j < n; j++) {
 }
 #line 929 "paper/opt.nw"
   double v = design_violation(ev->B, X), band = slsqp_band(ev, v);
-  if (ev->E <= q->best + q->best_band + band && v <= OPT_IN_B
+  if (ev->J <= q->best + q->best_band + band && v <= OPT_IN_B
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q, band);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
-  return ev->E / q->metric.scale;
+  return ev->J / q->metric.scale;
 }
 #line 949 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q, double band)
 {
   Evaluator *ev = q->ev;
-  if (ev->E < q->best) q->best = ev->E, q->best_band = band;
+  if (ev->J < q->best) q->best = ev->J, q->best_band = band;
   q->stalled = 0;
   q->fresh += q->k > 0;
   const char *why = opt_nlopt_iterate(ev, q->k, q->bestX);

@@ -76,6 +76,7 @@ typedef struct {
   Output *o;                /* with VTUs: the output receiving iterates/ */
   const Model *md;          /* with VTUs: the model, at each iterate */
   Status vtu;               /* the first VTU not written; code 0: none */
+  Objective_kind objective; /* the objective of the progress' values */
 } Output_history;
 
 Output_history *output_history_new(int ndesign, Status *st);
@@ -94,7 +95,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 237 "paper/output.nw"
+#line 238 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */

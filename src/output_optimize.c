@@ -1,14 +1,14 @@
-#line 1487 "paper/output.nw"
+#line 1488 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1499 "paper/output.nw"
+#line 1500 "paper/output.nw"
 static void output_objectives(const Model *md, double q, double *J);
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1376 "paper/output.nw"
+#line 1377 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const Model *md, const Output_start *start)
 {
@@ -22,7 +22,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1568 "paper/output.nw"
+#line 1569 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -43,7 +43,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1507 "paper/output.nw"
+#line 1508 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -88,7 +88,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1596 "paper/output.nw"
+#line 1597 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -112,15 +112,17 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
   if (h->vtu.code) return status_set(st, h->vtu.code, "%s", h->vtu.msg);
   FILE *f = output_open(o, "history.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# iteration E[J/m] projected_gradient state_solves seconds\n");
+  const char *unit = objective_unit(h->objective);
+  fprintf(f, "# iteration %s%s%s%s projected_gradient state_solves seconds\n",
+          objective_symbol(h->objective), *unit ? "[" : "", unit + !!*unit, *unit ? "]" : "");
   for (int k = 0; k < h->n; k++)
-    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].energy,
+    fprintf(f, "%d %.15g %.6e %d %.6f\n", h->p[k].iteration, h->p[k].value,
             h->p[k].pgnorm, h->p[k].state_solves, h->p[k].seconds);
   if ((rc = output_close(o, f, st)) || (rc = history_iterates(o, p, h, st)))
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1632 "paper/output.nw"
+#line 1635 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -133,7 +135,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1655 "paper/output.nw"
+#line 1658 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -152,7 +154,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1677 "paper/output.nw"
+#line 1680 "paper/output.nw"
 /* J = every objective at the model's state, the peak's exponent q, NaN
    where undefined (a body that lifts off has no pressure) */
 static void output_objectives(const Model *md, double q, double *J)
@@ -175,7 +177,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   output_objectives(md, q, start->J);
   return STATUS_OK;
 }
-#line 1705 "paper/output.nw"
+#line 1708 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
