@@ -24,7 +24,8 @@ for r in 1 4; do
   for k in energy compliance pressure_spread pressure_peak; do
     d=$out/N$((16 * r))-$k
     "$bin" optimize "$scene" -s objective.kind=$k -s optimizer.method=slsqp \
-        -s optimizer.metric=euclidean -s mesh.refine=$r -o "$d" > "$d.log" 2>&1 \
+        -s optimizer.metric=euclidean -s optimizer.max_iter=1000 \
+        -s mesh.refine=$r -o "$d" > "$d.log" 2>&1 \
       || [ $? -eq 3 ]                            # not converged: its files are there
     echo "$((16 * r)) $k $(v stop_reason $d) $(v iterations $d) $(v final_energy $d)" \
          "$(v final_compliance $d) $(v final_pressure_spread $d)" \
