@@ -62,13 +62,16 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1449 "paper/output.nw"
+#line 1450 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
   FILE *f = output_open(o, "gradient.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# i x1[m] dE/dX_i[J/m^2] finite_difference[J/m^2] relative_error\n");
+  Objective_kind J = gc->objective ? gc->objective->kind : OBJECTIVE_ENERGY;
+  const char *unit = *objective_unit(J) ? "[J/m^2]" : "[1/m]";
+  fprintf(f, "# i x1[m] d%s/dX_i%s finite_difference%s relative_error\n",
+          objective_symbol(J), unit, unit);
   for (int k = 0; k < gc->ncheck; k++) {
     int i = gc->check[k];
     fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i],
@@ -81,14 +84,19 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st)
 {
   const Problem *p = md->problem;
-  FILE *f = output_open(o, "summary.dat", st);
+  const Objective *J = gc->objective;
+  double value = md->energy;
+  int rc = J && J->kind != OBJECTIVE_ENERGY ? objective_value(md, J, &value, st) : STATUS_OK;
+  FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
+             "objective %s\nobjective_value %.15g\n"
              "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
           run->scene, problem_model_name(p->model), p->N, md->energy,
+          objective_name(J ? J->kind : OBJECTIVE_ENERGY), value,
           gc->err[gc->worst], gc->worst, gc->ncheck);
   output_friction(f, md);
   threads_summary(f);
-  int rc = output_close(o, f, st);
+  rc = output_close(o, f, st);
   return rc ? rc : output_gradient(o, md, gc, st);
 }

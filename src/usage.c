@@ -55,9 +55,10 @@ const char usage_gradcheck[] =
   "A node takes ten state solves: the check says first how long it will\n"
   "take, and warns when that is over a minute. It prints its progress at\n"
   "most once a second.\n"
-  "DIR receives gradient.dat (i, x1, analytic dE/dX_i, best finite\n"
-  "difference, relative error; a row per node checked) and summary.dat\n"
-  "(max_relative_error, worst_node, nodes_checked, ...).\n"
+  "DIR receives gradient.dat (i, x1, analytic dJ/dX_i of the objective,\n"
+  "best finite difference, relative error; a row per node checked) and\n"
+  "summary.dat (objective, objective_value, max_relative_error,\n"
+  "worst_node, nodes_checked, ...).\n"
   "Exit status: 0 success, 2 bad input, 3 a state solve failed, 4 cannot\n"
   "write, 5 out of memory.\n";
 

@@ -28,6 +28,13 @@ for kind in compliance pressure_spread pressure_peak; do
     fail "gradcheck N=32 $kind: $(cat $TMP/err)"
   fi
 done
+# gradcheck's summary names the objective and its value, and the file
+# its derivative: the compliance of Example 5.1's arc is the work of the
+# traction, positive
+$BIN gradcheck data/example-5.1.scene -o $TMP/g -s objective.kind=compliance >/dev/null 2>&1
+check "gradcheck's summary: objective compliance, objective_value $(value objective_value $TMP/g), gradient.dat of dcompliance/dX_i" \
+  sh -c "grep -q '^objective compliance\$' $TMP/g/summary.dat && head -1 $TMP/g/gradient.dat | grep -q 'dcompliance/dX_i'" \
+  && check "gradcheck's compliance is positive" holds 'v > 0' v="$(value objective_value $TMP/g)"
 # the sets crossed: gradcheck names the nodes where its differences did
 $BIN gradcheck data/example-5.1.scene -o $TMP/g -s objective.kind=compliance >$TMP/out 2>&1
 check "gradcheck names the nodes whose differences crossed a change of the contact set" \
