@@ -213,36 +213,38 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1874 "paper/opt.nw"
+#line 1884 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, cholmod_common *cm,
-                     Opt_report *coarse, Status *st);
+                     const Opt_options *o, double *Y, double *gap,
+                     cholmod_common *cm, Opt_report *coarse, Status *st);
 int opt_coarse_start(const Problem *p, const Qp_options *solver,
-                     const Opt_options *o, int levels, double *X,
+                     const Opt_options *o, int levels, double *X, Model *fine,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
 {
-  int f = 1 << (levels - 1), rc = STATUS_OK;
+  int f = 1 << (levels - 1), rc = STATUS_OK, guess = solver->method == QP_PDAS;
   Problem q = *p;
   q.N /= f, q.M /= f, q.R /= f;
-  double *Y = malloc(2 * ((size_t) p->N + 1) * sizeof *Y);
+  double *Y = malloc(4 * ((size_t) p->N + 1) * sizeof *Y), *gap = Y + 2 * ((size_t) p->N + 1);
   memset(coarse, 0, sizeof *coarse);
   if (!Y) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   for (int i = 0; i <= q.N; i++) Y[i] = X[i * f];
   for (int l = 1; !rc && l < levels; l++) {
-    rc = opt_level(&q, solver, o, Y, cm, coarse, st);
+    rc = opt_level(&q, solver, o, Y, guess ? gap : NULL, cm, coarse, st);
     opt_interpolate(Y, q.N);
+    if (guess) opt_interpolate(gap, q.N);
     q.N *= 2, q.M *= 2, q.R *= 2;
   }
   Design_set B = design_set(p);
   double v, moved;
   if (!rc) rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, st);
+  if (!rc && guess && fine) model_guess_contact(fine, X, gap);
   free(Y);
   return rc;
 }
-#line 1903 "paper/opt.nw"
+#line 1918 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, cholmod_common *cm,
-                     Opt_report *coarse, Status *st)
+                     const Opt_options *o, double *Y, double *gap,
+                     cholmod_common *cm, Opt_report *coarse, Status *st)
 {
   Design_set B = design_set(q);
   Opt_report rep;
@@ -251,9 +253,12 @@ static int opt_level(const Problem *q, const Qp_options *solver,
   int rc = !Z ? status_set(st, STATUS_MEMORY, "optimiser: out of memory")
          : !md ? (int) st->code : design_feasible_start(&B, Y, 1e-12, Z, &v, &moved, st);
   if (!rc) memcpy(Y, Z, ((size_t) q->N + 1) * sizeof *Y);
+  if (!rc && gap && coarse->levels) model_guess_contact(md, Y, gap);
   if (!rc && !(rc = opt_minimize(md, &B, o, Y, NULL, NULL, &rep, st))) {
     coarse->evaluations += rep.evaluations, coarse->iterations += rep.iterations;
     coarse->seconds += rep.seconds;
+    if (gap) model_contact_gaps(md, gap);
+    coarse->levels++;
   }
   model_free(md);
   free(Z);
