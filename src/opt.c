@@ -193,7 +193,7 @@ double opt_memory(const Opt_options *o, int N)
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1843 "paper/opt.nw"
+#line 1857 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -201,9 +201,10 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1857 "paper/opt.nw"
+#line 1871 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
+#define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
 int opt_levels(const Problem *p, const Opt_options *o)
 {
   int want = o->levels, n = p->N, m = p->M, r = p->R, l = 1;
@@ -213,7 +214,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1884 "paper/opt.nw"
+#line 1899 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -241,20 +242,22 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1918 "paper/opt.nw"
+#line 1933 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
 {
   Design_set B = design_set(q);
   Opt_report rep;
+  Opt_options oq = *o;
+  oq.tol = fmax(o->tol, fmin(LEVELS_TOL * o->tol, 1e-2));
   double v, moved, *Z = malloc(((size_t) q->N + 1) * sizeof *Z);
   Model *md = Z ? model_new(q, solver, cm, st) : NULL;
   int rc = !Z ? status_set(st, STATUS_MEMORY, "optimiser: out of memory")
          : !md ? (int) st->code : design_feasible_start(&B, Y, 1e-12, Z, &v, &moved, st);
   if (!rc) memcpy(Y, Z, ((size_t) q->N + 1) * sizeof *Y);
   if (!rc && gap && coarse->levels) model_guess_contact(md, Y, gap);
-  if (!rc && !(rc = opt_minimize(md, &B, o, Y, NULL, NULL, &rep, st))) {
+  if (!rc && !(rc = opt_minimize(md, &B, &oq, Y, NULL, NULL, &rep, st))) {
     coarse->evaluations += rep.evaluations, coarse->iterations += rep.iterations;
     coarse->seconds += rep.seconds;
     if (gap) model_contact_gaps(md, gap);
