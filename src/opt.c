@@ -193,7 +193,7 @@ double opt_memory(const Opt_options *o, int N)
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1857 "paper/opt.nw"
+#line 1880 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -201,7 +201,16 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1871 "paper/opt.nw"
+
+/* X on 2 Nc intervals = X on Nc prolonged, in place: X_2i = X_i, the new
+   nodes by the four-point rule, by the mean in the end intervals */
+static void opt_prolong(double *X, int Nc)
+{
+  opt_interpolate(X, Nc);
+  for (int i = 1; i + 1 < Nc; i++)
+    X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
+}
+#line 1903 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -214,7 +223,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1899 "paper/opt.nw"
+#line 1931 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -231,7 +240,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   for (int i = 0; i <= q.N; i++) Y[i] = X[i * f];
   for (int l = 1; !rc && l < levels; l++) {
     rc = opt_level(&q, solver, o, Y, guess ? gap : NULL, cm, coarse, st);
-    opt_interpolate(Y, q.N);
+    opt_prolong(Y, q.N);
     if (guess) opt_interpolate(gap, q.N);
     q.N *= 2, q.M *= 2, q.R *= 2;
   }
@@ -242,7 +251,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 1933 "paper/opt.nw"
+#line 1965 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
