@@ -20,7 +20,9 @@ typedef struct Condense {
   const int *ik;         /* nk: which they are (borrowed) */
   int *at;               /* n: k when unknown i = ik[k], -1 otherwise */
   cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
-                            values, stype -1 */
+                            values, stype +1: its upper triangle holds the
+                            lower one of A (below) */
+  Sparse_index *next;    /* n: the fill's cursor in each column of K */
   cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, the
                             condensed unknowns last */
   cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
@@ -43,7 +45,7 @@ typedef struct Condense {
   int condensed;         /* S, f belong to the current values of A and b */
 } Condense;
 
-#line 167 "paper/condense.nw"
+#line 169 "paper/condense.nw"
 /* the condensation of A onto its unknowns ik[0..nk-1], analysed; NULL
    (and st) on failure */
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
@@ -53,7 +55,7 @@ int condense_factor(Qp_workspace *w, Status *st);
 /* frees cd and all it owns (NULL: nothing) */
 void condense_free(Condense *cd);
 
-#line 181 "paper/condense.nw"
+#line 183 "paper/condense.nw"
 /* T = S y - f */
 void condense_forces(Qp_workspace *w);
 /* the relative KKT residual of y and T */
@@ -63,7 +65,7 @@ int condense_predict(Qp_workspace *w);
 /* y from x, T = S y - f, and the states they call for (no step behind) */
 void condense_states_at_x(Qp_workspace *w);
 
-#line 196 "paper/condense.nw"
+#line 198 "paper/condense.nw"
 /* x from y by back substitution; g, kkt and T recomputed at x */
 int condense_expand(Qp_workspace *w, Status *st);
 /* x_u refined by one step with the factor; g, kkt, T recomputed */
@@ -71,13 +73,13 @@ int condense_refine(Qp_workspace *w, Status *st);
 /* the states that (y, T) call for, then x, refined once if kkt > tol */
 int condense_end(Qp_workspace *w, Status *st);
 
-#line 207 "paper/condense.nw"
+#line 209 "paper/condense.nw"
 /* what qp_schur hands over: S of the last condensation (with friction,
    sticking held and sliding eliminated), or of one made apart */
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
 
-#line 846 "paper/condense.nw"
+#line 899 "paper/condense.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);

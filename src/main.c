@@ -301,7 +301,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
   c->levels = 1;
   if (levels < 2) return STATUS_OK;
   int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
-                            levels, X, r->md->cm, c, st);
+                            levels, X, r->md, r->md->cm, c, st);
   c->levels = levels;
   if (!rc)
     printf("%s: coarse to fine: N = %d .. %d in %d evaluations, %.2f s; "

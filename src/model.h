@@ -33,12 +33,14 @@ typedef struct {
                            summed over the fixed point) */
   double seconds;       /* wall time of the last model_solve */
   int solved;           /* Q holds a state: warm start the next solve */
+  int guessed;          /* Q's contact unknowns hold a guess (below):
+                           warm start the next solve from it */
   double fixed_point_tol; /* Coulomb: the solver's tol, relative */
   int fixed_point_rounding; /* Coulomb: 1 to go on past the tol while the
                            change halves, to rounding (for a gradient) */
 } Model;
 
-#line 87 "paper/model.nw"
+#line 89 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -62,6 +64,12 @@ const int *model_contact_columns(const Model *md);
 int model_contact_state(Model *md, double *S, double *v, double *T, Status *st);
 /* the rounding of E at the last design solved (see the optimiser) */
 double model_energy_rounding(const Model *md);
+/* g (N+1): the gap Q_c - lo_c of the last state solved at the design node
+   of each contact unknown c, NaN at the other nodes */
+void model_contact_gaps(const Model *md, double *g);
+/* the start of the next solve: the contact unknowns at the gaps g (N+1,
+   NaN: left as they are) over the design X; for PDAS (see below) */
+void model_guess_contact(Model *md, const double *X, const double *g);
 void model_free(Model *md);
 #line 52 "paper/model.nw"
 #endif

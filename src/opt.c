@@ -193,7 +193,7 @@ double opt_memory(const Opt_options *o, int N)
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1937 "paper/opt.nw"
+#line 1974 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -201,9 +201,19 @@ void opt_interpolate(double *X, int Nc)
   for (int i = Nc; i > 0; i--) X[2 * i] = X[i];
   for (int i = 0; i < Nc; i++) X[2 * i + 1] = 0.5 * (X[2 * i] + X[2 * i + 2]);
 }
-#line 1951 "paper/opt.nw"
+
+/* X on 2 Nc intervals = X on Nc prolonged, in place: X_2i = X_i, the new
+   nodes by the four-point rule, by the mean in the end intervals */
+static void opt_prolong(double *X, int Nc)
+{
+  opt_interpolate(X, Nc);
+  for (int i = 1; i + 1 < Nc; i++)
+    X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
+}
+#line 1997 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
+#define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
 int opt_levels(const Problem *p, const Opt_options *o)
 {
   int want = o->levels, n = p->N, m = p->M, r = p->R, l = 1;
@@ -213,47 +223,54 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 1968 "paper/opt.nw"
+#line 2025 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, cholmod_common *cm,
-                     Opt_report *coarse, Status *st);
+                     const Opt_options *o, double *Y, double *gap,
+                     cholmod_common *cm, Opt_report *coarse, Status *st);
 int opt_coarse_start(const Problem *p, const Qp_options *solver,
-                     const Opt_options *o, int levels, double *X,
+                     const Opt_options *o, int levels, double *X, Model *fine,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
 {
-  int f = 1 << (levels - 1), rc = STATUS_OK;
+  int f = 1 << (levels - 1), rc = STATUS_OK, guess = solver->method == QP_PDAS;
   Problem q = *p;
   q.N /= f, q.M /= f, q.R /= f;
-  double *Y = malloc(2 * ((size_t) p->N + 1) * sizeof *Y);
+  double *Y = malloc(4 * ((size_t) p->N + 1) * sizeof *Y), *gap = Y + 2 * ((size_t) p->N + 1);
   memset(coarse, 0, sizeof *coarse);
   if (!Y) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   for (int i = 0; i <= q.N; i++) Y[i] = X[i * f];
   for (int l = 1; !rc && l < levels; l++) {
-    rc = opt_level(&q, solver, o, Y, cm, coarse, st);
-    opt_interpolate(Y, q.N);
+    rc = opt_level(&q, solver, o, Y, guess ? gap : NULL, cm, coarse, st);
+    opt_prolong(Y, q.N);
+    if (guess) opt_interpolate(gap, q.N);
     q.N *= 2, q.M *= 2, q.R *= 2;
   }
   Design_set B = design_set(p);
   double v, moved;
   if (!rc) rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, st);
+  if (!rc && guess && fine) model_guess_contact(fine, X, gap);
   free(Y);
   return rc;
 }
-#line 1997 "paper/opt.nw"
+#line 2059 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, cholmod_common *cm,
-                     Opt_report *coarse, Status *st)
+                     const Opt_options *o, double *Y, double *gap,
+                     cholmod_common *cm, Opt_report *coarse, Status *st)
 {
   Design_set B = design_set(q);
   Opt_report rep;
+  Opt_options oq = *o;
+  oq.tol = fmax(o->tol, fmin(LEVELS_TOL * o->tol, 1e-2));
   double v, moved, *Z = malloc(((size_t) q->N + 1) * sizeof *Z);
   Model *md = Z ? model_new(q, solver, cm, st) : NULL;
   int rc = !Z ? status_set(st, STATUS_MEMORY, "optimiser: out of memory")
          : !md ? (int) st->code : design_feasible_start(&B, Y, 1e-12, Z, &v, &moved, st);
   if (!rc) memcpy(Y, Z, ((size_t) q->N + 1) * sizeof *Y);
-  if (!rc && !(rc = opt_minimize(md, &B, o, Y, NULL, NULL, &rep, st))) {
+  if (!rc && gap && coarse->levels) model_guess_contact(md, Y, gap);
+  if (!rc && !(rc = opt_minimize(md, &B, &oq, Y, NULL, NULL, &rep, st))) {
     coarse->evaluations += rep.evaluations, coarse->iterations += rep.iterations;
     coarse->seconds += rep.seconds;
+    if (gap) model_contact_gaps(md, gap);
+    coarse->levels++;
   }
   model_free(md);
   free(Z);
