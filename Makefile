@@ -271,6 +271,7 @@ bench: bin/contactopt build/bench/bench_cholmod build/bench/walltime build/bench
 	@sh tests/bench/cholmod_long.sh
 	@sh tests/bench/levels.sh
 	@sh tests/bench/orderings.sh
+	@sh tests/bench/frontier.sh
 
 # ---- accuracy: accuracy against time (paper/accuracy.nw) -------------------------
 # Every point of the sweep is one optimisation of Example 5.1 in a folder of

@@ -1,4 +1,4 @@
-#line 242 "paper/condense.nw"
+#line 246 "paper/condense.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,9 +6,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 402 "paper/condense.nw"
+#line 413 "paper/condense.nw"
 #define SINGULAR (-1)    /* K is singular (not a Status_code) */
-#line 232 "paper/condense.nw"
+#line 236 "paper/condense.nw"
 static int cholmod_failed(const cholmod_common *cm, const char *what, Status *st);
 static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v, Status *st);
 static void fill_contact_matrix(Condense *cd, const double *d);
@@ -16,7 +16,7 @@ static int pattern_symmetric(Condense *cd);
 static void read_trailing_block(Condense *cd);
 static void schur_complement(Condense *cd, const double *d);
 static int condensed_load(Condense *cd, const double *b, Status *st);
-#line 264 "paper/condense.nw"
+#line 268 "paper/condense.nw"
 /* the arrays, K's values copied from A, and at; nonzero when out of memory */
 static int alloc_arrays(Condense *cd, Status *st)
 {
@@ -43,7 +43,7 @@ static int alloc_arrays(Condense *cd, Status *st)
   cd->first = cd->n - cd->nk;
   return STATUS_OK;
 }
-#line 297 "paper/condense.nw"
+#line 301 "paper/condense.nw"
 static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
@@ -64,7 +64,7 @@ static int analyse_contact_last(Condense *cd, Status *st)
   free(last), free(perm);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 321 "paper/condense.nw"
+#line 325 "paper/condense.nw"
 if (!(cd->rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->Lb = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
@@ -75,9 +75,9 @@ for (int t = 0; t < cd->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 317 "paper/condense.nw"
+#line 321 "paper/condense.nw"
 }
-#line 334 "paper/condense.nw"
+#line 338 "paper/condense.nw"
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
                          cholmod_common *cm, Status *st)
 {
@@ -91,6 +91,13 @@ Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
   return cd;
 }
 
+void condense_release(Condense *cd)
+{
+  if (!cd) return;
+  cholmod_l_free_factor(&cd->L, cd->cm);     /* the next starts from Ls */
+  cd->condensed = 0;
+}
+
 void condense_free(Condense *cd)
 {
   if (!cd) return;
@@ -102,7 +109,7 @@ void condense_free(Condense *cd)
   cholmod_l_free_dense(&cd->solve_Y, cd->cm), cholmod_l_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
-#line 368 "paper/condense.nw"
+#line 379 "paper/condense.nw"
 /* the name of CHOLMOD's status s (cholmod_core.h) */
 static const char *cholmod_status_name(int s)
 {
@@ -133,7 +140,7 @@ static int cholmod_failed(const cholmod_common *cm, const char *what,
                       "CHOLMOD's integers (CHOLMOD status %d, %s)", what, s, name);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d, %s)", what, s, name);
 }
-#line 423 "paper/condense.nw"
+#line 434 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
    d the diagonal of A; SINGULAR when K is */
 static int condense(Condense *cd, const double *b, const double *d, Status *st)
@@ -165,7 +172,7 @@ int condense_factor(Qp_workspace *w, Status *st)
   return code != SINGULAR ? code : qp_not_held(w, st,
     "A is singular even with every bound held", w->nc);
 }
-#line 477 "paper/condense.nw"
+#line 488 "paper/condense.nw"
 /* K = A + diag(A_ii) on the condensed unknowns, in K's upper triangle
    from the lower one of A; the values only */
 static void fill_contact_matrix(Condense *cd, const double *d)
@@ -202,7 +209,7 @@ static int pattern_symmetric(Condense *cd)
     if (next[j] >= Ap[j + 1] || Ai[next[j]] != j) return 0;
   return 1;
 }
-#line 521 "paper/condense.nw"
+#line 532 "paper/condense.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Condense *cd)
 {
@@ -212,7 +219,7 @@ static void read_trailing_block(Condense *cd)
   memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
   if (L->is_super) {
     
-#line 540 "paper/condense.nw"
+#line 551 "paper/condense.nw"
 const Sparse_index *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   Sparse_index k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -221,7 +228,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 530 "paper/condense.nw"
+#line 541 "paper/condense.nw"
   } else {
     const Sparse_index *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < cd->n; k++)
@@ -229,7 +236,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
         cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
   }
 }
-#line 553 "paper/condense.nw"
+#line 564 "paper/condense.nw"
 static void schur_complement(Condense *cd, const double *d)
 {
   int nc = cd->nk;
@@ -244,7 +251,7 @@ static void schur_complement(Condense *cd, const double *d)
       cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
     }
 }
-#line 572 "paper/condense.nw"
+#line 583 "paper/condense.nw"
 static int condensed_load(Condense *cd, const double *b, Status *st)
 {
   memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
@@ -262,7 +269,7 @@ static int condensed_load(Condense *cd, const double *b, Status *st)
   }
   return STATUS_OK;
 }
-#line 593 "paper/condense.nw"
+#line 604 "paper/condense.nw"
 /* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
 static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
                       Status *st)
@@ -273,7 +280,7 @@ static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
     return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
   return STATUS_OK;
 }
-#line 622 "paper/condense.nw"
+#line 633 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -284,13 +291,13 @@ void condense_forces(Qp_workspace *w)
     w->T[c] = s;
   }
 }
-#line 636 "paper/condense.nw"
+#line 647 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 648 "paper/condense.nw"
+#line 659 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -304,12 +311,12 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 641 "paper/condense.nw"
+#line 652 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
-#line 668 "paper/condense.nw"
+#line 679 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -351,7 +358,7 @@ void condense_states_at_x(Qp_workspace *w)
   condense_predict(w);
   cd->stepped = 1;
 }
-#line 730 "paper/condense.nw"
+#line 741 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -369,7 +376,7 @@ int condense_expand(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 755 "paper/condense.nw"
+#line 766 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -384,7 +391,7 @@ int condense_refine(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 780 "paper/condense.nw"
+#line 791 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -396,7 +403,7 @@ int condense_end(Qp_workspace *w, Status *st)
   if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
   return code;
 }
-#line 802 "paper/condense.nw"
+#line 813 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -405,7 +412,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 822 "paper/condense.nw"
+#line 833 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -419,7 +426,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 842 "paper/condense.nw"
+#line 853 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -442,11 +449,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 835 "paper/condense.nw"
+#line 846 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 871 "paper/condense.nw"
+#line 882 "paper/condense.nw"
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
 {
   Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
@@ -470,7 +477,7 @@ static int schur_apart(const Qp_workspace *w, double shift, double *S,
   condense_free(cd);
   return STATUS_OK;
 }
-#line 908 "paper/condense.nw"
+#line 919 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

@@ -52,10 +52,14 @@ Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
                          cholmod_common *cm, Status *st);
 /* S, f and the factor of K at w's current values */
 int condense_factor(Qp_workspace *w, Status *st);
+/* frees the numeric factor of K (the analysis stays): the next
+   condense_factor factorises anew, and nothing reads S or the factor
+   before it (NULL: nothing) */
+void condense_release(Condense *cd);
 /* frees cd and all it owns (NULL: nothing) */
 void condense_free(Condense *cd);
 
-#line 183 "paper/condense.nw"
+#line 187 "paper/condense.nw"
 /* T = S y - f */
 void condense_forces(Qp_workspace *w);
 /* the relative KKT residual of y and T */
@@ -65,7 +69,7 @@ int condense_predict(Qp_workspace *w);
 /* y from x, T = S y - f, and the states they call for (no step behind) */
 void condense_states_at_x(Qp_workspace *w);
 
-#line 198 "paper/condense.nw"
+#line 202 "paper/condense.nw"
 /* x from y by back substitution; g, kkt and T recomputed at x */
 int condense_expand(Qp_workspace *w, Status *st);
 /* x_u refined by one step with the factor; g, kkt, T recomputed */
@@ -73,13 +77,13 @@ int condense_refine(Qp_workspace *w, Status *st);
 /* the states that (y, T) call for, then x, refined once if kkt > tol */
 int condense_end(Qp_workspace *w, Status *st);
 
-#line 209 "paper/condense.nw"
+#line 213 "paper/condense.nw"
 /* what qp_schur hands over: S of the last condensation (with friction,
    sticking held and sliding eliminated), or of one made apart */
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
 
-#line 899 "paper/condense.nw"
+#line 910 "paper/condense.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);

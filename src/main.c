@@ -291,7 +291,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 765 "paper/main.nw"
+#line 769 "paper/main.nw"
 /* X = the coarse-to-fine start when the levels of the run are > 1; c its
    report (levels 1 and no cost without) */
 static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
@@ -300,6 +300,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
   memset(c, 0, sizeof *c);
   c->levels = 1;
   if (levels < 2) return STATUS_OK;
+  model_release(r->md);        /* the coarse models do not add to its factor */
   int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
                             levels, X, r->md, r->md->cm, c, st);
   c->levels = levels;
@@ -309,7 +310,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 786 "paper/main.nw"
+#line 791 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -319,7 +320,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 806 "paper/main.nw"
+#line 811 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -382,7 +383,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 878 "paper/main.nw"
+#line 883 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -401,7 +402,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 908 "paper/main.nw"
+#line 913 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -417,7 +418,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 936 "paper/main.nw"
+#line 941 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

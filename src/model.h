@@ -70,6 +70,9 @@ void model_contact_gaps(const Model *md, double *g);
 /* the start of the next solve: the contact unknowns at the gaps g (N+1,
    NaN: left as they are) over the design X; for PDAS (see below) */
 void model_guess_contact(Model *md, const double *X, const double *g);
+/* frees the factor of the last state, which is kept; the next solve
+   factorises anew (the memory of another model built meanwhile) */
+void model_release(Model *md);
 void model_free(Model *md);
 #line 52 "paper/model.nw"
 #endif

@@ -54,8 +54,11 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st); /* x0 NULL: cold */
 int qp_iterate(Qp_workspace *w, Status *st);
 int qp_test(const Qp_workspace *w);          /* 1 when kkt <= tol */
 const double *qp_x(const Qp_workspace *w);   /* the current iterate */
+/* frees the factorisation of the last solve, which the next solve
+   makes anew; the analysis and the iterate stay */
+void qp_release(Qp_workspace *w);
 void qp_free(Qp_workspace *w);
-#line 136 "paper/qp.nw"
+#line 139 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
    STATUS_NUMERIC when not converged. */

@@ -1,4 +1,4 @@
-#line 204 "paper/qp.nw"
+#line 207 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's own header: qp.c, condense.c, pdas.c, mprgp.c and
@@ -7,7 +7,7 @@
 #include <math.h>
 #include "qp.h"
 
-#line 274 "paper/qp.nw"
+#line 277 "paper/qp.nw"
 typedef struct {
   double *s, *t;         /* nk: its gaps y - lo and forces, both > 0;
                             with friction, the slide y - pos = s - b and
@@ -32,7 +32,7 @@ typedef struct {
   Pdas_guide ip;         /* the interior point that guides the steps */
 } Pdas_workspace;
 
-#line 303 "paper/qp.nw"
+#line 306 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -44,7 +44,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 240 "paper/qp.nw"
+#line 243 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -73,7 +73,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 505 "paper/qp.nw"
+#line 508 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -132,7 +132,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 657 "paper/qp.nw"
+#line 660 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -145,7 +145,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 677 "paper/qp.nw"
+#line 680 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -161,7 +161,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 320 "paper/qp.nw"
+#line 323 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -174,7 +174,7 @@ int qp_count_active(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 338 "paper/qp.nw"
+#line 341 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
@@ -188,5 +188,5 @@ void mprgp_free(Qp_workspace *w);
 int mprgp_end(Qp_workspace *w, Status *st);
 /* psor.c: projected SOR */
 int psor_iterate(Qp_workspace *w, Status *st);
-#line 227 "paper/qp.nw"
+#line 230 "paper/qp.nw"
 #endif
