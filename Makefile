@@ -182,8 +182,12 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 	@mkdir -p $(B)/tests
 	$(CC) $(CFLAGS) -Itests -MMD -MP $(LDFLAGS) -o $@ $< $(OBJ) $(LDLIBS)
 
-check: $(PROGRAM) $(B)/example $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) tangle-check $(RUNS)
-	@BIN=$(PROGRAM) TESTS=$(B)/tests UNKNOWN_CPU=$(UNKNOWN_CPU) sh tests/run
+# make check: every test program and script by tests/run, JOBS at a time
+# (default: the cores; make check JOBS=1 runs them one after another), the
+# log in build/tests.log whatever JOBS is.  That src/ matches paper/*.nw
+# (make tangle-check) is one of the tests, tests/tangle.sh.
+check: $(PROGRAM) $(B)/example $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) $(RUNS)
+	@BIN=$(PROGRAM) TESTS=$(B)/tests UNKNOWN_CPU=$(UNKNOWN_CPU) JOBS=$(JOBS) sh tests/run
 
 # make check-kernels: what a user's other machine would meet. The test
 # programs under every OpenBLAS kernel family this CPU can execute
