@@ -3,6 +3,7 @@
 #include <math.h>
 #include <signal.h>
 #include <spawn.h>
+#include <time.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -10,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 238 "paper/figures.nw"
+#line 239 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -38,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 278 "paper/figures.nw"
+#line 279 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -58,7 +59,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 301 "paper/figures.nw"
+#line 302 "paper/figures.nw"
 static const char *const state_files[] = {
   "shape.dat", "contact.dat", "nodes.dat", "triangles.dat" };
 
@@ -97,7 +98,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 344 "paper/figures.nw"
+#line 345 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -111,7 +112,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 1387 "paper/figures.nw"
+#line 1388 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -143,7 +144,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 1422 "paper/figures.nw"
+#line 1423 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -156,12 +157,16 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 1439 "paper/figures.nw"
+#line 1444 "paper/figures.nw"
+enum { GNUPLOT_GRACE = 2000 };   /* ms that gnuplot has to end after an interrupt */
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
-  int ws = 0, done;
+  int ws = 0, done, waited = 0;
   char why[1024];
-  while ((done = waitpid(pid, &ws, 0)) < 0 && errno == EINTR) ;
+  while ((done = waitpid(pid, &ws, WNOHANG)) == 0 || (done < 0 && errno == EINTR)) {
+    if (done == 0 && interrupt_signal() && (waited += 10) > GNUPLOT_GRACE) kill(pid, SIGKILL);
+    nanosleep(&(struct timespec) { 0, 10000000L }, NULL);
+  }
   if (done >= 0 && WIFEXITED(ws) && WEXITSTATUS(ws) == 0) return STATUS_OK;
   if (interrupt_signal())
     return status_set(st, STATUS_INTERRUPTED, "plot: interrupted by signal %d: "
@@ -174,7 +179,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 1463 "paper/figures.nw"
+#line 1472 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -208,7 +213,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1505 "paper/figures.nw"
+#line 1514 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -236,7 +241,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 1542 "paper/figures.nw"
+#line 1551 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -257,7 +262,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1568 "paper/figures.nw"
+#line 1577 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -283,7 +288,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   return STATUS_OK;
 }
-#line 1598 "paper/figures.nw"
+#line 1607 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };

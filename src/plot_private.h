@@ -1,10 +1,10 @@
-#line 150 "paper/figures.nw"
+#line 151 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_PRIVATE_H
 #define CONTACTOPT_PLOT_PRIVATE_H
 #include <stdio.h>
 #include "plot.h"
 #include "scene.h"
-#line 220 "paper/figures.nw"
+#line 221 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -13,7 +13,7 @@ typedef struct {
   int iterations;          /* its iterations */
   char state[2][1100];     /* the folders of its states: initial, final */
 } Plot;
-#line 156 "paper/figures.nw"
+#line 157 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 /* the lines that set up the page and the terminal of every script */
 extern const char plot_page_lines[], plot_terminal_lines[];

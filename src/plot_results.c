@@ -1,9 +1,9 @@
-#line 207 "paper/figures.nw"
+#line 208 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1108 "paper/figures.nw"
+#line 1109 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -21,7 +21,7 @@ static Results_page results_page(const Plot *pl)
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   return L;
 }
-#line 1129 "paper/figures.nw"
+#line 1130 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -32,7 +32,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1145 "paper/figures.nw"
+#line 1146 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
@@ -63,7 +63,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   results_scales(f, pl);
 }
-#line 1181 "paper/figures.nw"
+#line 1182 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -95,7 +95,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1217 "paper/figures.nw"
+#line 1218 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
@@ -118,7 +118,7 @@ static const char *exaggerated(const Results_page *L)
   snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
-#line 1246 "paper/figures.nw"
+#line 1247 "paper/figures.nw"
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -141,7 +141,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
             q->letter, exaggerated(L), k, k, k, k, k, VHEAD);
 }
-#line 1274 "paper/figures.nw"
+#line 1275 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -150,7 +150,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1290 "paper/figures.nw"
+#line 1291 "paper/figures.nw"
 static void energy_graph(FILE *f, const Plot *pl)
 {
   double step = plot_nice_up(fmax(1, pl->iterations / 2.0));
@@ -170,7 +170,7 @@ static void energy_graph(FILE *f, const Plot *pl)
                           : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1322 "paper/figures.nw"
+#line 1323 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -197,7 +197,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
             "pt '◁' ps 1.3 lw 1.2 \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'", c, e);
   fprintf(f, "\n");
 }
-#line 1353 "paper/figures.nw"
+#line 1354 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
