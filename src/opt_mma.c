@@ -114,7 +114,8 @@ static int mma_faces(Mma *q, const double *X, char *face)
   Evaluator *ev = q->ev;
   const Design_multipliers *mu = q->mult;
   int n = q->n, rc;
-  double *c = q->S, near = -1e-3 * ev->o->tol;   /* 4n - 2 <= n x n */
+  double *c = q->A->data, near = -1e-3 * ev->o->tol;  /* 4n - 2 <= 2n^2; A is
+                                      filled by mma_basis, after */
   if ((rc = design_kkt(ev->B, X, ev->G, ev->tau, NULL, q->mult, NULL, ev->st))) return rc;
   opt_constraints(ev->B, X, n, c);
   for (int i = 0; i < n; i++) {
@@ -127,7 +128,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1308 "paper/opt.nw"
+#line 1309 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -160,7 +161,7 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1343 "paper/opt.nw"
+#line 1344 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 /* the faces, Z, R and sigma at X, the evaluator's design */
@@ -176,7 +177,7 @@ static int mma_setup(Mma *q, const double *X)
   q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   return STATUS_OK;
 }
-#line 1364 "paper/opt.nw"
+#line 1365 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
@@ -192,7 +193,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1388 "paper/opt.nw"
+#line 1389 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -206,14 +207,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1379 "paper/opt.nw"
+#line 1380 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1408 "paper/opt.nw"
+#line 1409 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
@@ -235,14 +236,14 @@ int opt_mma(Evaluator *ev, double *X)
   free(work), free(q.fixed), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1433 "paper/opt.nw"
+#line 1434 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
   int n = q->n, m = 2 * n + 2 * (n - 1), rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1456 "paper/opt.nw"
+#line 1457 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -250,7 +251,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1439 "paper/opt.nw"
+#line 1440 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -261,7 +262,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   nlopt_destroy(q->opt);
   
-#line 1468 "paper/opt.nw"
+#line 1469 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -277,6 +278,6 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1449 "paper/opt.nw"
+#line 1450 "paper/opt.nw"
   return rc;
 }
