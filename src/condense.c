@@ -1,4 +1,4 @@
-#line 246 "paper/condense.nw"
+#line 250 "paper/condense.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,38 +6,35 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 413 "paper/condense.nw"
+#line 414 "paper/condense.nw"
 #define SINGULAR (-1)    /* K is singular (not a Status_code) */
-#line 236 "paper/condense.nw"
+#line 240 "paper/condense.nw"
 static int cholmod_failed(const cholmod_common *cm, const char *what, Status *st);
-static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v, Status *st);
 static void fill_contact_matrix(Condense *cd, const double *d);
 static int pattern_symmetric(Condense *cd);
+static int permute_pattern(Condense *cd);
 static void read_trailing_block(Condense *cd);
 static void schur_complement(Condense *cd, const double *d);
 static int condensed_load(Condense *cd, const double *b, Status *st);
-#line 268 "paper/condense.nw"
-/* the arrays, K's values copied from A, and at; nonzero when out of memory */
+#line 270 "paper/condense.nw"
+/* the arrays and at; nonzero when out of memory or A's pattern is not
+   symmetric */
 static int alloc_arrays(Condense *cd, Status *st)
 {
-  const cholmod_sparse *A = cd->A;
-  size_t nz = (size_t) ((const Sparse_index *) A->p)[cd->n], nc = (size_t) cd->nk + 1;
-  cd->K = *A;                /* the header: p and i are shared with A */
-  cd->K.x = malloc((nz + 1) * sizeof(double));
-  cd->K.nzmax = nz, cd->K.stype = 1;
-  cd->next = malloc(((size_t) cd->n + 1) * sizeof *cd->next);
+  size_t nc = (size_t) cd->nk + 1;
+  cd->perm = malloc(((size_t) cd->n + 1) * sizeof *cd->perm);
   cd->at = malloc(((size_t) cd->n + 1) * sizeof *cd->at);
   cd->act = malloc(nc), cd->tc = malloc(nc * sizeof *cd->tc);
   cd->f = malloc(nc * sizeof *cd->f), cd->y = malloc(nc * sizeof *cd->y);
   cd->Lcc = malloc(nc * nc * sizeof *cd->Lcc);
   cd->S = malloc(nc * nc * sizeof *cd->S), cd->M = malloc(nc * nc * sizeof *cd->M);
-  if (!cd->K.x || !cd->next || !cd->at || !cd->act || !cd->tc || !cd->f || !cd->y
+  if (!cd->perm || !cd->at || !cd->act || !cd->tc || !cd->f || !cd->y
       || !cd->Lcc || !cd->S || !cd->M)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (condensed onto the contact, "
                       "nc = %d)", cd->nk);
-  memcpy(cd->K.x, A->x, nz * sizeof(double));
-  if (!pattern_symmetric(cd))
-    return status_set(st, STATUS_INPUT, "qp_alloc: the pattern of A is not symmetric");
+  int sym = pattern_symmetric(cd);
+  if (sym < 0) return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)", cd->n);
+  if (!sym) return status_set(st, STATUS_INPUT, "qp_alloc: the pattern of A is not symmetric");
   for (int i = 0; i < cd->n; i++) cd->at[i] = -1;
   for (int k = 0; k < cd->nk; k++) cd->at[cd->ik[k]] = k;
   cd->first = cd->n - cd->nk;
@@ -48,36 +45,35 @@ static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
   size_t n = (size_t) cd->n;
-  Sparse_index *last = calloc(n + 1, sizeof *last), *perm = malloc((n + 1) * sizeof *perm);
+  Sparse_index *last = calloc(n + 1, sizeof *last);
+  if (!last) return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)", cd->n);
   int nmethods = cm->nmethods, ordering = cm->method[0].ordering;
-  int postorder = cm->postorder, ok = last && perm;
-  if (!ok) {
-    free(last), free(perm);
-    return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)", cd->n);
-  }
+  int postorder = cm->postorder, ok;
   for (int c = 0; c < cd->nk; c++) last[cd->ik[c]] = 1;
-  cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_GIVEN, cm->postorder = 0;
-  ok = ok && cholmod_l_camd(&cd->K, NULL, 0, last, perm, cm)
-          && (cd->Ls = cholmod_l_analyze_p(&cd->K, perm, NULL, 0, cm));
+  cholmod_sparse U = *cd->A;    /* CAMD reads the pattern of one triangle */
+  U.stype = 1;
+  cm->nmethods = 1, cm->method[0].ordering = CHOLMOD_NATURAL, cm->postorder = 0;
+  ok = cholmod_l_camd(&U, NULL, 0, last, cd->perm, cm) && permute_pattern(cd)
+       && (cd->Ls = cholmod_l_analyze(cd->K, cm));
   cm->nmethods = nmethods, cm->method[0].ordering = ordering;
   cm->postorder = postorder;
-  free(last), free(perm);
+  free(last);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 325 "paper/condense.nw"
+#line 324 "paper/condense.nw"
 if (!(cd->rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
+    || !(cd->sol = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->Lb = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
   return cholmod_failed(cm, "qp_alloc: CHOLMOD could not allocate the "
                         "vectors of the solves", st);
-const Sparse_index *P = cd->Ls->Perm;
 for (int t = 0; t < cd->nk; t++)
-  if ((cd->tc[t] = cd->at[P[cd->first + t]]) < 0)
+  if ((cd->tc[t] = cd->at[cd->perm[cd->first + t]]) < 0)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 321 "paper/condense.nw"
+#line 320 "paper/condense.nw"
 }
-#line 338 "paper/condense.nw"
+#line 337 "paper/condense.nw"
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
                          cholmod_common *cm, Status *st)
 {
@@ -101,7 +97,9 @@ void condense_release(Condense *cd)
 void condense_free(Condense *cd)
 {
   if (!cd) return;
-  free(cd->K.x), free(cd->next), free(cd->at), free(cd->act), free(cd->tc);
+  if (cd->K) cholmod_l_free(cd->K->nzmax, sizeof *cd->src, cd->src, cd->cm);
+  cholmod_l_free_sparse(&cd->K, cd->cm);
+  free(cd->perm), free(cd->at), free(cd->act), free(cd->tc);
   free(cd->f), free(cd->y), free(cd->Lcc), free(cd->S), free(cd->M);
   cholmod_l_free_factor(&cd->Ls, cd->cm), cholmod_l_free_factor(&cd->L, cd->cm);
   cholmod_l_free_dense(&cd->rhs, cd->cm), cholmod_l_free_dense(&cd->sol, cd->cm);
@@ -109,7 +107,7 @@ void condense_free(Condense *cd)
   cholmod_l_free_dense(&cd->solve_Y, cd->cm), cholmod_l_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
-#line 379 "paper/condense.nw"
+#line 380 "paper/condense.nw"
 /* the name of CHOLMOD's status s (cholmod_core.h) */
 static const char *cholmod_status_name(int s)
 {
@@ -140,7 +138,7 @@ static int cholmod_failed(const cholmod_common *cm, const char *what,
                       "CHOLMOD's integers (CHOLMOD status %d, %s)", what, s, name);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d, %s)", what, s, name);
 }
-#line 434 "paper/condense.nw"
+#line 435 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
    d the diagonal of A; SINGULAR when K is */
 static int condense(Condense *cd, const double *b, const double *d, Status *st)
@@ -150,7 +148,7 @@ static int condense(Condense *cd, const double *b, const double *d, Status *st)
   fill_contact_matrix(cd, d);
   cm->print = 0, cm->final_ll = 1;  /* a singular K is our message to give */
   if (!cd->L) cd->L = cholmod_l_copy_factor(cd->Ls, cm);
-  ok = cd->L && cholmod_l_factorize(&cd->K, cd->L, cm) && cm->status >= CHOLMOD_OK;
+  ok = cd->L && cholmod_l_factorize(cd->K, cd->L, cm) && cm->status >= CHOLMOD_OK;
   cm->print = print, cm->final_ll = final_ll;
   if (!ok || cd->L->minor < cd->L->n) {
     cholmod_l_free_factor(&cd->L, cm);     /* the next starts from Ls */
@@ -172,44 +170,60 @@ int condense_factor(Qp_workspace *w, Status *st)
   return code != SINGULAR ? code : qp_not_held(w, st,
     "A is singular even with every bound held", w->nc);
 }
-#line 488 "paper/condense.nw"
-/* K = A + diag(A_ii) on the condensed unknowns, in K's upper triangle
-   from the lower one of A; the values only */
+#line 494 "paper/condense.nw"
+/* K = P (A + D_c) P' on the condensed unknowns, from the lower triangle
+   of A; the values only */
 static void fill_contact_matrix(Condense *cd, const double *d)
 {
-  const Sparse_index *Ap = cd->A->p, *Ai = cd->A->i;
   const double *Ax = cd->A->x;
-  double *Kx = cd->K.x;
-  Sparse_index *next = cd->next;
-  for (int j = 0; j < cd->n; j++) next[j] = Ap[j];
-  for (int j = 0; j < cd->n; j++)
-    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++)
-      if (Ai[k] == j) Kx[k] = Ax[k];
-      else if (Ai[k] > j) Kx[next[Ai[k]]++] = Ax[k];
-  for (int c = 0; c < cd->nk; c++) {
-    int j = cd->ik[c];
-    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++)
-      if (Ai[k] == j) Kx[k] += d[j];
-  }
+  const Sparse_index *Kp = cd->K->p, *src = cd->src;
+  double *Kx = cd->K->x;
+  for (Sparse_index q = 0; q < Kp[cd->n]; q++) Kx[q] = Ax[src[q]];
+  for (int t = 0; t < cd->nk; t++)
+    Kx[Kp[cd->first + t]] += d[cd->perm[cd->first + t]];
 }
 
-/* 1 if each lower entry (i, j) of A has its mirror (j, i) where the fill
-   puts it, and each column its diagonal */
+/* K = the pattern of the lower triangle of P A P', sorted, and src;
+   0 (CHOLMOD's status set) when CHOLMOD fails */
+static int permute_pattern(Condense *cd)
+{
+  cholmod_common *cm = cd->cm;
+  size_t nz = (size_t) ((const Sparse_index *) cd->A->p)[cd->n];
+  cholmod_sparse T = *cd->A, *U = NULL;    /* the lower triangle of A, */
+  T.stype = -1, T.x = cholmod_l_malloc(nz, sizeof(double), cm);   /* its indices */
+  if (!T.x) return 0;
+  for (size_t k = 0; k < nz; k++) ((double *) T.x)[k] = (double) k;
+  U = cholmod_l_ptranspose(&T, 2, cd->perm, NULL, 0, cm);    /* upper of PAP' */
+  cholmod_l_free(nz, sizeof(double), T.x, cm);
+  cd->K = U ? cholmod_l_ptranspose(U, 2, NULL, NULL, 0, cm) : NULL;   /* lower */
+  cholmod_l_free_sparse(&U, cm);
+  if (!cd->K || !(cd->src = cholmod_l_malloc(cd->K->nzmax, sizeof *cd->src, cm)))
+    return 0;
+  const double *Kx = cd->K->x;
+  for (size_t q = 0; q < cd->K->nzmax; q++) cd->src[q] = (Sparse_index) Kx[q];
+  return 1;
+}
+
+/* 1 if each lower entry (i, j) of A has its mirror (j, i) and each column
+   its diagonal, the columns sorted; -1 when out of memory */
 static int pattern_symmetric(Condense *cd)
 {
   const Sparse_index *Ap = cd->A->p, *Ai = cd->A->i;
-  Sparse_index *next = cd->next;
+  Sparse_index *next = malloc(((size_t) cd->n + 1) * sizeof *next);
+  int ok = 1;
+  if (!next) return -1;
   for (int j = 0; j < cd->n; j++) next[j] = Ap[j];
-  for (int j = 0; j < cd->n; j++)
-    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) {
+  for (int j = 0; ok && j < cd->n; j++)
+    for (Sparse_index k = Ap[j]; ok && k < Ap[j + 1]; k++) {
       Sparse_index i = Ai[k];
-      if (i > j && (next[i] >= Ap[i + 1] || Ai[next[i]++] != j)) return 0;
+      if (i > j && (next[i] >= Ap[i + 1] || Ai[next[i]++] != j)) ok = 0;
     }
-  for (int j = 0; j < cd->n; j++)        /* the upper entries all met, then j */
-    if (next[j] >= Ap[j + 1] || Ai[next[j]] != j) return 0;
-  return 1;
+  for (int j = 0; ok && j < cd->n; j++)   /* the upper entries all met, then j */
+    if (next[j] >= Ap[j + 1] || Ai[next[j]] != j) ok = 0;
+  free(next);
+  return ok;
 }
-#line 532 "paper/condense.nw"
+#line 554 "paper/condense.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Condense *cd)
 {
@@ -219,7 +233,7 @@ static void read_trailing_block(Condense *cd)
   memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
   if (L->is_super) {
     
-#line 551 "paper/condense.nw"
+#line 573 "paper/condense.nw"
 const Sparse_index *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   Sparse_index k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -228,7 +242,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 541 "paper/condense.nw"
+#line 563 "paper/condense.nw"
   } else {
     const Sparse_index *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < cd->n; k++)
@@ -236,7 +250,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
         cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
   }
 }
-#line 564 "paper/condense.nw"
+#line 586 "paper/condense.nw"
 static void schur_complement(Condense *cd, const double *d)
 {
   int nc = cd->nk;
@@ -251,11 +265,11 @@ static void schur_complement(Condense *cd, const double *d)
       cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
     }
 }
-#line 583 "paper/condense.nw"
+#line 605 "paper/condense.nw"
 static int condensed_load(Condense *cd, const double *b, Status *st)
 {
   memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
-  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
+  if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   cholmod_dense *swap = cd->Lb;
   cd->Lb = cd->rhs, cd->rhs = swap;      /* keep z, reuse the old vector */
   const double *z = cd->Lb->x;
@@ -269,18 +283,25 @@ static int condensed_load(Condense *cd, const double *b, Status *st)
   }
   return STATUS_OK;
 }
-#line 604 "paper/condense.nw"
-/* *v = the solves sys2(sys1(*v)) with L, through cd->sol */
-static int solve_pair(Condense *cd, int sys1, int sys2, cholmod_dense **v,
-                      Status *st)
+#line 630 "paper/condense.nw"
+int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st)
 {
   cholmod_common *cm = cd->cm;
-  if (!cholmod_l_solve2(sys1, cd->L, *v, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cm)
-      || !cholmod_l_solve2(sys2, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm))
-    return cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
-  return STATUS_OK;
+  const Sparse_index *P = cd->perm;
+  double *s = cd->sol->x, *x = (*v)->x;
+  int ok;
+  if (!back) {
+    for (int q = 0; q < cd->n; q++) s[q] = x[P[q]];
+    ok = cholmod_l_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm);
+  } else if ((ok = cholmod_l_solve2(CHOLMOD_Lt, cd->L, *v, NULL, &cd->sol, NULL,
+                                    &cd->solve_Y, &cd->solve_E, cm))) {
+    s = cd->sol->x, x = (*v)->x;
+    for (int q = 0; q < cd->n; q++) x[P[q]] = s[q];
+  }
+  return ok ? STATUS_OK
+            : cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
 }
-#line 633 "paper/condense.nw"
+#line 666 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -291,13 +312,13 @@ void condense_forces(Qp_workspace *w)
     w->T[c] = s;
   }
 }
-#line 647 "paper/condense.nw"
+#line 680 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 659 "paper/condense.nw"
+#line 692 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -311,12 +332,12 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 652 "paper/condense.nw"
+#line 685 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
-#line 679 "paper/condense.nw"
+#line 712 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -358,7 +379,7 @@ void condense_states_at_x(Qp_workspace *w)
   condense_predict(w);
   cd->stepped = 1;
 }
-#line 741 "paper/condense.nw"
+#line 774 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -370,28 +391,28 @@ int condense_expand(Qp_workspace *w, Status *st)
       s += cd->Lcc[(size_t) u * w->nk + t] * cd->y[cd->tc[u]];
     v[cd->first + t] = s;
   }
-  if (solve_pair(cd, CHOLMOD_Lt, CHOLMOD_Pt, &cd->rhs, st)) return st->code;
+  if (condense_solve(cd, 1, &cd->rhs, st)) return st->code;
   memcpy(w->x, cd->rhs->x, (size_t) w->n * sizeof *w->x);
   for (int c = 0; c < w->nk; c++) w->x[w->ik[c]] = cd->y[c];
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 766 "paper/condense.nw"
+#line 799 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
   double *v = cd->rhs->x;
   for (int i = 0; i < w->n; i++) v[i] = cd->at[i] < 0 ? -w->g[i] : 0;
-  if (solve_pair(cd, CHOLMOD_P, CHOLMOD_L, &cd->rhs, st)) return st->code;
+  if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   v = cd->rhs->x;
   memset(v + cd->first, 0, (size_t) w->nk * sizeof *v);
-  if (solve_pair(cd, CHOLMOD_Lt, CHOLMOD_Pt, &cd->rhs, st)) return st->code;
+  if (condense_solve(cd, 1, &cd->rhs, st)) return st->code;
   v = cd->rhs->x;
   for (int i = 0; i < w->n; i++) if (cd->at[i] < 0) w->x[i] += v[i];
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 791 "paper/condense.nw"
+#line 824 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -403,7 +424,7 @@ int condense_end(Qp_workspace *w, Status *st)
   if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
   return code;
 }
-#line 813 "paper/condense.nw"
+#line 846 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -412,7 +433,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 833 "paper/condense.nw"
+#line 866 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -426,7 +447,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 853 "paper/condense.nw"
+#line 886 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -449,11 +470,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 846 "paper/condense.nw"
+#line 879 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 882 "paper/condense.nw"
+#line 915 "paper/condense.nw"
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
 {
   Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
@@ -477,7 +498,7 @@ static int schur_apart(const Qp_workspace *w, double shift, double *S,
   condense_free(cd);
   return STATUS_OK;
 }
-#line 919 "paper/condense.nw"
+#line 952 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

@@ -19,12 +19,13 @@ typedef struct Condense {
   int nk;                /* the number of unknowns condensed onto */
   const int *ik;         /* nk: which they are (borrowed) */
   int *at;               /* n: k when unknown i = ik[k], -1 otherwise */
-  cholmod_sparse K;      /* n x n, A + D_c: A's pattern (borrowed), own
-                            values, stype +1: its upper triangle holds the
-                            lower one of A (below) */
-  Sparse_index *next;    /* n: the fill's cursor in each column of K */
-  cholmod_factor *Ls;    /* n x n: the symbolic analysis of K, the
-                            condensed unknowns last */
+  Sparse_index *perm;    /* n: P, the unknown at each place of the factor,
+                            the condensed unknowns last */
+  cholmod_sparse *K;     /* n x n: P (A + D_c) P', its lower triangle
+                            (stype -1, sorted), own pattern and values */
+  Sparse_index *src;     /* nnz(K): the entry of A's lower triangle that
+                            each entry of K takes its value from */
+  cholmod_factor *Ls;    /* n x n: the symbolic analysis of K */
   cholmod_factor *L;     /* n x n: the factor LL' of K at the current values */
   int first;             /* n - nk: where the condensed unknowns start in L */
   int *tc;               /* nk: the condensed unknown c at position first + t */
@@ -45,7 +46,7 @@ typedef struct Condense {
   int condensed;         /* S, f belong to the current values of A and b */
 } Condense;
 
-#line 169 "paper/condense.nw"
+#line 170 "paper/condense.nw"
 /* the condensation of A onto its unknowns ik[0..nk-1], analysed; NULL
    (and st) on failure */
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
@@ -59,7 +60,7 @@ void condense_release(Condense *cd);
 /* frees cd and all it owns (NULL: nothing) */
 void condense_free(Condense *cd);
 
-#line 187 "paper/condense.nw"
+#line 188 "paper/condense.nw"
 /* T = S y - f */
 void condense_forces(Qp_workspace *w);
 /* the relative KKT residual of y and T */
@@ -69,7 +70,10 @@ int condense_predict(Qp_workspace *w);
 /* y from x, T = S y - f, and the states they call for (no step behind) */
 void condense_states_at_x(Qp_workspace *w);
 
-#line 202 "paper/condense.nw"
+#line 203 "paper/condense.nw"
+/* *v = L \ P *v (back = 0), or P' (L' \ *v) (back = 1): the triangular
+   solves with the factor of K, through cd->sol */
+int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st);
 /* x from y by back substitution; g, kkt and T recomputed at x */
 int condense_expand(Qp_workspace *w, Status *st);
 /* x_u refined by one step with the factor; g, kkt, T recomputed */
@@ -77,13 +81,13 @@ int condense_refine(Qp_workspace *w, Status *st);
 /* the states that (y, T) call for, then x, refined once if kkt > tol */
 int condense_end(Qp_workspace *w, Status *st);
 
-#line 213 "paper/condense.nw"
+#line 217 "paper/condense.nw"
 /* what qp_schur hands over: S of the last condensation (with friction,
    sticking held and sliding eliminated), or of one made apart */
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
 
-#line 910 "paper/condense.nw"
+#line 943 "paper/condense.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);

@@ -1,10 +1,10 @@
-#line 956 "paper/condense.nw"
+#line 989 "paper/condense.nw"
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 965 "paper/condense.nw"
+#line 998 "paper/condense.nw"
 /* held[k] = 1 where condensed unknown k is held: a bound touched, or
    (friction) sticking */
 static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
@@ -13,15 +13,12 @@ static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
     held[k] = k < w->nc ? !qp_is_free(w, w->ik[k])
                         : cd->act[k] == CONDENSE_HELD;
 }
-#line 978 "paper/condense.nw"
+#line 1011 "paper/condense.nw"
 /* z = L \ P g in cd->rhs; r (nk, ik order) = L_cc z_c */
 static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
 {
   memcpy(cd->rhs->x, g, (size_t) cd->n * sizeof *g);
-  if (!cholmod_l_solve2(CHOLMOD_P, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
-      || !cholmod_l_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
-    return status_set(st, STATUS_SYSTEM, "adjoint: CHOLMOD failed to solve "
-                      "with the factor of K (status %d)", cd->cm->status);
+  if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   const double *z = cd->rhs->x;
   for (int t = 0; t < cd->nk; t++) {
     double s = 0;
@@ -30,7 +27,7 @@ static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
   }
   return STATUS_OK;
 }
-#line 999 "paper/condense.nw"
+#line 1029 "paper/condense.nw"
 /* y (nk) = 0 on the held, S_FF \ r_F on the others */
 static int adjoint_condensed(const Condense *cd, const char *held,
                              const double *r, double *y, Status *st)
@@ -60,7 +57,7 @@ static int adjoint_condensed(const Condense *cd, const char *held,
   free(fr), free(SFF);
   return code;
 }
-#line 1031 "paper/condense.nw"
+#line 1061 "paper/condense.nw"
 int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
                char *held, Status *st)
 {
@@ -83,10 +80,7 @@ int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
       for (int u = t; u < nk; u++) s += cd->Lcc[(size_t) u * nk + t] * y[cd->tc[u]];
       v[cd->first + t] = s;
     }
-    if (!cholmod_l_solve2(CHOLMOD_Lt, cd->L, cd->rhs, NULL, &cd->sol, NULL, &cd->solve_Y, &cd->solve_E, cd->cm)
-        || !cholmod_l_solve2(CHOLMOD_Pt, cd->L, cd->sol, NULL, &cd->rhs, NULL, &cd->solve_Y, &cd->solve_E, cd->cm))
-      code = status_set(st, STATUS_SYSTEM, "adjoint: CHOLMOD failed to solve "
-                        "with the factor of K (status %d)", cd->cm->status);
+    code = condense_solve(cd, 1, &cd->rhs, st);
   }
   if (!code) {
     memcpy(lam, cd->rhs->x, (size_t) w->n * sizeof *lam);
