@@ -332,9 +332,9 @@ out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS) $(ACC_
 figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat > $@.partial && mv $@.partial $@
-figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/accuracy/sweep.dat
+figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
-	gnuplot -e "sweep='out/accuracy/sweep.dat'; out='figures/accuracy-time'" $<
+	gnuplot -e "sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; out='figures/accuracy-time'" $<
 # ---- end of the accuracy block ----------------------------------------------------
 
 # ---- the woven paper -------------------------------------------------------------

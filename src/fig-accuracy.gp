@@ -1,17 +1,20 @@
 # fig-accuracy.gp: the figure of the section "What accuracy costs", the
 # error of the optimal energy against the time of the run.
 # Tangled from paper/accuracy.nw; do not edit.
-# usage: gnuplot -e "sweep='out/accuracy/sweep.dat'; out='figures/accuracy-time'" \
-#                src/fig-accuracy.gp
-# reads  sweep (written by src/accuracy.sh)
+# usage: gnuplot -e "sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; \
+#                     out='figures/accuracy-time'" src/fig-accuracy.gp
+# reads  sweep (written by src/accuracy.sh) and once (the finer meshes
+#        measured once)
 # writes out.pdf and out.png
-if (!exists("sweep") || !exists("out")) {
-  print "usage: gnuplot -e \"sweep='out/accuracy/sweep.dat'; out='NAME'\" SCRIPT"
-  exit error "the variables sweep and out are required"
+if (!exists("sweep") || !exists("once") || !exists("out")) {
+  print "usage: gnuplot -e \"sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; out='NAME'\" SCRIPT"
+  exit error "the variables sweep, once and out are required"
 }
 families = system("awk '!/^#/ && NF && !seen[$1]++ { printf \"%s \", $1 }' ".sweep)
 nmax = system("awk '$2 == \"nmax\" { print $3 }' ".sweep) + 0
 ncap = nmax < 128 ? nmax : 128    # the optimiser families stop at N = 128
+Einf = real(system("awk '$2 == \"E_inf\" { print $3 }' ".sweep))
+onceN = system("awk '!/^#/ && NF { printf \"%s%s\", s, $1; s = \", \" }' ".once)
 inf = "\342\210\236"              # the infinity sign, U+221E, in UTF-8
 varN = ""; oneN = ""
 do for [f in families] {
@@ -75,6 +78,13 @@ do for [fmt in "pdf png"] {
        sweep using (strcol(1) eq "mesh" ? $16 : NaN):9 \
          with points pt 6 ps 0.9 lc rgb "gray30" title "one factorisation of its mesh", \
        sweep using (strcol(1) eq "mesh" ? $13 : NaN):9:(sprintf("%d", $3)) \
+         with labels offset 0, 0.8 font sprintf(",%g", 0.8*fsz) notitle, \
+       once using 8:(abs($2 - Einf) / abs(Einf)):($5 - $8):(0) \
+         with vectors nohead dt 3 lw 1 lc rgb "gray50" notitle, \
+       once using 8:(abs($2 - Einf) / abs(Einf)) with points pt 6 ps 0.9 lc rgb "gray30" notitle, \
+       once using 5:(abs($2 - Einf) / abs(Einf)) with points pt 6 ps 0.9 lc rgb "black" \
+         title sprintf("mesh, {/:Italic N} = %s, once", onceN), \
+       once using 5:(abs($2 - Einf) / abs(Einf)):(sprintf("%d", $1)) \
          with labels offset 0, 0.8 font sprintf(",%g", 0.8*fsz) notitle
   c = 1; eps = 1e-15
   set lmargin at screen sx(left + c*(panelw + gap))

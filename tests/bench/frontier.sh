@@ -7,7 +7,10 @@
 # For each N: the whole `contactopt solve` process at the initial design
 # (files included), the levels, the fine and the coarse state solves, the
 # whole `contactopt optimize` process and its peak resident set, the limit
-# and its peak, their ratios, E*.  A point the machine
+# and its peak, their ratios, E*, and where the time of `optimize` went
+# (summary.dat: the optimisation's seconds, of them the coarse levels', the
+# fine state solves', the Newton models' and the monitor's; the rest of
+# the process is before and after the optimisation).  A point the machine
 # cannot hold (the program's own estimate refuses it, exit 5) ends the
 # sweep.  Writes build/bench/frontier.dat and, with macros for the prose
 # (\frontierbench{N}{COLUMN}), paper/bench-frontier.tex; TABLE_ONLY=1
@@ -27,7 +30,7 @@ mkdir -p build/bench
 for p in "$bin" "$bb/bench_cholmod" "$bb/walltime"; do
   [ -x "$p" ] || fail "$p is missing (make bench builds it)"
 done
-echo "# N levels fine_solves coarse_solves whole[s] peak[MiB] limit[s] limit_peak[MiB] energy[J/m] stop_reason solve[s]" > $out
+echo "# N levels fine_solves coarse_solves whole[s] peak[MiB] limit[s] limit_peak[MiB] energy[J/m] stop_reason solve[s] seconds coarse_seconds state_seconds model_seconds monitor_seconds" > $out
 for N in 256 512 1024 2048 4096; do
   [ $N -le "$nmax" ] || break
   K=$((N / 16))
@@ -47,7 +50,9 @@ for N in 256 512 1024 2048 4096; do
     END { split(t, w, " "); split(tl, l, " ")
           if (!("evaluations" in v)) exit 1
           print N, v["levels"] + 0 ? v["levels"] : 1, v["evaluations"], v["coarse_evaluations"] + 0,
-                w[1], w[2], lim, l[2], v["energy"], v["stop_reason"], ts }' \
+                w[1], w[2], lim, l[2], v["energy"], v["stop_reason"], ts,
+                v["seconds"], v["coarse_seconds"] + 0, v["state_seconds"], v["model_seconds"],
+                v["monitor_seconds"] }' \
     "$tmp/run/summary.dat" >> $out || fail "optimize at N = $N: no summary"
   tail -n 1 $out
   rm -rf "$tmp/run"
@@ -64,7 +69,9 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" '
         k, v[i, 2], k, v[i, 3], k, v[i, 4], k, v[i, 5]
       printf "%ssolve\\endcsname{%.3g}%ssolveratio\\endcsname{%.2f}\n", k, v[i, 11], k, v[i, 11] / v[i, 7]
       printf "%slimit\\endcsname{%.3g}%sratio\\endcsname{%.1f}%speak\\endcsname{%.2g}%slimitpeak\\endcsname{%.2g}%speakratio\\endcsname{%.2f}\n",
-        k, v[i, 7], k, v[i, 5] / v[i, 7], k, v[i, 6] / 1024, k, v[i, 8] / 1024, k, v[i, 6] / v[i, 8] }
+        k, v[i, 7], k, v[i, 5] / v[i, 7], k, v[i, 6] / 1024, k, v[i, 8] / 1024, k, v[i, 6] / v[i, 8]
+      printf "%scoarsesec\\endcsname{%.2g}%sstatesec\\endcsname{%.2g}%smodelsec\\endcsname{%.2g}%smonitorsec\\endcsname{%.2g}%saround\\endcsname{%.2g}\n",
+        k, v[i, 13], k, v[i, 14], k, v[i, 15], k, v[i, 16], k, v[i, 5] - v[i, 12] }
     print "\\begin{center}\\small\\setlength{\\tabcolsep}{4pt}"
     print "\\begin{tabular}{@{}rrrrrrrrrrrr@{}}\\toprule"
     print "$N$ & limit [s] & solve [s] & ratio & levels & fine solves & coarse solves & optimize [s] & ratio & peak [GiB] & limit peak [GiB] & ratio\\\\\\midrule"
