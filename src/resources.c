@@ -30,7 +30,7 @@ double resources_memory(const Problem *p)
   double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
   return 3 * 8 * nk * nk + 12 * resources_factor_entries(p) + 400 * n;
 }
-#line 97 "paper/resources.nw"
+#line 98 "paper/resources.nw"
 int resources_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
   double need = resources_memory(p) + extra;
