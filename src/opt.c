@@ -193,7 +193,7 @@ double opt_memory(const Opt_options *o, int N)
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1980 "paper/opt.nw"
+#line 1982 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -210,7 +210,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2003 "paper/opt.nw"
+#line 2005 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -223,7 +223,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2031 "paper/opt.nw"
+#line 2033 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -251,7 +251,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 2065 "paper/opt.nw"
+#line 2067 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
