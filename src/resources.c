@@ -11,7 +11,7 @@ double resources_clock(void)
   clock_gettime(CLOCK_MONOTONIC, &t);
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
-#line 63 "paper/resources.nw"
+#line 66 "paper/resources.nw"
 /* the unknowns of the mesh, and the entries of the sparse factor of K */
 static double resources_unknowns(const Problem *p)
 {
@@ -30,7 +30,7 @@ double resources_memory(const Problem *p)
   double nk = (p->N + 1.0) * (p->contact == CONTACT_FRICTIONLESS ? 1 : 2);
   return 3 * 8 * nk * nk + 12 * resources_factor_entries(p) + 400 * n;
 }
-#line 98 "paper/resources.nw"
+#line 101 "paper/resources.nw"
 int resources_fits(const Problem *p, double extra, const char *origin, Status *st)
 {
   double need = resources_memory(p) + extra;
