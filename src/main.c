@@ -291,7 +291,14 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 769 "paper/main.nw"
+#line 772 "paper/main.nw"
+/* the coarse levels' monitor: only Ctrl-C, which ends them */
+static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
+{
+  (void) p, (void) X, (void) data;
+  return interrupt_signal() != 0;
+}
+
 /* X = the coarse-to-fine start when the levels of the run are > 1; c its
    report (levels 1 and no cost without) */
 static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
@@ -302,15 +309,19 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
   if (levels < 2) return STATUS_OK;
   model_release(r->md);        /* the coarse models do not add to its factor */
   int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
-                            levels, X, r->md, r->md->cm, c, st);
+                            levels, X, r->md, coarse_monitor, r->md->cm, c, st);
   c->levels = levels;
-  if (!rc)
+  if (!rc && c->stop_reason[0])
+    printf("%s: coarse to fine: interrupted after %d evaluations, %.2f s; "
+           "N = %d starts from the scene's design\n", r->s.path, c->evaluations,
+           c->seconds, N);
+  else if (!rc)
     printf("%s: coarse to fine: N = %d .. %d in %d evaluations, %.2f s; "
            "N = %d starts from their optimum\n", r->s.path, N >> (levels - 1),
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 791 "paper/main.nw"
+#line 805 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -320,7 +331,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 811 "paper/main.nw"
+#line 825 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -383,7 +394,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 883 "paper/main.nw"
+#line 897 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -402,7 +413,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 913 "paper/main.nw"
+#line 927 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -418,7 +429,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 941 "paper/main.nw"
+#line 955 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,11 +1,11 @@
-#line 363 "paper/opt.nw"
+#line 366 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
 #include "grad.h"
-#line 377 "paper/opt.nw"
+#line 380 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -25,7 +25,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 435 "paper/opt.nw"
+#line 438 "paper/opt.nw"
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -49,7 +49,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 493 "paper/opt.nw"
+#line 496 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -58,7 +58,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 504 "paper/opt.nw"
+#line 507 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -71,7 +71,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 537 "paper/opt.nw"
+#line 540 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -95,7 +95,7 @@ void opt_idle_detail(Evaluator *ev)
            "the rounding of %s allows no smaller pi", ev->idle, J, ev->noise,
            objective_unit(k), J);
 }
-#line 565 "paper/opt.nw"
+#line 568 "paper/opt.nw"
 const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
 {
   double pg;
@@ -110,7 +110,7 @@ const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 773 "paper/opt.nw"
+#line 776 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
@@ -125,7 +125,7 @@ void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c
     c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
   }
 }
-#line 792 "paper/opt.nw"
+#line 795 "paper/opt.nw"
 /* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
 {
@@ -141,7 +141,7 @@ void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *
     }
   }
 }
-#line 1843 "paper/opt.nw"
+#line 1846 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -171,11 +171,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 1886 "paper/opt.nw"
+#line 1889 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 1872 "paper/opt.nw"
+#line 1875 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -186,14 +186,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 1903 "paper/opt.nw"
+#line 1906 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 1982 "paper/opt.nw"
+#line 1985 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -210,7 +210,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2005 "paper/opt.nw"
+#line 2008 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -223,13 +223,14 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2033 "paper/opt.nw"
+#line 2036 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, double *gap,
+                     const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
 int opt_coarse_start(const Problem *p, const Qp_options *solver,
                      const Opt_options *o, int levels, double *X, Model *fine,
-                     cholmod_common *cm, Opt_report *coarse, Status *st)
+                     Opt_monitor stop, cholmod_common *cm, Opt_report *coarse,
+                     Status *st)
 {
   int f = 1 << (levels - 1), rc = STATUS_OK, guess = solver->method == QP_PDAS;
   Problem q = *p;
@@ -238,22 +239,23 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   memset(coarse, 0, sizeof *coarse);
   if (!Y) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   for (int i = 0; i <= q.N; i++) Y[i] = X[i * f];
-  for (int l = 1; !rc && l < levels; l++) {
-    rc = opt_level(&q, solver, o, Y, guess ? gap : NULL, cm, coarse, st);
+  for (int l = 1; !rc && !coarse->stop_reason[0] && l < levels; l++) {
+    rc = opt_level(&q, solver, o, Y, guess ? gap : NULL, stop, cm, coarse, st);
     opt_prolong(Y, q.N);
     if (guess) opt_interpolate(gap, q.N);
     q.N *= 2, q.M *= 2, q.R *= 2;
   }
   Design_set B = design_set(p);
   double v, moved;
-  if (!rc) rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, st);
-  if (!rc && guess && fine) model_guess_contact(fine, X, gap);
+  int done = !rc && !coarse->stop_reason[0];
+  if (done) rc = design_feasible_start(&B, Y, 1e-12, X, &v, &moved, st);
+  if (done && !rc && guess && fine) model_guess_contact(fine, X, gap);
   free(Y);
   return rc;
 }
-#line 2067 "paper/opt.nw"
+#line 2076 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
-                     const Opt_options *o, double *Y, double *gap,
+                     const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st)
 {
   Design_set B = design_set(q);
@@ -266,7 +268,9 @@ static int opt_level(const Problem *q, const Qp_options *solver,
          : !md ? (int) st->code : design_feasible_start(&B, Y, 1e-12, Z, &v, &moved, st);
   if (!rc) memcpy(Y, Z, ((size_t) q->N + 1) * sizeof *Y);
   if (!rc && gap && coarse->levels) model_guess_contact(md, Y, gap);
-  if (!rc && !(rc = opt_minimize(md, &B, &oq, Y, NULL, NULL, &rep, st))) {
+  if (!rc && !(rc = opt_minimize(md, &B, &oq, Y, stop, NULL, &rep, st))) {
+    if (!strcmp(rep.stop_reason, "interrupted"))
+      memcpy(coarse->stop_reason, rep.stop_reason, sizeof rep.stop_reason);
     coarse->evaluations += rep.evaluations, coarse->iterations += rep.iterations;
     coarse->seconds += rep.seconds;
     if (gap) model_contact_gaps(md, gap);

@@ -75,10 +75,13 @@ void opt_interpolate(double *X, int Nc);
 int opt_levels(const Problem *p, const Opt_options *o);
 /* X (p->N + 1, in B) = the optimum of the levels - 1 coarser meshes,
    interpolated onto p's nodes, the first started from X; their work in
-   coarse; fine (or NULL): p's model, given their contact as a guess */
+   coarse; fine (or NULL): p's model, given their contact as a guess;
+   stop (or NULL): each level's monitor, whose stop ends the levels
+   (coarse->stop_reason "interrupted", X left as it was) */
 int opt_coarse_start(const Problem *p, const Qp_options *solver,
                      const Opt_options *o, int levels, double *X, Model *fine,
-                     cholmod_common *cm, Opt_report *coarse, Status *st);
+                     Opt_monitor stop, cholmod_common *cm, Opt_report *coarse,
+                     Status *st);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);

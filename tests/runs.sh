@@ -76,6 +76,20 @@ for sig in INT TERM; do
        = "$(awk 'NR > 1 { printf "%.10e\n", $2 }' $d/final/shape.dat | md5sum)"
   check "SIG$sig: no staging folder is left" test -z "$(ls -d $d.partial-* 2>/dev/null)"
 done
+# Ctrl-C while the coarse levels run (N = 1024, sent as the run starts
+# its initial state, seconds before the levels begin): they end at their
+# next iterate, and the fine run stops at its start, the scene's design,
+# instead of after every level
+d=$TMP/sig-levels
+rm -f $TMP/out $TMP/err
+$dflt $BIN optimize $ex -o $d -s mesh.refine=64 >$TMP/out 2>$TMP/err &
+pid=$!
+for t in $(seq 300); do grep -q 'initial design is not in B' $TMP/out $TMP/err 2>/dev/null && break; sleep 0.1; done
+kill -INT $pid; wait $pid; rc=$?
+check "SIGINT before the coarse levels end: exit 130, they say they were interrupted, and the run stops at the scene's design (iterations $(value iterations $d), E $(value energy $d), initial $(value initial_energy $d))" \
+  holds 'rc == 130 && said == 1 && it == 0 && e == e0' rc=$rc \
+    said="$(grep -c 'coarse to fine: interrupted after [0-9]* evaluations' $TMP/out)" \
+    it="$(value iterations $d)" e="$(value energy $d)" e0="$(value initial_energy $d)"
 # at N = 512 an iterate of SLSQP takes seconds: the first SIGINT's line
 # comes at once, while the run works on its iterate; a second SIGINT then
 # stops it: the staging folder is removed, the folder that held a
