@@ -77,15 +77,21 @@ fi
 # 1e-9 asks more than the rounding allows; 1e-8 converges under every
 # family (measured under seven)
 line="-s design.initial=line -s design.line_start=0.045 -s design.line_end=0"
-for m in slsqp mma; do
-  $BIN optimize data/example-5.1.scene -o $TMP/l-$m -s objective.kind=compliance $line \
-    -s optimizer.method=$m -s optimizer.tol=1e-8 >/dev/null 2>$TMP/err-$m
-  echo $? > $TMP/rc-$m
-done
-check "line start: mma and slsqp converge (exit $(cat $TMP/rc-mma), $(cat $TMP/rc-slsqp))" \
-  holds 'a == 0 && b == 0' a=$(cat $TMP/rc-mma) b=$(cat $TMP/rc-slsqp)
-check "line start: mma and slsqp, the same least compliance to 1e-6 ($(value objective_value $TMP/l-mma), $(value objective_value $TMP/l-slsqp))" \
-  near_ref "$(value objective_value $TMP/l-slsqp)" "$(value objective_value $TMP/l-mma)" 1e-6
+# same_optimum WHAT PREFIX TOL ARGS...: slsqp and mma on Example 5.1 with
+# ARGS, into $TMP/PREFIX-slsqp and -mma, both converge, and to the same
+# objective value to TOL relative
+same_optimum() {
+  _w=$1 _p=$2 _t=$3; shift 3
+  for m in slsqp mma; do
+    $BIN optimize data/example-5.1.scene -o $TMP/$_p-$m -s optimizer.method=$m "$@" >/dev/null 2>$TMP/err-$m
+    echo $? > $TMP/rc-$m
+  done
+  check "$_w: mma and slsqp converge (exit $(cat $TMP/rc-mma), $(cat $TMP/rc-slsqp))" \
+    holds 'a == 0 && b == 0' a=$(cat $TMP/rc-mma) b=$(cat $TMP/rc-slsqp)
+  check "$_w: mma and slsqp, the same optimum to $_t ($(value objective_value $TMP/$_p-mma), $(value objective_value $TMP/$_p-slsqp))" \
+    near_ref "$(value objective_value $TMP/$_p-slsqp)" "$(value objective_value $TMP/$_p-mma)" $_t
+}
+same_optimum "line start, least compliance" l 1e-6 -s objective.kind=compliance $line -s optimizer.tol=1e-8
 # the pressure objectives: SLSQP in the euclidean metric converges from the arc
 for kind in pressure_spread pressure_peak; do
   $BIN optimize data/example-5.1.scene -o $TMP/p-$kind -s objective.kind=$kind \
@@ -123,14 +129,7 @@ done
 # B, converged, at SLSQP's E* to 1e-9 relative
 for start in arc line; do
   s=; [ $start = line ] && s=$line
-  for m in slsqp mma; do
-    $BIN optimize data/example-5.1.scene -o $TMP/e-$start-$m $s -s optimizer.method=$m >/dev/null 2>$TMP/err-$m
-    echo $? > $TMP/rc-$m
-  done
-  check "$start start: mma and slsqp converge on the energy (exit $(cat $TMP/rc-mma), $(cat $TMP/rc-slsqp))" \
-    holds 'a == 0 && b == 0' a=$(cat $TMP/rc-mma) b=$(cat $TMP/rc-slsqp)
-  check "$start start: mma and slsqp, the same E* to 1e-9 ($(value objective_value $TMP/e-$start-mma), $(value objective_value $TMP/e-$start-slsqp))" \
-    near_ref "$(value objective_value $TMP/e-$start-slsqp)" "$(value objective_value $TMP/e-$start-mma)" 1e-9
+  same_optimum "$start start, energy" e-$start 1e-9 $s
   kkt_point "mma energy, $start start" $TMP/e-$start-mma 0.05 0.00625 0.25
   in_B "mma energy, $start start" $TMP/e-$start-mma 1e-12 $B51
 done
