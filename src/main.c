@@ -81,6 +81,16 @@ typedef struct {
   int optimizing;           /* the command runs the optimiser */
 } Run;
 
+/* a scene with no traction and no body force: say that its state is 0 */
+static void warn_unloaded(const Scene *s)
+{
+  for (int id = 0; id < SIDE_COUNT; id++)
+    if (s->problem.side[id].kind == BC_TRACTION) return;
+  if (!s->problem.has_body_force)
+    fprintf(stderr, "contactopt: warning: %s: the scene has no load (no side "
+            "with bc = traction, no body force): its state is u = 0\n", s->path);
+}
+#line 346 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -111,12 +121,13 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
     rc = r.md ? c->run(&r, st) : (int) st->code;
   }
+  if (!rc) warn_unloaded(&r.s);
   if (rc) name_the_scene(st, r.s.path);
   model_free(r.md);
   scene_free(&r.s);
   return rc;
 }
-#line 389 "paper/main.nw"
+#line 406 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -127,7 +138,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 408 "paper/main.nw"
+#line 425 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -162,7 +173,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 445 "paper/main.nw"
+#line 462 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -177,7 +188,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 481 "paper/main.nw"
+#line 498 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -200,7 +211,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 507 "paper/main.nw"
+#line 524 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -219,7 +230,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 535 "paper/main.nw"
+#line 552 "paper/main.nw"
 /* the refusal of the Newton method for a Coulomb scene */
 static int no_newton(const Run *r, Status *st)
 {
@@ -267,7 +278,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 730 "paper/main.nw"
+#line 747 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -278,7 +289,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 747 "paper/main.nw"
+#line 764 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -291,7 +302,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 772 "paper/main.nw"
+#line 789 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -321,7 +332,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 805 "paper/main.nw"
+#line 822 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -331,7 +342,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 825 "paper/main.nw"
+#line 842 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -394,7 +405,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 897 "paper/main.nw"
+#line 914 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -413,7 +424,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 927 "paper/main.nw"
+#line 944 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -429,7 +440,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 955 "paper/main.nw"
+#line 972 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,11 +1,12 @@
-#line 156 "paper/model.nw"
+#line 158 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "resources.h"
+#include "held.h"
 #include "model.h"
-#line 348 "paper/model.nw"
+#line 371 "paper/model.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
@@ -24,12 +25,13 @@ static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
     md->fixed_point_iterations, md->fixed_point_residual,
     md->fixed_point_tol, md->problem->friction);
 }
-#line 149 "paper/model.nw"
+#line 150 "paper/model.nw"
 static int model_state(Model *md, Status *st);
+static int model_pressed(const Model *md, Status *st);
 static double model_change(const double *old, const double *T, int nc);
 static int model_coulomb(Model *md, Status *st);
 static int coulomb_goes_on(const Model *md, double before);
-#line 167 "paper/model.nw"
+#line 170 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -44,7 +46,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 187 "paper/model.nw"
+#line 190 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -57,19 +59,19 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 181 "paper/model.nw"
+#line 184 "paper/model.nw"
   
-#line 202 "paper/model.nw"
+#line 205 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 182 "paper/model.nw"
+#line 185 "paper/model.nw"
   return md;
 }
-#line 222 "paper/model.nw"
+#line 225 "paper/model.nw"
 int model_solve(Model *md, const double *X, Status *st)
 {
   double start = resources_clock();
@@ -81,6 +83,11 @@ int model_solve(Model *md, const double *X, Status *st)
   for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
   if (md->problem->contact == CONTACT_TRESCA)
     friction_tresca_bounds(md->problem, md->mesh, md->dofs, md->slip);
+  if ((rc = held_check(md->problem, md->mesh, md->dofs, md->b,
+                       md->problem->contact == CONTACT_TRESCA ? md->slip : NULL,
+                       md->checked ? STATUS_NUMERIC : STATUS_INPUT, st)))
+    return rc;
+  md->checked = 1;
   rc = md->problem->contact == CONTACT_COULOMB ? model_coulomb(md, st)
                                                : model_state(md, st);
   md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
@@ -91,15 +98,26 @@ int model_solve(Model *md, const double *X, Status *st)
   md->seconds = resources_clock() - start;
   return rc;
 }
-#line 247 "paper/model.nw"
+#line 255 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved || md->guessed ? md->Q : NULL,
                     md->Q, md->T, &md->report, st);
+  if (!rc) rc = model_pressed(md, st);
   md->solved = rc == STATUS_OK, md->guessed = 0;
   return rc;
 }
-#line 269 "paper/model.nw"
+#line 268 "paper/model.nw"
+static int model_pressed(const Model *md, Status *st)
+{
+  if (!held_lift_free(md->problem)) return 0;
+  for (int c = 0; c < md->dofs->nc; c++)
+    if (md->T[c] > 0) return 0;
+  return status_set(st, STATUS_NUMERIC, "the body is not held: the state solve "
+                    "ended with no node pressed onto the foundation, and no side "
+                    "holds u2");
+}
+#line 292 "paper/model.nw"
 void model_contact_gaps(const Model *md, double *g)
 {
   for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
@@ -115,7 +133,7 @@ void model_guess_contact(Model *md, const double *X, const double *g)
   }
   md->guessed = 1;
 }
-#line 298 "paper/model.nw"
+#line 321 "paper/model.nw"
 static int model_coulomb(Model *md, Status *st)
 {
   const Problem *p = md->problem;
@@ -147,14 +165,14 @@ static int model_coulomb(Model *md, Status *st)
     rc = coulomb_failed(md, stalled, mark, st);
   return rc;
 }
-#line 338 "paper/model.nw"
+#line 361 "paper/model.nw"
 static int coulomb_goes_on(const Model *md, double before)
 {
   double r = md->fixed_point_residual;
   if (r > md->fixed_point_tol) return 1;
   return md->fixed_point_rounding && r > 0 && r <= before / 2;
 }
-#line 370 "paper/model.nw"
+#line 393 "paper/model.nw"
 static double model_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -163,12 +181,12 @@ static double model_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 392 "paper/model.nw"
+#line 415 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-#line 400 "paper/model.nw"
+#line 423 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -182,7 +200,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-#line 419 "paper/model.nw"
+#line 442 "paper/model.nw"
 void model_release(Model *md)
 {
   if (md) qp_release(md->solver);
@@ -198,7 +216,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 461 "paper/model.nw"
+#line 484 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -211,24 +229,24 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 480 "paper/model.nw"
+#line 503 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 473 "paper/model.nw"
+#line 496 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 493 "paper/model.nw"
+#line 516 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 507 "paper/model.nw"
+#line 530 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -240,7 +258,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 524 "paper/model.nw"
+#line 547 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

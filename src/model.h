@@ -33,6 +33,7 @@ typedef struct {
                            summed over the fixed point) */
   double seconds;       /* wall time of the last model_solve */
   int solved;           /* Q holds a state: warm start the next solve */
+  int checked;          /* held_check passed once: the scene's design */
   int guessed;          /* Q's contact unknowns hold a guess (below):
                            warm start the next solve from it */
   double fixed_point_tol; /* Coulomb: the solver's tol, relative */
@@ -40,7 +41,7 @@ typedef struct {
                            change halves, to rounding (for a gradient) */
 } Model;
 
-#line 89 "paper/model.nw"
+#line 90 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */

@@ -200,7 +200,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return rc;
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2194 "paper/scene.nw"
+#line 2193 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Loader *L, Scene *s)
 {
@@ -215,17 +215,22 @@ static int check_held(Loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2214 "paper/scene.nw"
+#line 2216 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2208 "paper/scene.nw"
+#line 2207 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2223 "paper/scene.nw"
+#line 2225 "paper/scene.nw"
+if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
+  return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
+                    "onto the foundation (the load that presses it down is %g N/m), "
+                    "and no side holds u2: nothing stops it lifting off", L->path,
+                    sides, h.vertical);
 if (p->contact == CONTACT_TRESCA)
   return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                     "body: contact.g = %g Pa holds at most g (b - a) = %g N/m "
@@ -236,9 +241,9 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2210 "paper/scene.nw"
+#line 2209 "paper/scene.nw"
 }
-#line 2237 "paper/scene.nw"
+#line 2244 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -247,7 +252,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return 0;
 }
-#line 2262 "paper/scene.nw"
+#line 2269 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -262,7 +267,7 @@ static int read_loads(Loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2280 "paper/scene.nw"
+#line 2287 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -286,7 +291,7 @@ static int read_contact(Loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2312 "paper/scene.nw"
+#line 2319 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -298,7 +303,7 @@ static int read_solver(Loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2340 "paper/scene.nw"
+#line 2347 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -309,7 +314,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2323 "paper/scene.nw"
+#line 2330 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -320,7 +325,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2362 "paper/scene.nw"
+#line 2369 "paper/scene.nw"
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1,
    levels >= 0 */
 static int read_optimizer(Loader *L, Scene *s)
@@ -346,7 +351,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if (o->levels < 0) return scene_blame(L, "must be >= 0 (0: chosen by N)");
   return 0;
 }
-#line 2393 "paper/scene.nw"
+#line 2400 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Loader *L, Scene *s)
 {
@@ -363,7 +368,7 @@ static int read_objective(Loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2419 "paper/scene.nw"
+#line 2426 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {

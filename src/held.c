@@ -1,0 +1,105 @@
+#line 667 "paper/model.nw"
+#include <math.h>
+#include <stdio.h>
+#include "friction.h"
+#include "held.h"
+#line 675 "paper/model.nw"
+int held_lift_free(const Problem *p)
+{
+  return !friction_side_holds(p, 1);
+}
+#line 684 "paper/model.nw"
+static void node_load(const Dofs *d, const double *b, int k, double f[2])
+{
+  for (int c = 0; c < 2; c++)
+    f[c] = d->unknown[2 * k + c] >= 0 ? b[d->unknown[2 * k + c]] : 0;
+}
+#line 692 "paper/model.nw"
+static double lift_work(const Mesh *m, const Dofs *d, const double *b,
+                        double *scale)
+{
+  double L2 = 0, f[2];
+  *scale = 0;
+  for (int k = 0; k < m->nnodes; k++) {
+    node_load(d, b, k, f);
+    L2 += f[1], *scale += fabs(f[1]);
+  }
+  return L2;
+}
+#line 709 "paper/model.nw"
+static double tip_work(const Mesh *m, const Dofs *d, const double *b,
+                       double p, double y, double sigma, double *scale)
+{
+  double W = 0, f[2];
+  *scale = 0;
+  for (int k = 0; k < m->nnodes; k++) {
+    double dx = m->xy[2 * k] - p, dy = m->xy[2 * k + 1] - y;
+    node_load(d, b, k, f);
+    W += sigma * (dx * f[1] - dy * f[0]);
+    *scale += fabs(dx * f[1]) + fabs(dy * f[0]);
+  }
+  return W;
+}
+#line 728 "paper/model.nw"
+static double friction_on_tip(const Mesh *m, const Dofs *d,
+                              const double *slip, double y)
+{
+  double w = 0;
+  for (int t = 0; t < d->nt; t++)
+    w += slip[t] * fabs(y - m->xy[2 * d->tangent_col[t] + 1]);
+  return w;
+}
+#line 743 "paper/model.nw"
+static double tip_excess(const Mesh *m, const Dofs *d, const double *b,
+                         const double *slip, int end, double *scale)
+{
+  double p = end ? m->b : m->a, sigma = end ? -1 : 1;
+  int pivot = end ? m->N : 0, heights = slip ? d->nt : 1;
+  double worst = -INFINITY;
+  *scale = 0;
+  for (int t = 0; t < heights; t++) {
+    double y = m->xy[2 * (slip ? d->tangent_col[t] : pivot) + 1], s;
+    double fr = slip ? friction_on_tip(m, d, slip, y) : 0;
+    double excess = tip_work(m, d, b, p, y, sigma, &s) - fr;
+    if (excess > worst) worst = excess, *scale = s + fr;
+  }
+  return worst;
+}
+#line 767 "paper/model.nw"
+#define HELD_ROUNDING 1e-12
+static int held(double work, double scale)
+{
+  return work < -HELD_ROUNDING * scale;
+}
+
+int held_check(const Problem *p, const Mesh *m, const Dofs *d,
+               const double *b, const double *slip, Status_code code,
+               Status *st)
+{
+  double scale = 0, w;
+  char sides[96];
+  snprintf(sides, sizeof sides, "left.bc = %s, right.bc = %s, top.bc = %s",
+           problem_bc_name(p->side[0].kind), problem_bc_name(p->side[1].kind),
+           problem_bc_name(p->side[2].kind));
+  if (!held_lift_free(p)) return 0;
+  if (!held(w = lift_work(m, d, b, &scale), scale))
+    
+#line 795 "paper/model.nw"
+return status_set(st, code, "the body is not held: the loads do not press "
+                  "it onto the foundation (their vertical resultant is %.6g N/m, "
+                  "not downward), and no side holds u2 (%s): nothing stops it "
+                  "lifting off", w, sides);
+#line 785 "paper/model.nw"
+  if (friction_side_holds(p, 0)) return 0;
+  for (int end = 0; end < 2; end++)
+    if (!held(w = tip_excess(m, d, b, slip, end, &scale), scale))
+      
+#line 802 "paper/model.nw"
+return status_set(st, code, "the body is not held: the loads tip it about "
+                  "the %s end of its contact (x1 = %g): their moment about it%s "
+                  "turns the body off the foundation with %.6g N m/m, and no side "
+                  "holds it (%s)", end ? "right" : "left", end ? m->b : m->a,
+                  slip ? ", less what friction resists," : "", w, sides);
+#line 789 "paper/model.nw"
+  return 0;
+}
