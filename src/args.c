@@ -1,4 +1,4 @@
-#line 203 "paper/main.nw"
+#line 222 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 
@@ -12,6 +12,7 @@ int args_read(int argc, char **argv, Args *a, Status *st)
     else if (!strcmp(s, "--matrix-market") && more) a->matrix_market = argv[++k];
     else if (!strcmp(s, "--components") && more) a->components = argv[++k];
     else if (!strcmp(s, "--plot-files")) a->plot_files = 1;
+    else if (!strcmp(s, "--replace")) a->replace = 1;
     else if (!strcmp(s, "-s") && more && a->noverride == MAX_OVERRIDES)
       return status_set(st, STATUS_INPUT, "command line: more than %d -s",
                         MAX_OVERRIDES);

@@ -1,4 +1,4 @@
-#line 183 "paper/main.nw"
+#line 201 "paper/main.nw"
 #ifndef CONTACTOPT_ARGS_H
 #define CONTACTOPT_ARGS_H
 #include "status.h"
@@ -9,6 +9,7 @@ typedef struct {
   const char *matrix_market;           /* --matrix-market FILE, or NULL */
   const char *components;              /* --components LIST, or NULL: all */
   int plot_files;                      /* --plot-files */
+  int replace;                         /* --replace: another command's run */
   int noverride;
   char *override[MAX_OVERRIDES];       /* -s section.key=value */
 } Args;

@@ -15,7 +15,7 @@
 #include "threads.h"
 #include "resources.h"
 #include "plot.h"
-#line 256 "paper/main.nw"
+#line 277 "paper/main.nw"
 /* st's message = "path: message", unless it begins with the path already */
 static void name_the_scene(Status *st, const char *path)
 {
@@ -26,7 +26,7 @@ static void name_the_scene(Status *st, const char *path)
   if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
     strcpy(st->msg + sizeof st->msg - 4, "...");
 }
-#line 274 "paper/main.nw"
+#line 295 "paper/main.nw"
 /* *v = the number at *p, digits only; *p moves past it */
 static int component_number(const char **p, long *v)
 {
@@ -71,7 +71,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 321 "paper/main.nw"
+#line 342 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -79,6 +79,7 @@ typedef struct {
   Output_run run;           /* the scene's facts for the summaries */
   char dir[OUTPUT_PATH];    /* the output folder */
   int optimizing;           /* the command runs the optimiser */
+  const char *command;      /* its name: solve, optimize, gradcheck */
 } Run;
 
 /* a scene with no traction and no body force: say that its state is 0 */
@@ -90,7 +91,7 @@ static void warn_unloaded(const Scene *s)
     fprintf(stderr, "contactopt: warning: %s: the scene has no load (no side "
             "with bc = traction, no body force): its state is u = 0\n", s->path);
 }
-#line 346 "paper/main.nw"
+#line 368 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -102,7 +103,7 @@ typedef struct {
 static int run_command(const Args *a, const Command *c, cholmod_common *cm,
                        Status *st)
 {
-  Run r = { .a = a, .optimizing = c->optimizes };
+  Run r = { .a = a, .optimizing = c->optimizes, .command = c->name };
   int rc = scene_load(&r.s, a->scene, a->noverride, a->override, st);
   if (rc) return rc;
   if (r.s.note[0]) printf("%s: %s\n", r.s.path, r.s.note);
@@ -113,7 +114,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   if (!a->outdir) output_default_dir(a->scene, c->suffix, r.dir, sizeof r.dir);
   double extra = c->optimizes ? opt_memory(&r.s.optimizer, r.s.problem.N) : 0;
   if (!(rc = a->outdir ? output_dir_name(a->outdir, r.dir, sizeof r.dir, st) : 0)
-      && !(rc = output_check(r.dir, st))                  /* before any work */
+      && !(rc = output_check(r.dir, c->name, a->replace, st)) /* before any work */
       && !(rc = a->matrix_market ? output_check_file(a->matrix_market, r.dir, st) : 0)
       && !(rc = components_read(a->components, r.s.problem.N, NULL, st))
       && !(rc = resources_fits(&r.s.problem, extra, r.s.path, st))
@@ -127,7 +128,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 406 "paper/main.nw"
+#line 428 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -138,7 +139,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 425 "paper/main.nw"
+#line 447 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -151,7 +152,7 @@ static int begin(Run *r, Output *o, Status *st)
            "its files are being finished");
   memset(o, 0, sizeof *o);   /* nothing staged, as the handler will see it */
   interrupt_catch(1, line, output_abort_now, o);
-  int rc = output_begin(o, r->dir, st);
+  int rc = output_begin(o, r->dir, r->command, r->a->replace, st);
   if (rc) interrupt_catch(0, NULL, NULL, NULL);
   else o->plot_files = r->a->plot_files;
   return rc;
@@ -173,7 +174,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 462 "paper/main.nw"
+#line 484 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -188,7 +189,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 498 "paper/main.nw"
+#line 520 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -211,7 +212,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 524 "paper/main.nw"
+#line 546 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -230,7 +231,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 552 "paper/main.nw"
+#line 574 "paper/main.nw"
 /* the refusal of the Newton method for a Coulomb scene */
 static int no_newton(const Run *r, Status *st)
 {
@@ -278,7 +279,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 747 "paper/main.nw"
+#line 769 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -289,7 +290,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 764 "paper/main.nw"
+#line 786 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -302,7 +303,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 789 "paper/main.nw"
+#line 811 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -332,7 +333,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 822 "paper/main.nw"
+#line 844 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -342,7 +343,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 842 "paper/main.nw"
+#line 864 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -405,7 +406,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 914 "paper/main.nw"
+#line 936 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -424,7 +425,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 944 "paper/main.nw"
+#line 966 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -440,7 +441,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 972 "paper/main.nw"
+#line 994 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

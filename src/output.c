@@ -1,4 +1,4 @@
-#line 315 "paper/output.nw"
+#line 319 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
@@ -12,14 +12,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 352 "paper/output.nw"
+#line 356 "paper/output.nw"
 /* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
 int output_errno(Status *st, int e, const char *path, const char *what)
 {
   return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
                     path, what, strerror(e));
 }
-#line 420 "paper/output.nw"
+#line 430 "paper/output.nw"
 /* *mark = v, after every write before it, as a signal handler sees them */
 void output_publish(volatile sig_atomic_t *mark, int v)
 {
@@ -75,8 +75,10 @@ void output_abort_now(void *arg)
   rmdir(o->stage);
 }
 
-#line 368 "paper/output.nw"
-static int output_mkdirs(const char *path, Status *st)
+#line 374 "paper/output.nw"
+/* path and its parents; a failure names the parent, or the folder
+   shown (the user's) where it is path itself, the staging folder */
+static int output_mkdirs(const char *path, const char *shown, Status *st)
 {
   char p[1200];
   snprintf(p, sizeof p, "%s", path);
@@ -85,12 +87,12 @@ static int output_mkdirs(const char *path, Status *st)
       char c = *s;
       *s = '\0';
       if (mkdir(p, 0777) && errno != EEXIST)
-        return output_errno(st, errno, p, "cannot create");
+        return output_errno(st, errno, c ? p : shown, "cannot create");
       if (!(*s = c)) return STATUS_OK;
     }
 }
 
-#line 477 "paper/output.nw"
+#line 487 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -102,7 +104,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 632 "paper/output.nw"
+#line 694 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -123,18 +125,20 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 385 "paper/output.nw"
-int output_begin(Output *o, const char *dir, Status *st)
+#line 393 "paper/output.nw"
+int output_begin(Output *o, const char *dir, const char *command, int replace,
+                 Status *st)
 {
   memset(o, 0, sizeof *o);
   snprintf(o->dir, sizeof o->dir, "%s", dir);
+  snprintf(o->command, sizeof o->command, "%s", command);
   snprintf(o->stage, sizeof o->stage, "%s.partial-%ld", dir, (long) getpid());
   output_publish(&o->staged, 1);
-  int rc = output_check(dir, st);
+  int rc = output_check(dir, command, replace, st);
   if (!rc) output_remove_dead(dir);
-  return rc ? rc : output_mkdirs(o->stage, st);
+  return rc ? rc : output_mkdirs(o->stage, dir, st);
 }
-#line 670 "paper/output.nw"
+#line 732 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -148,7 +152,7 @@ FILE *output_open(Output *o, const char *name, Status *st)
   char *slash = strrchr(path, '/');
   *slash = '\0';
   FILE *f = NULL;
-  if (!output_mkdirs(path, st)) {
+  if (!output_mkdirs(path, path, st)) {
     *slash = '/';
     if (!(f = fopen(path, "w"))) {
       int e = errno;
@@ -173,7 +177,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 713 "paper/output.nw"
+#line 775 "paper/output.nw"
 int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -182,7 +186,7 @@ int output_folder(Output *o, const char *name, Status *st)
   snprintf(path, sizeof path, "%s/%s", o->stage, name);
   snprintf(o->file[o->nfiles], sizeof o->file[0], "%s/", name);
   output_publish(&o->opening, 1);
-  int rc = output_mkdirs(path, st);
+  int rc = output_mkdirs(path, path, st);
   if (!rc) o->nfiles++;
   output_publish(&o->opening, 0);
   return rc;
@@ -201,7 +205,7 @@ FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 820 "paper/output.nw"
+#line 882 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -264,7 +268,7 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 762 "paper/output.nw"
+#line 824 "paper/output.nw"
 /* hold SIGINT and SIGTERM (on), or let them through again (off) */
 static void output_hold_signals(int on, sigset_t *saved)
 {
@@ -316,7 +320,7 @@ int output_commit(Output *o, Status *st)
   output_hold_signals(0, &saved);
   return rc;
 }
-#line 885 "paper/output.nw"
+#line 947 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);

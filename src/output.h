@@ -13,6 +13,7 @@
 #define OUTPUT_PATH 1024              /* room for a path the program writes */
 typedef struct {
   char dir[OUTPUT_PATH];              /* the output folder */
+  char command[16];                   /* solve, optimize, gradcheck */
   int plot_files;                     /* also nodes.dat, triangles.dat */
   char stage[1100];                   /* the staging folder beside it */
   char file[OUTPUT_MAX_FILES][128];   /* the files' names relative to dir */
@@ -26,14 +27,17 @@ typedef struct {
 /* dir = the folder name given, its trailing slashes dropped; STATUS_INPUT
    if it is empty, too long, or . or .. (a folder that cannot be replaced) */
 int output_dir_name(const char *given, char *dir, size_t size, Status *st);
-/* STATUS_INPUT if dir is there and not a run's folder (nor empty);
-   STATUS_SYSTEM if it cannot be created or replaced where it is */
-int output_check(const char *dir, Status *st);
+/* STATUS_INPUT if dir is there and not a run's folder (nor empty), or
+   the run of another command than command and not replace; STATUS_SYSTEM
+   if it cannot be created or replaced where it is */
+int output_check(const char *dir, const char *command, int replace, Status *st);
 /* for a file written after the commit into dir (the matrix): STATUS_INPUT
    if its name is empty or too long, STATUS_SYSTEM if it cannot be created
    (its folder is neither there and writable nor dir itself) */
 int output_check_file(const char *path, const char *dir, Status *st);
-int output_begin(Output *o, const char *dir, Status *st);
+/* stage the run of command into dir, checked by output_check */
+int output_begin(Output *o, const char *dir, const char *command, int replace,
+                 Status *st);
 FILE *output_open(Output *o, const char *name, Status *st);
 int output_close(Output *o, FILE *f, Status *st);
 int output_commit(Output *o, Status *st);
@@ -49,7 +53,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 181 "paper/output.nw"
+#line 185 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -66,7 +70,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 205 "paper/output.nw"
+#line 209 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -95,7 +99,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 238 "paper/output.nw"
+#line 242 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
@@ -110,5 +114,5 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 174 "paper/output.nw"
+#line 178 "paper/output.nw"
 #endif

@@ -1,13 +1,15 @@
-#line 494 "paper/output.nw"
+#line 504 "paper/output.nw"
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 509 "paper/output.nw"
+#line 521 "paper/output.nw"
 int output_dir_name(const char *given, char *dir, size_t size, Status *st)
 {
   size_t n = strlen(given);
@@ -26,7 +28,7 @@ int output_dir_name(const char *given, char *dir, size_t size, Status *st)
   snprintf(dir, size, "%.*s", (int) n, given);
   return STATUS_OK;
 }
-#line 537 "paper/output.nw"
+#line 549 "paper/output.nw"
 /* parent = the folder of path: all before its last slash, "." or "/" */
 static void output_parent(const char *path, char *parent, size_t size)
 {
@@ -92,28 +94,68 @@ int output_check_file(const char *path, const char *dir, Status *st)
   if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
   return output_creatable(path, 0, st);
 }
-#line 608 "paper/output.nw"
-int output_check(const char *dir, Status *st)
+#line 630 "paper/output.nw"
+/* the command of the run in dir (from its summary.dat), "" if none says */
+static void output_run_command(const char *dir, char *command, size_t size)
+{
+  char path[1200], line[256], word[64];
+  snprintf(path, sizeof path, "%s/summary.dat", dir);
+  FILE *f = fopen(path, "r");
+  *command = '\0';
+  while (f && fgets(line, sizeof line, f))
+    if (sscanf(line, "command %63s", word) == 1) {
+      snprintf(command, size, "%s", word);
+      break;
+    }
+  if (f) fclose(f);
+}
+
+/* whether the existing folder dir can be renamed (tried, and undone) */
+static int output_movable(const char *dir, Status *st)
+{
+  char aside[1200];
+  sigset_t s, saved;
+  int e = 0;
+  snprintf(aside, sizeof aside, "%s.check-%ld", dir, (long) getpid());
+  sigemptyset(&s), sigaddset(&s, SIGINT), sigaddset(&s, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &s, &saved);
+  if (rename(dir, aside)) e = errno;
+  else if (rename(aside, dir)) e = errno;
+  pthread_sigmask(SIG_SETMASK, &saved, NULL);
+  return e ? output_errno(st, e, dir, "cannot replace it (it cannot be moved "
+                          "aside)") : STATUS_OK;
+}
+
+int output_check(const char *dir, const char *command, int replace, Status *st)
 {
   struct stat sb;
-  char path[1200];
+  char path[1200], other[64];
   int rc = output_creatable(dir, 1, st);
   if (rc) return rc;
   if (stat(dir, &sb)) return STATUS_OK;                 /* absent */
   if (!S_ISDIR(sb.st_mode))
     return status_set(st, STATUS_INPUT, "%s: exists and is not a folder", dir);
   snprintf(path, sizeof path, "%s/summary.dat", dir);
-  if (!stat(path, &sb)) return STATUS_OK;
+  if (!stat(path, &sb)) {
+    output_run_command(dir, other, sizeof other);
+    if (!replace && strcmp(other, command))
+      return status_set(st, STATUS_INPUT, "%s: holds the run of %s%s: %s would "
+                        "replace it; choose another -o, or give --replace",
+                        dir, *other ? "contactopt " : "another command",
+                        other, command);
+    return output_movable(dir, st);
+  }
   DIR *d = opendir(dir);
   struct dirent *e;
   int empty = d != NULL;
   while (d && empty && (e = readdir(d)))
     empty = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..");
   if (d) closedir(d);
-  return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
-    "holds files that are not a run's (no summary.dat): choose another -o", dir);
+  return !empty ? status_set(st, STATUS_INPUT, "%s: exists and holds files that "
+                             "are not a run's (no summary.dat): choose another -o", dir)
+                : output_movable(dir, st);
 }
-#line 656 "paper/output.nw"
+#line 718 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {

@@ -1,9 +1,9 @@
-#line 1336 "paper/output.nw"
+#line 1398 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1350 "paper/output.nw"
+#line 1412 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -11,7 +11,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   int rc = output_state(o, "", md, X, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# name value\n");
+  fprintf(f, "# name value\ncommand %s\n", o->command);
   fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", run->scene,
           run->state_solver, problem_model_name(p->model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
@@ -24,7 +24,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1397 "paper/output.nw"
+#line 1459 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -39,7 +39,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1416 "paper/output.nw"
+#line 1478 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -62,7 +62,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1450 "paper/output.nw"
+#line 1512 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -89,7 +89,8 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   int rc = J && J->kind != OBJECTIVE_ENERGY ? objective_value(md, J, &value, st) : STATUS_OK;
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
-  fprintf(f, "# name value\nscene %s\nmodel %s\nN %d\nenergy %.15g\n"
+  fprintf(f, "# name value\ncommand %s\n", o->command);
+  fprintf(f, "scene %s\nmodel %s\nN %d\nenergy %.15g\n"
              "objective %s\nobjective_value %.15g\n"
              "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
           run->scene, problem_model_name(p->model), p->N, md->energy,

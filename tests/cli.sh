@@ -123,6 +123,23 @@ early "-o ''" 2 "-o '': the output folder has an empty name" -- -o ''
 touch $TMP/afile
 early "-o under a file" 4 'afile/bad: cannot create it in .*afile: Not a directory' -- -o $TMP/afile/bad
 early "-o DIR/." 2 'cannot replace the folder \.' -- -o $TMP/bad/.
+# a folder that exists but cannot be moved aside (immutable, chattr +i):
+# refused before any work, not after it (exit 4); where the file system
+# has no such attribute, said so and skipped
+mkdir -p $TMP/bad && if chattr +i $TMP/bad 2>/dev/null; then
+  ( cd $TMP && "$top/$BIN" gradcheck "$top/$scene" -s mesh.refine=4 -o $TMP/bad > $TMP/stdout 2> $TMP/err ); rc=$?
+  chattr -i $TMP/bad
+  check "-o an immutable empty folder: exit $rc at once, one line ($(cat $TMP/err))" \
+    holds 'rc == 4 && out == 0 && lines == 1 && said' rc=$rc out="$(wc -l < $TMP/stdout)" \
+      lines="$(wc -l < $TMP/err)" said=$(grep -q "bad: cannot replace it (it cannot be moved aside)" $TMP/err && echo 1 || echo 0)
+else ok "# skip: chattr +i is not supported here"; fi
+rm -rf $TMP/bad
+# a folder that cannot be made (under /proc): the message names the
+# user's folder, not the staging folder beside it
+$BIN solve $scene -o /proc/contactopt-test > /dev/null 2> $TMP/err; rc=$?
+check "-o under /proc: exit $rc, the user's path named ($(cat $TMP/err))" \
+  holds 'rc == 4 && said && !staged' rc=$rc said=$(grep -q '/proc/contactopt-test: cannot create' $TMP/err && echo 1 || echo 0) \
+    staged=$(grep -q partial $TMP/err && echo 1 || echo 0)
 early "--matrix-market ''" 2 "--matrix-market '': the file has an empty name" -- -o $TMP/bad --matrix-market ''
 early "--matrix-market a folder" 4 "$TMP: cannot write: Is a directory" -- -o $TMP/bad --matrix-market $TMP
 early "--matrix-market in a folder that is not there" 4 'sub/A.mtx: cannot create it in .*bad/sub: No such file' -- \

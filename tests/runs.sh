@@ -103,7 +103,7 @@ for into in new old; do
   for try in 1 2 3; do
     rm -rf $d $d.prev $TMP/out $TMP/err
     [ $into = old ] && $BIN solve $ex -o $d >/dev/null 2>&1 && cp -R $d $d.prev
-    $dflt $BIN optimize $ex -o $d -s mesh.refine=32 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
+    $dflt $BIN optimize $ex -o $d --replace -s mesh.refine=32 -s optimizer.method=slsqp >$TMP/out 2>$TMP/err &
     pid=$!
     for t in $(seq 600); do grep -q '^   0  E' $TMP/out 2>/dev/null && break; sleep 0.05; done
     sleep 0.5; kill -INT $pid; heard $pid; at_once=$?
@@ -132,9 +132,17 @@ check "SIGINT ignored at the start stays ignored: the run ends by itself (exit $
 
 # ---- output folders ---------------------------------------------------------------
 d=$TMP/folder
-$BIN optimize $ex -o $d >/dev/null 2>&1 && $BIN solve $ex -o $d >/dev/null 2>$TMP/err
-check "a solve into an optimisation's folder replaces it: no history.dat, no final/ beside the new files" \
-  test -s $d/summary.dat -a ! -e $d/history.dat -a ! -e $d/final
+$BIN optimize $ex -o $d >/dev/null 2>&1 && $BIN solve $ex -o $d >/dev/null 2>$TMP/err; rc=$?
+check "a solve into an optimisation's folder is refused (exit $rc, '$(cat $TMP/err)'), the optimisation kept" \
+  holds 'rc == 2 && lines == 1 && kept' rc=$rc lines="$(wc -l < $TMP/err)" \
+    kept=$([ "$(value command $d)" = optimize ] && [ -s $d/history.dat ] && echo 1 || echo 0)
+grep -q "folder: holds the run of contactopt optimize: solve would replace it; choose another -o, or give --replace" $TMP/err
+check "... with one line that names the folder, both commands and --replace" [ $? -eq 0 ]
+$BIN solve $ex -o $d --replace >/dev/null 2>$TMP/err
+check "--replace lets it: no history.dat, no final/ beside the new files, summary.dat says command solve" \
+  test -s $d/summary.dat -a ! -e $d/history.dat -a ! -e $d/final -a "$(value command $d)" = solve
+$BIN solve $ex -o $d >/dev/null 2>$TMP/err
+check "a solve replaces a solve's folder without --replace ($(cat $TMP/err))" [ $? -eq 0 ]
 mkdir -p $TMP/mine && echo precious > $TMP/mine/notes.txt
 $BIN solve $ex -o $TMP/mine >/dev/null 2>$TMP/err; rc=$?
 check "a folder that is not a run's is refused (exit 2, one line) and left alone" \

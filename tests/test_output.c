@@ -34,7 +34,7 @@ static int run(const char *dir, Model *md, const Problem *p, const double *X,
 {
   Output o;
   Output_history *h = output_history_new(p->N + 1, st);
-  int rc = h ? output_begin(&o, dir, st) : (int) st->code;
+  int rc = h ? output_begin(&o, dir, "solve", 0, st) : (int) st->code;
   if (rc) { output_history_free(h); return rc; }
   rc = output_history_vtu(h, &o, md, st);
   for (int k = 0; !rc && k < iterations; k++) {
