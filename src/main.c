@@ -238,7 +238,21 @@ static int no_newton(const Run *r, Status *st)
   return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: "
                     "optimizer.method = newton models the Hessian of a Tresca "
                     "energy, not the cost J_F of a Coulomb state; use slsqp or "
-                    "projgrad", r->s.path);
+                    "mma (or name no method: slsqp is chosen)", r->s.path);
+}
+
+/* the method the scene did not name, and why it is the one */
+static void say_method(const Run *r)
+{
+  const Scene *s = &r->s;
+  if (!s->method_chosen) return;
+  printf("%s: optimizer.method = %s, chosen for %s%s\n", s->path,
+         opt_method_name(s->optimizer.method),
+         s->optimizer.method == OPT_NEWTON ? "the energy without Coulomb friction"
+         : s->problem.contact == CONTACT_COULOMB ? "contact.model = coulomb"
+         : "objective.kind = ",
+         s->optimizer.method == OPT_NEWTON || s->problem.contact == CONTACT_COULOMB
+         ? "" : objective_name(s->optimizer.objective.kind));
 }
 
 /* the nodes whose differences met other held sets than the design's:
@@ -279,7 +293,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 769 "paper/main.nw"
+#line 783 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -290,7 +304,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 786 "paper/main.nw"
+#line 800 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -303,7 +317,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 811 "paper/main.nw"
+#line 825 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -333,7 +347,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 844 "paper/main.nw"
+#line 858 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -343,7 +357,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 864 "paper/main.nw"
+#line 878 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -362,10 +376,11 @@ static int command_optimize(Run *r, Status *st)
   else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
     rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
                     "the energy only; objective.kind = %s needs slsqp, "
-                    "mma or projgrad", r->s.path, objective_name(J->kind));
+                    "mma or projgrad (or name no method: slsqp is chosen)",
+                    r->s.path, objective_name(J->kind));
   else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
   else if (!h || !m) rc = st->code;
-  else if (!(rc = begin(r, &o, st))) {
+  else if (say_method(r), !(rc = begin(r, &o, st))) {
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved,
@@ -406,7 +421,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 936 "paper/main.nw"
+#line 951 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -425,7 +440,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 966 "paper/main.nw"
+#line 981 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -441,7 +456,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 994 "paper/main.nw"
+#line 1009 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

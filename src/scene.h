@@ -18,6 +18,7 @@ typedef struct {
   double *alpha0;        /* N+1 nodal values of the initial design (owned) */
   Qp_options solver;     /* [solver]: the state problem (4.3) */
   Opt_options optimizer; /* [optimizer]: Section 4.4, Algorithm 4.1 */
+  int method_chosen;     /* optimizer.method not given: chosen by the scene */
   char note[512];        /* "", or a remark for the user (a shape resampled) */
 } Scene;
 

@@ -146,6 +146,23 @@ check "a start that lifts off: exit $rc = 3, one line ($(cat $TMP/err))" \
 bad "an unknown objective.kind" gradcheck data/example-5.1.scene -s objective.kind=stress
 bad "objective.q < 1" gradcheck data/example-5.1.scene -s objective.kind=pressure_peak -s objective.q=0.5
 bad "objective.q with kind compliance" gradcheck data/example-5.1.scene -s objective.kind=compliance -s objective.q=4
-bad "newton with another objective" optimize data/example-5.1.scene -s objective.kind=pressure_spread
+bad "newton named with another objective" optimize data/example-5.1.scene -s objective.kind=pressure_spread -s optimizer.method=newton
+grep -q "objective.kind = pressure_spread needs slsqp, mma or projgrad" $TMP/err
+check "... the refusal lists the methods that can" [ $? -eq 0 ]
+bad "newton named with Coulomb friction" optimize data/example-5.1.scene -s contact.model=coulomb \
+  -s contact.friction=0.2 -s optimizer.method=newton
+grep -q "use slsqp or mma" $TMP/err
+check "... the refusal lists the methods that can" [ $? -eq 0 ]
+# a scene that names no method gets one that accepts its objective and its
+# contact law, said in the first line and in summary.dat
+chosen() { desc=$1 want=$2 why=$3; shift 3
+  $BIN optimize data/example-5.1.scene -o $TMP/chosen "$@" >$TMP/out 2>$TMP/err; rc=$?
+  check "$desc, no method named: exit $rc = 0, optimizer $(value optimizer $TMP/chosen) = $want, first line '$(head -1 $TMP/out)'" \
+    holds 'rc == 0 && m == 1 && said == 1' rc=$rc m=$([ "$(value optimizer $TMP/chosen)" = $want ] && echo 1 || echo 0) \
+      said=$(head -1 $TMP/out | grep -c "optimizer.method = $want, chosen for $why"); }
+chosen "compliance" slsqp "objective.kind = compliance" -s objective.kind=compliance
+chosen "pressure_peak" slsqp "objective.kind = pressure_peak" -s objective.kind=pressure_peak
+chosen "Coulomb friction" slsqp "contact.model = coulomb" -s contact.model=coulomb -s contact.friction=0.2
+chosen "the energy" newton "the energy without Coulomb friction"
 bad "an unknown metric with mma" optimize data/example-5.1.scene -s optimizer.method=mma -s optimizer.metric=sobolev
 finish
