@@ -338,13 +338,13 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
                             levels, X, r->md, coarse_monitor, r->md->cm, c, st);
   c->levels = levels;
   if (!rc && c->stop_reason[0])
-    printf("%s: coarse to fine: interrupted after %d evaluations, %.2f s; "
+    printf("%s: coarse to fine: interrupted after %d evaluation%s, %.2f s; "
            "N = %d starts from the scene's design\n", r->s.path, c->evaluations,
-           c->seconds, N);
+           c->evaluations == 1 ? "" : "s", c->seconds, N);
   else if (!rc)
-    printf("%s: coarse to fine: N = %d .. %d in %d evaluations, %.2f s; "
+    printf("%s: coarse to fine: N = %d .. %d in %d evaluation%s, %.2f s; "
            "N = %d starts from their optimum\n", r->s.path, N >> (levels - 1),
-           N / 2, c->evaluations, c->seconds, N);
+           N / 2, c->evaluations, c->evaluations == 1 ? "" : "s", c->seconds, N);
   return rc;
 }
 #line 858 "paper/main.nw"
@@ -401,10 +401,11 @@ static int command_optimize(Run *r, Status *st)
   double J1 = rep.energy;                   /* the objective, E by default */
   if (!rc && J->kind != OBJECTIVE_ENERGY) rc = objective_value(r->md, J, &J1, st);
   if (!rc)
-    printf("%s: %s %.10g -> %.10g%s in %d iterations, %d evaluations, "
+    printf("%s: %s %.10g -> %.10g%s in %d iteration%s, %d evaluation%s, "
            "projected gradient %.2e (%s) -> %s/\n", r->s.path,
            objective_symbol(J->kind), J0, J1, objective_unit(J->kind),
-           rep.iterations, rep.evaluations, rep.pgnorm, rep.stop_reason, r->dir);
+           rep.iterations, rep.iterations == 1 ? "" : "s", rep.evaluations,
+           rep.evaluations == 1 ? "" : "s", rep.pgnorm, rep.stop_reason, r->dir);
   if (!rc && !strcmp(rep.stop_reason, "interrupted"))
     rc = status_set(st, STATUS_INTERRUPTED, "%s: interrupted by signal %d at "
                     "iteration %d: the files of the best design so far are in %s/",
@@ -421,7 +422,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 951 "paper/main.nw"
+#line 952 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -440,7 +441,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 981 "paper/main.nw"
+#line 982 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -456,7 +457,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1009 "paper/main.nw"
+#line 1010 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -60,7 +60,7 @@ typedef struct {
 
 #line 240 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
-   max_iter 2000 for slsqp and mma, 200 for newton and projgrad */
+   max_iter 200 (the scene raises it for objectives other than the energy) */
 Opt_options opt_options_default(Opt_method method);
 const char *opt_method_name(Opt_method m);   /* or "?" */
 const char *opt_metric_name(Opt_metric m);   /* or "?" */

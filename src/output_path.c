@@ -94,19 +94,22 @@ int output_check_file(const char *path, const char *dir, Status *st)
   if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
   return output_creatable(path, 0, st);
 }
-#line 630 "paper/output.nw"
-/* the command of the run in dir (from its summary.dat), "" if none says */
+#line 634 "paper/output.nw"
+/* the command of the run in dir, from its summary.dat: its command line,
+   or (written before there was one) optimize where it names an optimizer,
+   gradcheck where it counts nodes_checked, solve otherwise */
 static void output_run_command(const char *dir, char *command, size_t size)
 {
   char path[1200], line[256], word[64];
+  const char *guess = "solve";
   snprintf(path, sizeof path, "%s/summary.dat", dir);
   FILE *f = fopen(path, "r");
   *command = '\0';
-  while (f && fgets(line, sizeof line, f))
-    if (sscanf(line, "command %63s", word) == 1) {
-      snprintf(command, size, "%s", word);
-      break;
-    }
+  while (f && !*command && fgets(line, sizeof line, f))
+    if (sscanf(line, "command %63s", word) == 1) snprintf(command, size, "%s", word);
+    else if (!strncmp(line, "optimizer ", 10)) guess = "optimize";
+    else if (!strncmp(line, "nodes_checked ", 14)) guess = "gradcheck";
+  if (!*command) snprintf(command, size, "%s", guess);
   if (f) fclose(f);
 }
 
@@ -120,7 +123,13 @@ static int output_movable(const char *dir, Status *st)
   sigemptyset(&s), sigaddset(&s, SIGINT), sigaddset(&s, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &s, &saved);
   if (rename(dir, aside)) e = errno;
-  else if (rename(aside, dir)) e = errno;
+  else if (rename(aside, dir) && rename(aside, dir)) {
+    e = errno;
+    pthread_sigmask(SIG_SETMASK, &saved, NULL);
+    return status_set(st, STATUS_SYSTEM, "%s: moved to %s to check that it can be "
+                      "replaced, and cannot be moved back: %s", dir, aside,
+                      strerror(e));
+  }
   pthread_sigmask(SIG_SETMASK, &saved, NULL);
   return e ? output_errno(st, e, dir, "cannot replace it (it cannot be moved "
                           "aside)") : STATUS_OK;
@@ -139,10 +148,9 @@ int output_check(const char *dir, const char *command, int replace, Status *st)
   if (!stat(path, &sb)) {
     output_run_command(dir, other, sizeof other);
     if (!replace && strcmp(other, command))
-      return status_set(st, STATUS_INPUT, "%s: holds the run of %s%s: %s would "
-                        "replace it; choose another -o, or give --replace",
-                        dir, *other ? "contactopt " : "another command",
-                        other, command);
+      return status_set(st, STATUS_INPUT, "%s: holds the run of contactopt %s: "
+                        "%s would replace it; choose another -o, or give --replace",
+                        dir, other, command);
     return output_movable(dir, st);
   }
   DIR *d = opendir(dir);
@@ -155,7 +163,7 @@ int output_check(const char *dir, const char *command, int replace, Status *st)
                              "are not a run's (no summary.dat): choose another -o", dir)
                 : output_movable(dir, st);
 }
-#line 718 "paper/output.nw"
+#line 730 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {

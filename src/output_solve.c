@@ -1,9 +1,9 @@
-#line 1398 "paper/output.nw"
+#line 1410 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1412 "paper/output.nw"
+#line 1424 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -24,7 +24,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1459 "paper/output.nw"
+#line 1471 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -39,7 +39,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1478 "paper/output.nw"
+#line 1490 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -62,7 +62,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1512 "paper/output.nw"
+#line 1524 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

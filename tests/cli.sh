@@ -69,6 +69,13 @@ $BIN solve $scene -o $TMP/fine -s mesh.refine=4 -s design.initial=file \
   -s design.file=$TMP/coarse/final/shape.dat > $TMP/stdout 2> $TMP/err; rc=$?
 check "solve on N = 64 from the optimum on N = 16: exit 0, the note on stdout ($(head -1 $TMP/stdout | cut -c1-150))" \
   sh -c "[ $rc -eq 0 ] && grep -q 'shape.dat: 17 rows on \[0, 4\] resampled by linear interpolation onto the N + 1 = 65 design nodes' $TMP/stdout"
+# design.file given by -s is relative to the scene's folder, as in the
+# scene file; run elsewhere, a file that is not there says where it was
+# looked for
+( cd $TMP/coarse/final && "$top/$BIN" solve "$top/$scene" -o $TMP/rel -s design.initial=file \
+    -s design.file=shape.dat > /dev/null 2> $TMP/err ); rc=$?
+check "-s design.file=shape.dat run in another folder: exit $rc, the message says the path is the scene's ($(cat $TMP/err))" \
+  sh -c "[ $rc -eq 2 ] && grep -q 'cannot read .*/data/shape.dat (design.file is relative to the scene.s folder)' $TMP/err"
 grep -v '^#' $TMP/fine/shape.dat | awk 'NR % 4 == 1' > $TMP/every4
 grep -v '^#' $TMP/coarse/final/shape.dat | paste $TMP/every4 - > $TMP/both
 check "the resampled shape is the coarse optimum at every fourth node (to 1e-15 m)" \

@@ -161,8 +161,16 @@ chosen() { desc=$1 want=$2 why=$3; shift 3
     holds 'rc == 0 && m == 1 && said == 1' rc=$rc m=$([ "$(value optimizer $TMP/chosen)" = $want ] && echo 1 || echo 0) \
       said=$(head -1 $TMP/out | grep -c "optimizer.method = $want, chosen for $why"); }
 chosen "compliance" slsqp "objective.kind = compliance" -s objective.kind=compliance
-chosen "pressure_peak" slsqp "objective.kind = pressure_peak" -s objective.kind=pressure_peak
 chosen "Coulomb friction" slsqp "contact.model = coulomb" -s contact.model=coulomb -s contact.friction=0.2
 chosen "the energy" newton "the energy without Coulomb friction"
+check "the energy: optimizer.max_iter = 200 unless given ($(grep '^max_iter' $TMP/chosen/effective.scene))" \
+  grep -q '^max_iter = 200$' $TMP/chosen/effective.scene
+chosen "compliance, again" slsqp "objective.kind = compliance" -s objective.kind=compliance
+check "compliance: optimizer.max_iter = 2000 unless given ($(grep '^max_iter' $TMP/chosen/effective.scene))" \
+  grep -q '^max_iter = 2000$' $TMP/chosen/effective.scene
+rm -rf $TMP/chosen
+$BIN optimize data/example-5.1.scene -o $TMP/chosen -s objective.kind=compliance -s optimizer.max_iter=7 >/dev/null 2>&1
+check "compliance with optimizer.max_iter = 7 given: kept ($(grep '^max_iter' $TMP/chosen/effective.scene))" \
+  grep -q '^max_iter = 7$' $TMP/chosen/effective.scene
 bad "an unknown metric with mma" optimize data/example-5.1.scene -s optimizer.method=mma -s optimizer.metric=sobolev
 finish
