@@ -1,4 +1,4 @@
-#line 315 "paper/output.nw"
+#line 324 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
@@ -12,14 +12,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 352 "paper/output.nw"
+#line 361 "paper/output.nw"
 /* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
 int output_errno(Status *st, int e, const char *path, const char *what)
 {
   return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
                     path, what, strerror(e));
 }
-#line 420 "paper/output.nw"
+#line 429 "paper/output.nw"
 /* *mark = v, after every write before it, as a signal handler sees them */
 void output_publish(volatile sig_atomic_t *mark, int v)
 {
@@ -75,7 +75,7 @@ void output_abort_now(void *arg)
   rmdir(o->stage);
 }
 
-#line 368 "paper/output.nw"
+#line 377 "paper/output.nw"
 static int output_mkdirs(const char *path, Status *st)
 {
   char p[1200];
@@ -90,7 +90,7 @@ static int output_mkdirs(const char *path, Status *st)
     }
 }
 
-#line 477 "paper/output.nw"
+#line 486 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -102,7 +102,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 632 "paper/output.nw"
+#line 641 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -123,7 +123,7 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 385 "paper/output.nw"
+#line 394 "paper/output.nw"
 int output_begin(Output *o, const char *dir, Status *st)
 {
   memset(o, 0, sizeof *o);
@@ -134,7 +134,7 @@ int output_begin(Output *o, const char *dir, Status *st)
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, st);
 }
-#line 670 "paper/output.nw"
+#line 679 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -173,7 +173,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 713 "paper/output.nw"
+#line 722 "paper/output.nw"
 int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -201,7 +201,7 @@ FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 820 "paper/output.nw"
+#line 829 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -264,7 +264,7 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 762 "paper/output.nw"
+#line 771 "paper/output.nw"
 /* hold SIGINT and SIGTERM (on), or let them through again (off) */
 static void output_hold_signals(int on, sigset_t *saved)
 {
@@ -316,7 +316,7 @@ int output_commit(Output *o, Status *st)
   output_hold_signals(0, &saved);
   return rc;
 }
-#line 885 "paper/output.nw"
+#line 894 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);

@@ -1,4 +1,4 @@
-#line 494 "paper/output.nw"
+#line 503 "paper/output.nw"
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 509 "paper/output.nw"
+#line 518 "paper/output.nw"
 int output_dir_name(const char *given, char *dir, size_t size, Status *st)
 {
   size_t n = strlen(given);
@@ -26,7 +26,7 @@ int output_dir_name(const char *given, char *dir, size_t size, Status *st)
   snprintf(dir, size, "%.*s", (int) n, given);
   return STATUS_OK;
 }
-#line 537 "paper/output.nw"
+#line 546 "paper/output.nw"
 /* parent = the folder of path: all before its last slash, "." or "/" */
 static void output_parent(const char *path, char *parent, size_t size)
 {
@@ -92,7 +92,7 @@ int output_check_file(const char *path, const char *dir, Status *st)
   if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
   return output_creatable(path, 0, st);
 }
-#line 608 "paper/output.nw"
+#line 617 "paper/output.nw"
 int output_check(const char *dir, Status *st)
 {
   struct stat sb;
@@ -113,7 +113,7 @@ int output_check(const char *dir, Status *st)
   return empty ? STATUS_OK : status_set(st, STATUS_INPUT, "%s: exists and "
     "holds files that are not a run's (no summary.dat): choose another -o", dir);
 }
-#line 656 "paper/output.nw"
+#line 665 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {
