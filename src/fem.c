@@ -370,7 +370,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 733 "paper/fem.nw"
+#line 734 "paper/fem.nw"
 void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
@@ -383,7 +383,7 @@ void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
     if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
       continue;                          /* no held vertex component */
     
-#line 750 "paper/fem.nw"
+#line 751 "paper/fem.nw"
 double xy[6], K[6][6], q[6];
 fem_element_xy(m, t, xy);
 fem_element_stiffness(xy, H, K);
@@ -394,10 +394,10 @@ for (int a = 0; a < 6; a++)
     for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
     r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
   }
-#line 745 "paper/fem.nw"
+#line 746 "paper/fem.nw"
   }
 }
-#line 771 "paper/fem.nw"
+#line 772 "paper/fem.nw"
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
@@ -412,20 +412,20 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
       owner = on[s];
   return owner;
 }
-#line 817 "paper/fem.nw"
+#line 818 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 831 "paper/fem.nw"
+#line 832 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 823 "paper/fem.nw"
+#line 824 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

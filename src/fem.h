@@ -54,7 +54,7 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
-#line 724 "paper/fem.nw"
+#line 725 "paper/fem.nw"
 /* r (ndof) = K u - f at the held DOFs, the force of the sides on the
    body [N/m when E is in Pa]; 0 at the unknowns */
 void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
