@@ -100,18 +100,20 @@ balanced() {
     holds 'abs(a - b) <= 1e-12 * abs(b)' a="$(value contact_pressure_max $_s)" b="$peak"
 }
 
-# case NAME MODEL LEFT RIGHT TOP F1 F2 CONTACT [COMMAND]: solve (or
-# optimize) Example 5.1 with these sides, loads and contact law, and check
+# case NAME MODEL LEFT RIGHT TOP F1 F2 CONTACT [COMMAND [OVERRIDE...]]:
+# solve (or optimize) Example 5.1 with these sides, loads and contact
+# law, and check
 case_() {
   name=$1 model=$2 side_left=$3 side_right=$4 side_top=$5 F1=$6 F2=$7 law=$8 cmd=${9:-solve}
-  out=$TMP/$name
-  if ! $BIN $cmd $ex -o $out -s material.model=$model $(side_args left $3) $(side_args right $4) \
-       $(side_args top $5) -s body_force.F1=$F1 -s body_force.F2=$F2 $(contact_args $8) \
-       > /dev/null 2> $TMP/err; then
+  out=$TMP/$name more=
+  if [ $# -gt 9 ]; then shift 9; for o; do more="$more -s $o"; done; fi
+  if ! $BIN $cmd $ex -o $out -s material.model=$model $(side_args left $side_left) \
+       $(side_args right $side_right) $(side_args top $side_top) -s body_force.F1=$F1 \
+       -s body_force.F2=$F2 $(contact_args $law) $more > /dev/null 2> $TMP/err; then
     fail "$name: $cmd: $(cat $TMP/err)"; return
   fi
-  if [ $cmd = solve ]; then balanced "$name" $out $out "$3" "$4" "$5" $F1 $F2
-  else balanced "$name (optimum)" $out/final $out "$3" "$4" "$5" $F1 $F2; fi
+  if [ $cmd = solve ]; then balanced "$name" $out $out "$side_left" "$side_right" "$side_top" $F1 $F2
+  else balanced "$name (optimum)" $out/final $out "$side_left" "$side_right" "$side_top" $F1 $F2; fi
 }
 
 P=-5.75e8
@@ -131,4 +133,5 @@ case_ left-load        plane_strain  traction:0.3:0.9:1e8:0 roller roller       
 case_ corner-load      plane_stress  clamped    clamped    traction:0:4:1e8:$P        0     0      frictionless
 case_ opt-5.1          plane_stress  clamped    roller     traction:2:4:0:$P          0     0      frictionless optimize
 case_ opt-gravity      plane_strain  clamped    roller     traction:2:4:0:$P          5e7   -2e8   tresca:5e8   optimize
+case_ opt-coulomb      plane_stress  roller     roller     traction:1:4:1e8:$P        0     -1e8   coulomb:0.3  optimize optimizer.method=slsqp
 finish
