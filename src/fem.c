@@ -5,6 +5,7 @@
 #include "fem.h"
 #line 148 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
+static int fem_side_holds(Side_id side, Bc_kind kind, int c);
 
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
@@ -25,7 +26,7 @@ Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 175 "paper/fem.nw"
+#line 176 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -38,10 +39,10 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 169 "paper/fem.nw"
+#line 170 "paper/fem.nw"
   return d;
 }
-#line 191 "paper/fem.nw"
+#line 192 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -49,12 +50,18 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
   for (int s = 0; s < count; s++) {
     int k = side == SIDE_TOP ? (m->nrow - 1) * m->ncol + s
           : s * m->ncol + (side == SIDE_LEFT ? 0 : m->N);
-    int normal = side == SIDE_TOP ? 1 : 0;
-    if (kind == BC_CLAMPED || normal == 0) held[2 * k] = -1;
-    if (kind == BC_CLAMPED || normal == 1) held[2 * k + 1] = -1;
+    for (int c = 0; c < 2; c++)
+      if (fem_side_holds(side, kind, c)) held[2 * k + c] = -1;
   }
 }
-#line 207 "paper/fem.nw"
+#line 208 "paper/fem.nw"
+static int fem_side_holds(Side_id side, Bc_kind kind, int c)
+{
+  int normal = side == SIDE_TOP ? 1 : 0;
+  return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
+}
+
+#line 215 "paper/fem.nw"
 void fem_dofs_free(Dofs *d)
 {
   if (!d) return;
@@ -65,7 +72,7 @@ void fem_dofs_free(Dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 235 "paper/fem.nw"
+#line 243 "paper/fem.nw"
 Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
@@ -80,7 +87,7 @@ Hooke fem_hooke(const Problem *p)
   D[2][2] = mu;
   return H;
 }
-#line 297 "paper/fem.nw"
+#line 305 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -98,7 +105,7 @@ void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 318 "paper/fem.nw"
+#line 326 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -108,7 +115,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 331 "paper/fem.nw"
+#line 339 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -120,7 +127,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 349 "paper/fem.nw"
+#line 357 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -140,7 +147,7 @@ void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 377 "paper/fem.nw"
+#line 385 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -152,13 +159,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 391 "paper/fem.nw"
+#line 399 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 400 "paper/fem.nw"
+#line 408 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -168,9 +175,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 396 "paper/fem.nw"
+#line 404 "paper/fem.nw"
 }
-#line 453 "paper/fem.nw"
+#line 461 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -186,17 +193,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 475 "paper/fem.nw"
+#line 483 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 468 "paper/fem.nw"
+#line 476 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 483 "paper/fem.nw"
+#line 491 "paper/fem.nw"
 static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
@@ -224,7 +231,7 @@ static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 431 "paper/fem.nw"
+#line 439 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -239,7 +246,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 513 "paper/fem.nw"
+#line 521 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -248,7 +255,7 @@ static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 526 "paper/fem.nw"
+#line 534 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -260,7 +267,7 @@ static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 552 "paper/fem.nw"
+#line 560 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -282,7 +289,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-#line 578 "paper/fem.nw"
+#line 586 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
                        const Hooke *H, Status *st)
 {
@@ -294,48 +301,60 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 595 "paper/fem.nw"
+#line 603 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 589 "paper/fem.nw"
+#line 597 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 611 "paper/fem.nw"
-static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
-                               double *b);
-static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
-                             const Side *load, double *b);
+#line 619 "paper/fem.nw"
+static void fem_assemble_load(const Mesh *m, const Dofs *d, const Problem *p,
+                              int held, double *b);
 
 void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
 {
   memset(b, 0, d->n * sizeof *b);
-  if (p->has_body_force) fem_add_body_force(m, d, p->F, b);
+  fem_assemble_load(m, d, p, 0, b);
+}
+#line 635 "paper/fem.nw"
+static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
+                               int held, double *b);
+static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
+                             const Side *load, int held, double *b);
+
+static void fem_assemble_load(const Mesh *m, const Dofs *d, const Problem *p,
+                              int held, double *b)
+{
+  if (p->has_body_force) fem_add_body_force(m, d, p->F, held, b);
   for (int side = 0; side < SIDE_COUNT; side++)
     if (p->side[side].kind == BC_TRACTION)
-      fem_add_traction(m, d, side, &p->side[side], b);
+      fem_add_traction(m, d, side, &p->side[side], held, b);
 }
-#line 628 "paper/fem.nw"
+#line 652 "paper/fem.nw"
 static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
-                          double *b)
+                          int held, double *b)
 {
-  for (int c = 0; c < 2; c++)
-    if (d->unknown[2 * node + c] >= 0) b[d->unknown[2 * node + c]] += w * f[c];
+  for (int c = 0; c < 2; c++) {
+    int k = 2 * node + c, u = d->unknown[k];
+    if (!held && u >= 0) b[u] += w * f[c];
+    if (held && u < 0) b[k] += w * f[c];
+  }
 }
-#line 637 "paper/fem.nw"
+#line 664 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
-                               double *b)
+                               int held, double *b)
 {
   for (int t = 0; t < m->ntri; t++)
     for (int k = 0; k < 3; k++)
-      fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, b);
+      fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
-#line 651 "paper/fem.nw"
+#line 678 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
-                             const Side *load, double *b)
+                             const Side *load, int held, double *b)
 {
   int top = side == SIDE_TOP, count = top ? m->N : m->nrow - 1;
   for (int e = 0; e < count; e++) {
@@ -347,24 +366,66 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
     double t1 = (fmin(s1, load->to) - s0) / (s1 - s0);
     if (t1 <= t0) continue;
     double L = s1 - s0;
-    fem_add_force(d, p, load->P, L * ((t1 - t0) - (t1 * t1 - t0 * t0) / 2), b);
-    fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, b);
+    fem_add_force(d, p, load->P, L * ((t1 - t0) - (t1 * t1 - t0 * t0) / 2), held, b);
+    fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 700 "paper/fem.nw"
+#line 734 "paper/fem.nw"
+void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
+                   const Problem *p, const double *Q, double *r)
+{
+  memset(r, 0, d->ndof * sizeof *r);
+  fem_assemble_load(m, d, p, 1, r);
+  for (int k = 0; k < d->ndof; k++) r[k] = -r[k];
+  for (int t = 0; t < m->ntri; t++) {
+    int g[6];
+    fem_element_dofs(m, d, t, g);
+    if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
+      continue;                          /* no held vertex component */
+    
+#line 751 "paper/fem.nw"
+double xy[6], K[6][6], q[6];
+fem_element_xy(m, t, xy);
+fem_element_stiffness(xy, H, K);
+fem_element_q(m, d, Q, t, q);
+for (int a = 0; a < 6; a++)
+  if (g[a] < 0) {
+    long double s = 0;
+    for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
+    r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
+  }
+#line 746 "paper/fem.nw"
+  }
+}
+#line 772 "paper/fem.nw"
+int fem_reaction_side(const Mesh *m, const Problem *p, int k)
+{
+  int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
+  Side_id on[SIDE_COUNT];
+  int n = 0, owner = -1;
+  if (i == 0) on[n++] = SIDE_LEFT;
+  if (i == m->N) on[n++] = SIDE_RIGHT;
+  if (j == m->nrow - 1) on[n++] = SIDE_TOP;
+  for (int s = 0; s < n; s++)
+    if (fem_side_holds(on[s], p->side[on[s]].kind, c)
+        && (owner < 0 || c == (on[s] == SIDE_TOP ? 1 : 0)))
+      owner = on[s];
+  return owner;
+}
+#line 818 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 714 "paper/fem.nw"
+#line 832 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 706 "paper/fem.nw"
+#line 824 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

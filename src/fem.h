@@ -26,7 +26,7 @@ typedef struct { double D[3][3]; } Hooke;
 Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Dofs *d);
 Hooke fem_hooke(const Problem *p);
-#line 276 "paper/fem.nw"
+#line 284 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -54,5 +54,12 @@ void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
+#line 725 "paper/fem.nw"
+/* r (ndof) = K u - f at the held DOFs, the force of the sides on the
+   body [N/m when E is in Pa]; 0 at the unknowns */
+void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
+                   const Problem *p, const double *Q, double *r);
+/* the side whose reaction the held DOF k takes, -1 if no side holds it */
+int fem_reaction_side(const Mesh *m, const Problem *p, int k);
 #line 101 "paper/fem.nw"
 #endif

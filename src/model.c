@@ -239,14 +239,58 @@ for (int c = 0; c < nc; c++)
   free(Scc);
   return STATUS_OK;
 }
-#line 516 "paper/model.nw"
+#line 569 "paper/model.nw"
+int model_summary(const Model *md, Model_summary *sum, Status *st)
+{
+  const Dofs *d = md->dofs;
+  double *r = malloc(d->ndof * sizeof *r);
+  if (!r) return status_set(st, STATUS_MEMORY, "summary: out of memory "
+                            "for the reactions of %d DOFs", d->ndof);
+  memset(sum, 0, sizeof *sum);
+  fem_reactions(md->mesh, d, &md->hooke, md->problem, md->Q, r);
+  
+#line 590 "paper/model.nw"
+for (int k = 0; k < d->ndof; k++) {
+  int side = d->unknown[k] < 0 ? fem_reaction_side(md->mesh, md->problem, k) : -1;
+  if (side >= 0) sum->reaction[side][k % 2] += r[k];
+}
+#line 578 "paper/model.nw"
+  free(r);
+  
+#line 597 "paper/model.nw"
+for (int c = 0; c < d->nc; c++)
+  if (md->Q[d->contact[c]] <= md->lo[c]) {
+    sum->pressure_max = fmax(sum->pressure_max, model_pressure(md, c));
+    sum->contact_length += mesh_tributary(md->mesh, d->contact_col[c]);
+  }
+#line 580 "paper/model.nw"
+  for (int t = 0; t < md->mesh->ntri; t++) {
+    double s[5];
+    model_stress(md, t, s);
+    sum->von_mises_max = fmax(sum->von_mises_max, s[4]);
+  }
+  return STATUS_OK;
+}
+#line 624 "paper/model.nw"
+void model_stress(const Model *md, int t, double s[5])
+{
+  long double e[3], sigma[3];
+  fem_triangle_strain(md->mesh, md->dofs, md->Q, t, e);
+  fem_element_stress(&md->hooke, e, sigma);
+  for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
+  s[3] = md->problem->model == MODEL_PLANE_STRAIN
+       ? (double) (md->hooke.D[0][1] * (e[0] + e[1])) : 0.0;
+  s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
+                     + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
+}
+#line 643 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 530 "paper/model.nw"
+#line 657 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -258,7 +302,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 547 "paper/model.nw"
+#line 674 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

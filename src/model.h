@@ -41,6 +41,18 @@ typedef struct {
                            change halves, to rounding (for a gradient) */
 } Model;
 
+#line 545 "paper/model.nw"
+/* what a summary says of the state at the last design solved */
+typedef struct {
+  double reaction[SIDE_COUNT][2]; /* N/m: the force of each side on the
+                                     body, (x1, x2); 0 where it holds none */
+  double pressure_max;    /* Pa: the peak contact pressure over the nodes
+                             in contact; 0 where none is */
+  double contact_length;  /* m: the tributary lengths of the nodes in
+                             contact, summed */
+  double von_mises_max;   /* Pa: the largest von Mises stress of a triangle */
+} Model_summary;
+
 #line 90 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
@@ -75,5 +87,11 @@ void model_guess_contact(Model *md, const double *X, const double *g);
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
+#line 558 "paper/model.nw"
+/* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
+   triangle t at the last state solved [Pa when E is] */
+void model_stress(const Model *md, int t, double s[5]);
+/* the summary of the last state solved; STATUS_MEMORY if memory runs out */
+int model_summary(const Model *md, Model_summary *sum, Status *st);
 #line 52 "paper/model.nw"
 #endif

@@ -1,14 +1,14 @@
-#line 1572 "paper/output.nw"
+#line 1597 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1584 "paper/output.nw"
+#line 1609 "paper/output.nw"
 static void output_objectives(const Model *md, double q, double *J);
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1451 "paper/output.nw"
+#line 1476 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const Model *md, const Output_start *start)
 {
@@ -22,7 +22,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1653 "paper/output.nw"
+#line 1678 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -43,7 +43,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1592 "paper/output.nw"
+#line 1617 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -88,7 +88,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1681 "paper/output.nw"
+#line 1706 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -122,7 +122,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1719 "paper/output.nw"
+#line 1744 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -135,7 +135,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1742 "paper/output.nw"
+#line 1767 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -154,7 +154,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1764 "paper/output.nw"
+#line 1789 "paper/output.nw"
 /* J = every objective at the model's state, the peak's exponent q, NaN
    where undefined (a body that lifts off has no pressure) */
 static void output_objectives(const Model *md, double q, double *J)
@@ -177,13 +177,14 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   output_objectives(md, q, start->J);
   return STATUS_OK;
 }
-#line 1792 "paper/output.nw"
+#line 1820 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
 {
   const Problem *p = md->problem;
-  FILE *f = output_open(o, "summary.dat", st);
+  Model_summary ms;
+  FILE *f = model_summary(md, &ms, st) ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
   fprintf(f, "scene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
@@ -205,6 +206,7 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
+  output_reactions(f, md, &ms);
   output_objectives_summary(f, run->objective, md, start);
   output_friction(f, md);
   threads_summary(f);

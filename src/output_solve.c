@@ -1,14 +1,16 @@
-#line 1410 "paper/output.nw"
+#line 1396 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1424 "paper/output.nw"
+#line 1417 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
   const Problem *p = md->problem;
+  Model_summary ms;
   int rc = output_state(o, "", md, X, st);
+  if (!rc) rc = model_summary(md, &ms, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
@@ -20,11 +22,26 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
           md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
+  output_reactions(f, md, &ms);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1471 "paper/output.nw"
+#line 1456 "paper/output.nw"
+void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
+{
+  static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
+  for (int s = 0; s < SIDE_COUNT; s++) {
+    Bc_kind kind = md->problem->side[s].kind;
+    if (kind == BC_CLAMPED || kind == BC_ROLLER)
+      fprintf(f, "reaction_%s_x1 %.15g\nreaction_%s_x2 %.15g\n", side[s],
+              ms->reaction[s][0], side[s], ms->reaction[s][1]);
+  }
+  fprintf(f, "contact_pressure_max %.15g\ncontact_length %.15g\n"
+             "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
+          ms->von_mises_max);
+}
+#line 1496 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -39,7 +56,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1490 "paper/output.nw"
+#line 1515 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -62,7 +79,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1524 "paper/output.nw"
+#line 1549 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

@@ -1,4 +1,4 @@
-#line 1094 "paper/output.nw"
+#line 1103 "paper/output.nw"
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 #include <string.h>
 #include "output_private.h"
 
-#line 1136 "paper/output.nw"
+#line 1145 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -30,7 +30,7 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 1195 "paper/output.nw"
+#line 1204 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -72,25 +72,13 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 1255 "paper/output.nw"
-static void vtu_triangle_stress(const Model *md, int t, double s[5])
-{
-  long double e[3], sigma[3];
-  fem_triangle_strain(md->mesh, md->dofs, md->Q, t, e);
-  fem_element_stress(&md->hooke, e, sigma);
-  for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
-  s[3] = md->problem->model == MODEL_PLANE_STRAIN
-       ? (double) (md->hooke.D[0][1] * (e[0] + e[1])) : 0.0;
-  s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
-                     + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
-}
-
+#line 1253 "paper/output.nw"
 static void vtu_stress(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 1279 "paper/output.nw"
+#line 1265 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -115,7 +103,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 1164 "paper/output.nw"
+#line 1173 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -138,7 +126,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 1308 "paper/output.nw"
+#line 1294 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -165,7 +153,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 1339 "paper/output.nw"
+#line 1325 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -177,7 +165,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1356 "paper/output.nw"
+#line 1342 "paper/output.nw"
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -190,13 +178,13 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
     free(s.stress), free(values);
     return status_set(st, STATUS_MEMORY, "solution.vtu: out of memory");
   }
-  for (size_t t = 0; t < nt; t++) vtu_triangle_stress(md, (int) t, s.stress + 5 * t);
+  for (size_t t = 0; t < nt; t++) model_stress(md, (int) t, s.stress + 5 * t);
   vtu_header(f, md->mesh, a, n);
   vtu_data(f, &s, a, n, values);
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1377 "paper/output.nw"
+#line 1363 "paper/output.nw"
 int output_vtu(Output *o, const char *sub, const Model *md,
                const double *X, Status *st)
 {

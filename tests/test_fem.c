@@ -3,7 +3,8 @@
    assembled operator applied to it vanishes at interior nodes and equals
    the consistent nodal forces of the boundary tractions sigma.n elsewhere;
    rigid motions have zero stiffness; the pattern of A is that of 36
-   triplets per element summed by CHOLMOD, entry for entry.  The mesh itself: test_mesh.c. */
+   triplets per element summed by CHOLMOD, entry for entry; the reactions
+   of the held sides balance the loads and the residual for any u.  The mesh itself: test_mesh.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -228,8 +229,88 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   cholmod_l_finish(&cm);
 }
 
+/* node lies on the side o */
+static int on_side(const Mesh *m, int node, int o)
+{
+  return o == SIDE_TOP ? node / m->ncol == m->nrow - 1
+                       : node % m->ncol == (o == SIDE_LEFT ? 0 : m->N);
+}
+
+/* fem_reactions: for any displacement u (0 where held), the reactions r
+   = K u - f at the held DOFs, the residuals A u - b at the unknowns and
+   the applied loads (the traction times its loaded length, the body force
+   times the area of the body, computed here) sum to zero in each
+   component, since K annihilates the translations; and every held DOF's
+   reaction goes to a side that holds it, to the one it is normal to at a
+   corner held by two, so that a roller takes no tangential force */
+static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
+{
+  int N = 16;
+  Problem s = free_body(N, 2, 3, MODEL_PLANE_STRAIN);
+  Side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } };     /* the whole top */
+  Side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
+  s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Side) { left, 0, 0, { 0, 0 } };
+  s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Side) { right, 0, 0, { 0, 0 } };
+  s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Side) { top, 0, 0, { 0, 0 } };
+  s.F[0] = 3e7, s.F[1] = -2e8, s.has_body_force = 1;
+  Status st = { 0, "" };
+  cholmod_common cm;
+  cholmod_l_start(&cm);
+  Mesh *m = mesh_new(&s, &st);
+  double X[17], area = 0, want[2], sum[2] = { 0, 0 }, scale;
+  design(N, X);
+  mesh_move(m, X, &st);
+  Dofs *d = fem_dofs_new(m, &s, &st);
+  cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
+  Hooke H = fem_hooke(&s);
+  fem_stiffness_fill(A, m, d, &H, &st);
+  double *u = malloc(d->n * sizeof *u), *g = malloc(d->n * sizeof *g),
+         *b = malloc(d->n * sizeof *b), *r = malloc(d->ndof * sizeof *r);
+  for (int k = 0; k < d->n; k++) u[k] = 1e-3 * sin(0.7 * k + 0.3);
+  qp_matvec(A, u, g);
+  fem_load(m, d, &s, b);
+  fem_reactions(m, d, &H, &s, u, r);
+  for (int i = 1; i <= N; i++)            /* gamma (b - a) less the area under alpha */
+    area += 0.25 * (X[i] + X[i - 1]) / 2;
+  area = 1 * 4 - area;
+  for (int c = 0; c < 2; c++) {
+    want[c] = s.F[c] * area;
+    if (top == BC_TRACTION) want[c] += load.P[c] * 4;
+    if (left == BC_TRACTION || right == BC_TRACTION) want[c] += side_load.P[c] * 0.6;
+  }
+  for (int k = 0; k < d->ndof; k++)
+    sum[k % 2] += d->unknown[k] < 0 ? r[k] : g[d->unknown[k]] - b[d->unknown[k]];
+  scale = hypot(want[0], want[1]);
+  check(fabs(sum[0] + want[0]) <= 1e-12 * scale && fabs(sum[1] + want[1]) <= 1e-12 * scale,
+        "sides %d %d %d: reactions + residuals + loads = 0 for any u (%.1e, %.1e of the load)",
+        left, right, top, fabs(sum[0] + want[0]) / scale, fabs(sum[1] + want[1]) / scale);
+  int wrong = 0;
+  for (int k = 0; k < d->ndof; k++) {
+    int side = fem_reaction_side(m, &s, k), c = k % 2, normal = side == SIDE_TOP;
+    if (d->unknown[k] >= 0) { wrong += side != -1; continue; }
+    if (side < 0 || s.side[side].kind == BC_FREE || s.side[side].kind == BC_TRACTION
+        || (s.side[side].kind == BC_ROLLER && c != normal)) { wrong++; continue; }
+    for (int o = 0; o < SIDE_COUNT; o++)    /* a corner held by two: the normal one */
+      if (o != side && on_side(m, k / 2, o) && c != normal
+          && (s.side[o].kind == BC_CLAMPED || (s.side[o].kind == BC_ROLLER && c == (o == SIDE_TOP))))
+        wrong++;
+  }
+  check(wrong == 0, "sides %d %d %d: each held DOF's reaction goes to a side that holds it, "
+        "the normal one at a corner; a roller takes no tangential one (%d wrong)",
+        left, right, top, wrong);
+  free(u), free(g), free(b), free(r);
+  cholmod_l_free_sparse(&A, &cm);
+  fem_dofs_free(d), mesh_free(m);
+  cholmod_l_finish(&cm);
+}
+
 int main(void)
 {
+  reactions_balance(BC_CLAMPED, BC_ROLLER, BC_TRACTION);
+  reactions_balance(BC_ROLLER, BC_TRACTION, BC_CLAMPED);
+  reactions_balance(BC_TRACTION, BC_CLAMPED, BC_ROLLER);
+  reactions_balance(BC_ROLLER, BC_ROLLER, BC_ROLLER);
+  reactions_balance(BC_CLAMPED, BC_CLAMPED, BC_CLAMPED);
   pattern(16, 1, 3, BC_FREE, BC_FREE, BC_FREE);
   pattern(16, 1, 3, BC_CLAMPED, BC_ROLLER, BC_FREE);
   pattern(7, 3, 2, BC_ROLLER, BC_CLAMPED, BC_CLAMPED);
