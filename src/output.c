@@ -104,7 +104,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 715 "paper/output.nw"
+#line 718 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -138,7 +138,7 @@ int output_begin(Output *o, const char *dir, const char *command, int replace,
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, dir, st);
 }
-#line 753 "paper/output.nw"
+#line 756 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -177,7 +177,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 796 "paper/output.nw"
+#line 799 "paper/output.nw"
 int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -205,7 +205,7 @@ FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 903 "paper/output.nw"
+#line 906 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -268,7 +268,7 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 845 "paper/output.nw"
+#line 848 "paper/output.nw"
 /* hold SIGINT and SIGTERM (on), or let them through again (off) */
 static void output_hold_signals(int on, sigset_t *saved)
 {
@@ -320,7 +320,7 @@ int output_commit(Output *o, Status *st)
   output_hold_signals(0, &saved);
   return rc;
 }
-#line 968 "paper/output.nw"
+#line 971 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);

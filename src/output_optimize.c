@@ -1,19 +1,17 @@
-#line 1597 "paper/output.nw"
+#line 1598 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1609 "paper/output.nw"
-static void output_objectives(const Model *md, double q, double *J);
+#line 1610 "paper/output.nw"
+static int output_objectives(const Model *md, double q, double *J, Status *st);
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1476 "paper/output.nw"
+#line 1479 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
-                                      const Model *md, const Output_start *start)
+                                      const double *J, const Output_start *start)
 {
-  double J[OBJECTIVE_COUNT];
-  output_objectives(md, ob->q, J);
   fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
           J[ob->kind]);
   for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
@@ -22,7 +20,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1678 "paper/output.nw"
+#line 1679 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -43,7 +41,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1617 "paper/output.nw"
+#line 1618 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -88,7 +86,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1706 "paper/output.nw"
+#line 1707 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -122,7 +120,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1744 "paper/output.nw"
+#line 1745 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -135,7 +133,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1767 "paper/output.nw"
+#line 1768 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -154,16 +152,20 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1789 "paper/output.nw"
+#line 1790 "paper/output.nw"
 /* J = every objective at the model's state, the peak's exponent q, NaN
-   where undefined (a body that lifts off has no pressure) */
-static void output_objectives(const Model *md, double q, double *J)
+   where undefined (a body that lifts off has no pressure); another
+   failure (out of memory) is the caller's */
+static int output_objectives(const Model *md, double q, double *J, Status *st)
 {
   for (int k = 0; k < OBJECTIVE_COUNT; k++) {
     Objective o = { (Objective_kind) k, q };
-    Status st;
-    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
+    Status why;
+    int rc = objective_value(md, &o, &J[k], &why);
+    if (rc == STATUS_NUMERIC) J[k] = NAN;
+    else if (rc) return *st = why, rc;
   }
+  return STATUS_OK;
 }
 
 int output_start(Output *o, const Model *md, const double *X, double moved,
@@ -174,17 +176,19 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->energy = md->energy;
   start->cv = model_pressure_cv(md);
   start->moved = moved;
-  output_objectives(md, q, start->J);
-  return STATUS_OK;
+  return output_objectives(md, q, start->J, st);
 }
-#line 1820 "paper/output.nw"
+#line 1824 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
 {
   const Problem *p = md->problem;
   Model_summary ms;
-  FILE *f = model_summary(md, &ms, st) ? NULL : output_open(o, "summary.dat", st);
+  double J[OBJECTIVE_COUNT];
+  FILE *f = model_summary(md, &ms, st)
+            || output_objectives(md, run->objective->q, J, st)
+            ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
   fprintf(f, "scene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
@@ -207,7 +211,7 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
   output_reactions(f, md, &ms);
-  output_objectives_summary(f, run->objective, md, start);
+  output_objectives_summary(f, run->objective, J, start);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);

@@ -98,19 +98,22 @@ int output_check_file(const char *path, const char *dir, Status *st)
 /* the command of the run in dir, from its summary.dat: its command line,
    or (written before there was one) optimize where it names an optimizer,
    gradcheck where it counts nodes_checked, solve otherwise */
-static void output_run_command(const char *dir, char *command, size_t size)
+static int output_run_command(const char *dir, char *command, size_t size,
+                              Status *st)
 {
   char path[1200], line[256], word[64];
   const char *guess = "solve";
   snprintf(path, sizeof path, "%s/summary.dat", dir);
   FILE *f = fopen(path, "r");
+  if (!f) return output_errno(st, errno, path, "cannot read");
   *command = '\0';
-  while (f && !*command && fgets(line, sizeof line, f))
+  while (!*command && fgets(line, sizeof line, f))
     if (sscanf(line, "command %63s", word) == 1) snprintf(command, size, "%s", word);
     else if (!strncmp(line, "optimizer ", 10)) guess = "optimize";
     else if (!strncmp(line, "nodes_checked ", 14)) guess = "gradcheck";
   if (!*command) snprintf(command, size, "%s", guess);
-  if (f) fclose(f);
+  fclose(f);
+  return STATUS_OK;
 }
 
 /* whether the existing folder dir can be renamed (tried, and undone) */
@@ -146,7 +149,7 @@ int output_check(const char *dir, const char *command, int replace, Status *st)
     return status_set(st, STATUS_INPUT, "%s: exists and is not a folder", dir);
   snprintf(path, sizeof path, "%s/summary.dat", dir);
   if (!stat(path, &sb)) {
-    output_run_command(dir, other, sizeof other);
+    if ((rc = output_run_command(dir, other, sizeof other, st))) return rc;
     if (!replace && strcmp(other, command))
       return status_set(st, STATUS_INPUT, "%s: holds the run of contactopt %s: "
                         "%s would replace it; choose another -o, or give --replace",
@@ -163,7 +166,7 @@ int output_check(const char *dir, const char *command, int replace, Status *st)
                              "are not a run's (no summary.dat): choose another -o", dir)
                 : output_movable(dir, st);
 }
-#line 739 "paper/output.nw"
+#line 742 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {

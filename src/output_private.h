@@ -22,19 +22,19 @@ int output_folder(Output *o, const char *name, Status *st);
 /* open the file name in the folder staged whole */
 FILE *output_open_in_folder(Output *o, const char *folder,
                             const char *name, Status *st);
-#line 988 "paper/output.nw"
+#line 991 "paper/output.nw"
 /* the displacement u_c of a node, 0 where it is held */
 double output_u(const Model *md, int node, int c);
 /* open the file name of the state in the sub-folder sub ("" for none) */
 FILE *output_open_in(Output *o, const char *sub, const char *name,
                      Status *st);
-#line 1123 "paper/output.nw"
+#line 1126 "paper/output.nw"
 /* write the state of md at the design X as a VTU file into f */
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st);
 /* solution.vtu in the sub-folder sub: the state of md at X */
 int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
                Status *st);
-#line 1405 "paper/output.nw"
+#line 1408 "paper/output.nw"
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
 /* the lines of a summary of the model's state: the reactions of its held

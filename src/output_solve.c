@@ -1,9 +1,9 @@
-#line 1396 "paper/output.nw"
+#line 1399 "paper/output.nw"
 #include <errno.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1417 "paper/output.nw"
+#line 1420 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -27,7 +27,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1456 "paper/output.nw"
+#line 1459 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
@@ -41,7 +41,7 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1496 "paper/output.nw"
+#line 1497 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -56,7 +56,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1515 "paper/output.nw"
+#line 1516 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -79,7 +79,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1549 "paper/output.nw"
+#line 1550 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
