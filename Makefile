@@ -373,8 +373,9 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex pape
 # the woven program. Its numbers are macros that paper/article-numbers.sh
 # writes from the runs (build/article/numbers.tex), its tables the
 # generated ones (figures/*.tex, paper/bench-*.tex), its two figures of its
-# own drawn off the runs by paper/article-shapes.gp and
-# paper/article-histories.gp; it cites the program's sections through the
+# own drawn off the runs by paper/article-shapes.gp,
+# paper/article-histories.gp, paper/article-refine.gp and
+# paper/article-kkt.gp; it cites the program's sections through the
 # woven document's .aux (xr), so it is built after it. The build fails on
 # an undefined reference or citation, an overfull box over 5 pt and a
 # float too large (paper/article-log.sh reads the log).
@@ -386,13 +387,20 @@ out/example-%-slsqp/summary.dat: data/example-%.scene bin/contactopt
 out/example-%-projgrad/summary.dat: data/example-%.scene bin/contactopt
 	@mkdir -p out
 	bin/contactopt optimize $< -o $(@D) -s optimizer.method=projgrad > $(@D).log
-ART_FIGS := figures/article-shapes.pdf figures/article-histories.pdf
+ART_FIGS := figures/article-shapes.pdf figures/article-histories.pdf figures/article-refine.pdf \
+            figures/article-kkt.pdf
 figures/article-shapes.pdf: paper/article-shapes.gp $(RUNS)
 	@mkdir -p figures
 	gnuplot -e "out='$@'" $<
 figures/article-histories.pdf: paper/article-histories.gp $(RUNS) $(ART_RUNS)
 	@mkdir -p figures
 	gnuplot -e "out='$@'" $<
+figures/article-kkt.pdf: paper/article-kkt.gp out/example-5.1-optimize/summary.dat
+	@mkdir -p figures
+	gnuplot -e "out='$@'" $<
+figures/article-refine.pdf: paper/article-refine.gp out/accuracy/sweep.dat
+	@mkdir -p figures
+	gnuplot -e "out='$@'; nmax=$(ACCURACY_NMAX)" $<
 build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/objectives.tex \
                            out/accuracy/sweep.dat paper/bench-frontier.tex paper/bench-optimize.tex \
                            paper/bench-output.tex

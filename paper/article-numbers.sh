@@ -36,14 +36,17 @@ fix() { awk -v x="$1" -v d="$2" 'BEGIN { printf "%." d "f\n", x }'; }
 
 # the contact of a contact.dat (x1 alpha u2 gap T pressure): a node is in
 # contact where its gap is zero, the rule of every table of the article;
-# contact FILE: "nodes spread peak[MPa] first last" of those nodes, the
-# spread the standard deviation over the mean of their pressure
+# contact FILE: "nodes spread peak[MPa] first last parts" of those
+# nodes, the spread the standard deviation over the mean of their
+# pressure, parts the runs of neighbouring nodes in contact
 contact() { [ -f "$1" ] || die "no $1"
-  awk '!/^#/ && $4 == 0 { n++; s += $6; ss += $6 * $6; if ($6 > m) m = $6
-         if (n == 1) a = $1; b = $1 }
-       END { if (!n) { print 0, 0, 0, "-", "-"; exit }
+  awk '!/^#/ { if ($4 == 0) { n++; s += $6; ss += $6 * $6; if ($6 > m) m = $6
+         if (n == 1) a = $1; b = $1; if (!on) k++; on = 1 } else on = 0 }
+       END { if (!n) { print 0, 0, 0, "-", "-", 0; exit }
          mu = s / n; var = ss / n - mu * mu; if (var < 0) var = 0
-         printf "%d %.3f %.1f %s %s\n", n, sqrt(var) / mu, m / 1e6, a, b }' "$1"; }
+         printf "%d %.3f %.1f %s %s %d\n", n, sqrt(var) / mu, m / 1e6, a, b, k }' "$1"; }
+# zone FIRST LAST PARTS: the zone as the article prints it
+zone() { if [ "$3" -gt 1 ]; then echo "[$1, $2] ($3 parts)"; else echo "[$1, $2]"; fi; }
 
 echo "% written by paper/article-numbers.sh from $out; do not edit"
 printf '%s\n' '\providecommand{\art}[1]{\ifcsname art:#1\endcsname\csname art:#1\endcsname\else\errmessage{build/article/numbers.tex has no #1}\fi}'
@@ -62,7 +65,7 @@ for e in 5.1 5.2 5.2-flat; do
                final:$out/$o/final/contact.dat; do
     set -- $(contact "${where#*:}")
     def "$e:${where%%:*}:nodes" "$1"; def "$e:${where%%:*}:spread" "$2"
-    def "$e:${where%%:*}:peak" "$3"; def "$e:${where%%:*}:zone" "[$4, $5]"
+    def "$e:${where%%:*}:peak" "$3"; def "$e:${where%%:*}:zone" "$(zone $4 $5 $6)"
   done
 done
 def Estar "$(sci "$(v energy example-5.1-optimize)")"
@@ -149,3 +152,32 @@ for b in frontier optimize output; do
   grep -E "$macro" "$f" | sed 's/\\newcommand{/\\providecommand{/g'
   grep -v -E "$macro" "$f" > "$dir/bench-$b.tex" || die "no tabular in $f"
 done
+
+# ---- the optimum under refinement: the mesh sweep of make accuracy, one
+# row a mesh, in DIR/refine.tex; and the area multiplier of each mesh
+{
+  printf '%s\n' '\begin{tabular}{@{}rrrrrlrr@{}}\toprule' \
+    '$N$ & $E_h^*$ [J/m] & $|E_h^* - E_\infty|/|E_\infty|$ & $\mu$ [MPa] & nodes & zone [m] & spread & peak [MPa]\\\midrule'
+  awk '$1 == "mesh" { print $3, $2, $9 }' "$sw" | while read -r n point err; do
+    r=$out/accuracy/$point
+    [ -f "$r/summary.dat" ] || die "no $r/summary.dat (make accuracy)"
+    set -- $(contact "$r/final/contact.dat")
+    mu=$(awk '$1 == "area_multiplier" { printf "%.1f\n", $2 / 1e6 }' "$r/summary.dat")
+    printf '%s & %s & %s & %s & %s & %s & %s & %s\\\\\n' "$n" \
+      "$(sci "$(awk '$1 == "energy" { print $2 }' "$r/summary.dat")" 6)" "$(sci "$err" 1)" \
+      "$mu" "$1" "$(zone $4 $5 $6)" "$2" "$3"
+  done
+  printf '%s\n' '\bottomrule\end{tabular}'
+} > "$dir/refine.tex"
+def acc:mu16 "$(awk '$1 == "area_multiplier" { printf "%.1f\n", $2 / 1e6 }' \
+  "$out/accuracy/N16_pdas_1e-10_newton_1e-6/summary.dat")"
+def acc:mumax "$(awk '$1 == "mesh" { p = $2 } END { print p }' "$sw" | xargs -I{} awk \
+  '$1 == "area_multiplier" { printf "%.1f\n", $2 / 1e6 }' "$out/accuracy/{}/summary.dat")"
+# the decision of the area: Example 5.1 with the C2 that makes its arc feasible
+o=example-5.1-C2arc-optimize
+def C2arc:Estar "$(sci "$(v energy $o)")"
+def C2arc:its "$(v iterations $o)"
+set -- $(contact "$out/$o/final/contact.dat")
+def C2arc:nodes "$1"; def C2arc:spread "$2"; def C2arc:peak "$3"
+set -- $(contact "$out/$o/initial/contact.dat")
+def C2arc:nodes0 "$1"; def C2arc:spread0 "$2"; def C2arc:peak0 "$3"
