@@ -403,7 +403,7 @@ figures/article-refine.pdf: paper/article-refine.gp out/accuracy/sweep.dat
 	gnuplot -e "out='$@'; nmax=$(ACCURACY_NMAX)" $<
 build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/objectives.tex \
                            out/accuracy/sweep.dat paper/bench-frontier.tex paper/bench-optimize.tex \
-                           paper/bench-output.tex
+                           paper/bench-output.tex paper/bench-levels.tex
 	@mkdir -p $(@D)
 	sh $< out $(@D) > $@.partial && mv $@.partial $@
 paper/article.pdf: paper/article.tex build/article/numbers.tex $(ART_FIGS) paper/contactopt.pdf \

@@ -146,7 +146,7 @@ def acc:errmax "$(sci "$(awk '$1 == "mesh" { e = $9 } END { print e }' "$sw")" 1
 
 # ---- the tables of make bench: their macros here, their tabulars apart
 macro='^\\(expandafter\\def|providecommand|newcommand|def)'
-for b in frontier optimize output; do
+for b in frontier optimize output levels; do
   f=paper/bench-$b.tex
   [ -f "$f" ] || die "no $f (make bench)"
   grep -E "$macro" "$f" | sed 's/\\newcommand{/\\providecommand{/g'
