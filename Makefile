@@ -345,7 +345,7 @@ figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/a
 # (@ %def after the chunk of its header that declares them) the names its
 # header exports, and only those: the index lists the interfaces, and noindex gathers the
 # chunk and identifier indices of the whole from LaTeX's .aux (noweb's
-# external-index method, noindex(1)).
+# external-index method, noindex(1)). An undefined reference stops it.
 paper: paper/contactopt.pdf paper/article.pdf
 article: paper/article.pdf
 WOVEN := build/paper/contactopt.tex $(PARTS:%=build/paper/%.tex)
@@ -366,6 +366,8 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex pape
 	    || { tail -40 contactopt.log; exit 1; }; \
 	  noindex contactopt; \
 	  [ $$i -gt 1 ] && ! grep -q 'Rerun' contactopt.log && break; done; true
+	@! grep -n -E "(Reference|Citation) .* undefined|There were undefined references" build/paper/contactopt.log \
+	  || { echo "paper: the program has an undefined reference (above)"; exit 1; }
 	cp build/paper/contactopt.pdf $@
 
 # ---- the article -------------------------------------------------------------------
