@@ -404,7 +404,7 @@ figures/article-refine.pdf: paper/article-refine.gp out/accuracy/sweep.dat
 	@mkdir -p figures
 	gnuplot -e "out='$@'; nmax=$(ACCURACY_NMAX)" $<
 build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/objectives.tex \
-                           out/accuracy/sweep.dat paper/bench-frontier.tex paper/bench-optimize.tex \
+                           out/accuracy/sweep.dat paper/bench-frontier.tex paper/bench-optimize.tex $(wildcard data/suite/*.scene) \
                            paper/bench-output.tex paper/bench-levels.tex
 	@mkdir -p $(@D)
 	sh $< out $(@D) > $@.partial && mv $@.partial $@

@@ -181,3 +181,5 @@ set -- $(contact "$out/$o/final/contact.dat")
 def C2arc:nodes "$1"; def C2arc:spread "$2"; def C2arc:peak "$3"
 set -- $(contact "$out/$o/initial/contact.dat")
 def C2arc:nodes0 "$1"; def C2arc:spread0 "$2"; def C2arc:peak0 "$3"
+# the robustness suite: its scenes
+def suite:scenes "$(ls data/suite/*.scene | wc -l | tr -d ' ')"
