@@ -409,7 +409,7 @@ build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/
 	@mkdir -p $(@D)
 	sh $< out $(@D) > $@.partial && mv $@.partial $@
 paper/article.pdf: paper/article.tex build/article/numbers.tex $(ART_FIGS) paper/contactopt.pdf \
-                   paper/article-log.sh $(FIGURES) $(ACCURACY_FIGS) | deps
+                   paper/article-log.sh data/example-5.1.scene $(FIGURES) $(ACCURACY_FIGS) | deps
 	cp paper/article.tex build/article/article.tex
 	cd build/article && for i in 1 2 3 4; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error article.tex >/dev/null \
