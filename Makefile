@@ -62,15 +62,16 @@ endif
 
 # Debian packages the package needs, and the command that proves each one
 # (groff-base, man-db, mandoc, bsdextrautils: tests/install.sh renders and
-# lints the manual page).
+# lints the manual page; poppler-utils: tests/article.sh reads the
+# article's text and pages).
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
             python3-meshio \
             groff-base man-db mandoc bsdextrautils \
             texlive-latex-base \
-            texlive-latex-recommended texlive-fonts-recommended
+            texlive-latex-recommended texlive-fonts-recommended poppler-utils
 
-.PHONY: all deps tangle tangle-check paper figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean install uninstall
+.PHONY: all deps tangle tangle-check paper article figures accuracy check check-kernels check-kernels-full check-fine kernels-table faults bench reference clean install uninstall
 all: $(PROGRAM) $(B)/example $(B)/contactopt.1 $(B)/contactopt.bash
 
 # ---- dependencies: install what is missing, or say exactly how -------------
@@ -344,8 +345,9 @@ figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/a
 # (@ %def after the chunk of its header that declares them) the names its
 # header exports, and only those: the index lists the interfaces, and noindex gathers the
 # chunk and identifier indices of the whole from LaTeX's .aux (noweb's
-# external-index method, noindex(1)).
-paper: paper/contactopt.pdf
+# external-index method, noindex(1)). An undefined reference stops it.
+paper: paper/contactopt.pdf paper/article.pdf
+article: paper/article.pdf
 WOVEN := build/paper/contactopt.tex $(PARTS:%=build/paper/%.tex)
 build/paper/all.defs: $(NW) | deps
 	@mkdir -p $(@D)
@@ -364,7 +366,57 @@ paper/contactopt.pdf: $(WOVEN) $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex pape
 	    || { tail -40 contactopt.log; exit 1; }; \
 	  noindex contactopt; \
 	  [ $$i -gt 1 ] && ! grep -q 'Rerun' contactopt.log && break; done; true
+	@! grep -n -E "(Reference|Citation) .* undefined|There were undefined references" build/paper/contactopt.log \
+	  || { echo "paper: the program has an undefined reference (above)"; exit 1; }
 	cp build/paper/contactopt.pdf $@
+
+# ---- the article -------------------------------------------------------------------
+# paper/article.tex: the reproduction as a short paper (ReScience C), beside
+# the woven program. Its numbers are macros that paper/article-numbers.sh
+# writes from the runs (build/article/numbers.tex), its tables the
+# generated ones (figures/*.tex, paper/bench-*.tex), its two figures of its
+# own drawn off the runs by paper/article-shapes.gp,
+# paper/article-histories.gp, paper/article-refine.gp and
+# paper/article-kkt.gp; it cites the program's sections through the
+# woven document's .aux (xr), so it is built after it. The build fails on
+# an undefined reference or citation, an overfull box over 5 pt and a
+# float too large (paper/article-log.sh reads the log).
+ART_METHODS := slsqp projgrad
+ART_RUNS := $(foreach e,5.1 5.2,$(foreach m,$(ART_METHODS),out/example-$(e)-$(m)/summary.dat))
+out/example-%-slsqp/summary.dat: data/example-%.scene bin/contactopt
+	@mkdir -p out
+	bin/contactopt optimize $< -o $(@D) -s optimizer.method=slsqp > $(@D).log
+out/example-%-projgrad/summary.dat: data/example-%.scene bin/contactopt
+	@mkdir -p out
+	bin/contactopt optimize $< -o $(@D) -s optimizer.method=projgrad > $(@D).log
+ART_FIGS := figures/article-shapes.pdf figures/article-histories.pdf figures/article-refine.pdf \
+            figures/article-kkt.pdf
+figures/article-shapes.pdf: paper/article-shapes.gp $(RUNS)
+	@mkdir -p figures
+	gnuplot -e "out='$@'" $<
+figures/article-histories.pdf: paper/article-histories.gp $(RUNS) $(ART_RUNS)
+	@mkdir -p figures
+	gnuplot -e "out='$@'" $<
+figures/article-kkt.pdf: paper/article-kkt.gp out/example-5.1-optimize/summary.dat
+	@mkdir -p figures
+	gnuplot -e "out='$@'" $<
+figures/article-refine.pdf: paper/article-refine.gp out/accuracy/sweep.dat
+	@mkdir -p figures
+	gnuplot -e "out='$@'; nmax=$(ACCURACY_NMAX)" $<
+build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/objectives.tex \
+                           out/accuracy/sweep.dat paper/bench-frontier.tex paper/bench-optimize.tex $(wildcard data/suite/*.scene) \
+                           paper/bench-output.tex paper/bench-levels.tex
+	@mkdir -p $(@D)
+	sh $< out $(@D) > $@.partial && mv $@.partial $@
+paper/article.pdf: paper/article.tex build/article/numbers.tex $(ART_FIGS) paper/contactopt.pdf \
+                   paper/article-log.sh data/example-5.1.scene $(FIGURES) $(ACCURACY_FIGS) | deps
+	cp paper/article.tex build/article/article.tex
+	cd build/article && for i in 1 2 3 4; do \
+	  pdflatex -interaction=nonstopmode -halt-on-error article.tex >/dev/null \
+	    || { tail -40 article.log; exit 1; }; \
+	  [ $$i -gt 1 ] && ! grep -q 'Rerun' article.log && break; done; true
+	sh paper/article-log.sh build/article/article.log
+	cp build/article/article.pdf $@
 
 # The table of the keys of a scene (the scene appendix): printed by the
 # program from the table its scene loader reads (paper/scene.nw).

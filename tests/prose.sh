@@ -1,7 +1,8 @@
-# prose.sh: the paper and the README describe the program as it is; what
-# changed, and when, belongs in git.  A documentation line of a
+# prose.sh: the paper, the article and the README describe the program as
+# it is; what changed, and when, belongs in git.  A documentation line of a
 # paper/*.nw (outside its code chunks: from a line "@" or "@ text" to the
-# next "<<name>>=") or of README.md must not
+# next "<<name>>=") or of paper/article.tex (not a comment) or of
+# README.md must not
 # narrate history: no
 # issue numbers, no "used to", "no longer", "until November", "was the
 # default", "before this module", "this version", "last round" and the
@@ -18,15 +19,16 @@ prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
 
 
 # not the tables the bench scripts write (paper/bench-*.tex)
-for f in paper/*.nw README.md; do
+for f in paper/*.nw paper/article.tex README.md; do
   case $f in
     *.nw) prose "$f" ;;
+    *.tex) awk '!/^%/ { print FILENAME ":" FNR ":" $0 }' "$f" ;;
     *) awk '{ print FILENAME ":" FNR ":" $0 }' "$f" ;;
   esac
 done > $TMP/prose.lines
 grep -i -E "$patterns" $TMP/prose.lines > $TMP/prose.hits
 cat $TMP/prose.hits
-check "the prose of paper/*.nw and README.md narrates no history ($(wc -l < $TMP/prose.hits) lines match)" \
+check "the prose of paper/*.nw, paper/article.tex and README.md narrates no history ($(wc -l < $TMP/prose.hits) lines match)" \
   test ! -s $TMP/prose.hits
 
 # the test sees what it should: a line of history in prose is found, the
