@@ -1,14 +1,13 @@
-#line 1497 "paper/output.nw"
+#line 1527 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1509 "paper/output.nw"
-static void output_objectives(const Model *md, double q, double *J);
+#line 1539 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1377 "paper/output.nw"
+#line 1386 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const Model *md, const Output_start *start)
 {
@@ -22,7 +21,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1578 "paper/output.nw"
+#line 1607 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -43,7 +42,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1517 "paper/output.nw"
+#line 1546 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -88,7 +87,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1606 "paper/output.nw"
+#line 1635 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -122,7 +121,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1644 "paper/output.nw"
+#line 1673 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -135,7 +134,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1667 "paper/output.nw"
+#line 1696 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -154,18 +153,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1689 "paper/output.nw"
-/* J = every objective at the model's state, the peak's exponent q, NaN
-   where undefined (a body that lifts off has no pressure) */
-static void output_objectives(const Model *md, double q, double *J)
-{
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
-    Objective o = { (Objective_kind) k, q };
-    Status st;
-    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
-  }
-}
-
+#line 1718 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -177,7 +165,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   output_objectives(md, q, start->J);
   return STATUS_OK;
 }
-#line 1717 "paper/output.nw"
+#line 1735 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

@@ -34,8 +34,11 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st);
 /* solution.vtu in the sub-folder sub: the state of md at X */
 int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
                Status *st);
-#line 1344 "paper/output.nw"
+#line 1346 "paper/output.nw"
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
+/* J = every objective at the model's state, the peak's exponent q, NaN
+   where undefined (a body that lifts off has no pressure) */
+void output_objectives(const Model *md, double q, double *J);
 #line 307 "paper/output.nw"
 #endif

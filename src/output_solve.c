@@ -1,9 +1,11 @@
 #line 1336 "paper/output.nw"
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1350 "paper/output.nw"
+#line 1357 "paper/output.nw"
+static void output_objective_lines(FILE *f, const Model *md, double q);
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -16,15 +18,33 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
           run->state_solver, problem_model_name(p->model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
           p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
-  fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
-          md->report.kkt, md->report.iterations);
+  fprintf(f, "energy %.15g\n", md->energy);
+  output_objective_lines(f, md, run->objective ? run->objective->q : 8);
+  fprintf(f, "kkt_residual %.3e\niterations %d\n", md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1397 "paper/output.nw"
+#line 1404 "paper/output.nw"
+void output_objectives(const Model *md, double q, double *J)
+{
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
+    Objective o = { (Objective_kind) k, q };
+    Status st;
+    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
+  }
+}
+
+static void output_objective_lines(FILE *f, const Model *md, double q)
+{
+  double J[OBJECTIVE_COUNT];
+  output_objectives(md, q, J);
+  for (int k = OBJECTIVE_ENERGY + 1; k < OBJECTIVE_COUNT; k++)
+    if (!isnan(J[k])) fprintf(f, "%s %.15g\n", objective_names[k], J[k]);
+}
+#line 1427 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -39,7 +59,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1416 "paper/output.nw"
+#line 1446 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -62,7 +82,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1450 "paper/output.nw"
+#line 1480 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
