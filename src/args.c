@@ -1,4 +1,4 @@
-#line 203 "paper/main.nw"
+#line 206 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

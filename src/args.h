@@ -1,4 +1,4 @@
-#line 183 "paper/main.nw"
+#line 186 "paper/main.nw"
 #ifndef CONTACTOPT_ARGS_H
 #define CONTACTOPT_ARGS_H
 #include "status.h"

@@ -15,7 +15,7 @@
 #include "threads.h"
 #include "resources.h"
 #include "plot.h"
-#line 256 "paper/main.nw"
+#line 259 "paper/main.nw"
 /* st's message = "path: message", unless it begins with the path already */
 static void name_the_scene(Status *st, const char *path)
 {
@@ -26,7 +26,7 @@ static void name_the_scene(Status *st, const char *path)
   if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
     strcpy(st->msg + sizeof st->msg - 4, "...");
 }
-#line 274 "paper/main.nw"
+#line 277 "paper/main.nw"
 /* *v = the number at *p, digits only; *p moves past it */
 static int component_number(const char **p, long *v)
 {
@@ -71,7 +71,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 321 "paper/main.nw"
+#line 324 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -116,7 +116,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 389 "paper/main.nw"
+#line 392 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -127,7 +127,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 408 "paper/main.nw"
+#line 411 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -162,7 +162,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 445 "paper/main.nw"
+#line 448 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -177,7 +177,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 481 "paper/main.nw"
+#line 484 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -200,7 +200,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 507 "paper/main.nw"
+#line 510 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -219,7 +219,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 535 "paper/main.nw"
+#line 538 "paper/main.nw"
 /* the refusal of the Newton method for a Coulomb scene */
 static int no_newton(const Run *r, Status *st)
 {
@@ -267,7 +267,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 730 "paper/main.nw"
+#line 733 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -278,7 +278,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 747 "paper/main.nw"
+#line 750 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -291,7 +291,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 772 "paper/main.nw"
+#line 775 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -321,7 +321,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->seconds, N);
   return rc;
 }
-#line 805 "paper/main.nw"
+#line 808 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -331,7 +331,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 825 "paper/main.nw"
+#line 828 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -394,7 +394,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 897 "paper/main.nw"
+#line 900 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -413,7 +413,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 927 "paper/main.nw"
+#line 930 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -429,7 +429,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 955 "paper/main.nw"
+#line 958 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,11 +1,11 @@
-#line 152 "paper/figures.nw"
+#line 159 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_PRIVATE_H
 #define CONTACTOPT_PLOT_PRIVATE_H
 #include <stdio.h>
 #include "plot.h"
 #include "scene.h"
 #include "objective.h"
-#line 383 "paper/figures.nw"
+#line 390 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   double *xy;       /* 2 per node: x1, x2 [m] */
@@ -15,7 +15,7 @@ typedef struct {
    file that is not such a state, STATUS_MEMORY */
 int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st);
 void plot_state_free(Plot_state *s);
-#line 236 "paper/figures.nw"
+#line 243 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -26,7 +26,7 @@ typedef struct {
   Plot_state mesh[2];      /* their meshes and displacements (results only) */
   double start_value;      /* --start: the objective at alpha0 as given, or NaN */
 } Plot;
-#line 160 "paper/figures.nw"
+#line 167 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
 /* the lines that set up the page and the terminal of every script */
