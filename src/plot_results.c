@@ -1,9 +1,10 @@
 #line 230 "paper/figures.nw"
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1382 "paper/figures.nw"
+#line 1383 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -21,14 +22,14 @@ typedef struct {
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
-#line 1402 "paper/figures.nw"
+#line 1403 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1412 "paper/figures.nw"
+#line 1413 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -43,7 +44,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1431 "paper/figures.nw"
+#line 1432 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -59,7 +60,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1451 "paper/figures.nw"
+#line 1452 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -69,7 +70,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1463 "paper/figures.nw"
+#line 1464 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -91,7 +92,7 @@ static Results_page results_page(const Plot *pl)
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1488 "paper/figures.nw"
+#line 1489 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -102,7 +103,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1505 "paper/figures.nw"
+#line 1506 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -123,7 +124,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1529 "paper/figures.nw"
+#line 1530 "paper/figures.nw"
 static void mesh_block(FILE *f, const Plot_state *s, int k, int step)
 {
   fprintf(f, "$mesh%d << EOD\n", k);
@@ -145,7 +146,7 @@ static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
   fprintf(f, "EOD\n");
 }
-#line 1557 "paper/figures.nw"
+#line 1558 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -187,14 +188,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1601 "paper/figures.nw"
+#line 1602 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 1613 "paper/figures.nw"
+#line 1614 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -225,7 +226,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1649 "paper/figures.nw"
+#line 1650 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -267,50 +268,68 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 1697 "paper/figures.nw"
+#line 1698 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
+static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...);
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
   body_panel_place(f, pl, L, q);
-  if (q->kind == MESH)
-    fprintf(f, "  set title '(%c) triangulation of %s%s%s'\n%s"
-            "  plot $mesh%d using 1:2 with lines lw 1 lc 'black' notitle\n"
-            "  unset object 1\n", q->letter, state_name[k], exaggerated(L),
-            every(L->step), foundation, k);
+  if (q->kind == MESH) {
+    panel_title(f, L, k, "(%c) triangulation of %s%s%s", q->letter, state_name[k],
+                exaggerated(L), every(L->step));
+    fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 1 lc 'black' notitle\n"
+            "  unset object 1\n", foundation, k);
+  }
   if (q->kind == DEFORMED) {
     deformed_title(f, L, q);
     fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
             "       $mesh%d using ($1 + S%d*$3):($2 + T%d + S%d*($4 - T%d)) with lines lw 1 "
             "lc '#1f4e99' notitle\n  unset object 1; unset label 1; set format x\n", foundation, k, k, k, k, k, k);
   }
-  if (q->kind == FIELD)
-    fprintf(f, "  set title sprintf('(%c) displacement field %s × %%g%s%s', S%d)\n"
-            "  plot $mesh%d using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
+  if (q->kind == FIELD) {
+    panel_title(f, L, k, "(%c) displacement field %s × %%g%s%s", q->letter, L->t2[k] < 0
+                ? "less the sink" : "({/:Italic u}_1, {/:Italic u}_2)", exaggerated(L), one_in(L));
+    fprintf(f, "  plot $mesh%d using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
             "       $arrows%d using 1:2:(S%d*$3):(S%d*($4 - T%d)) with vectors head filled "
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
-            q->letter, L->t2[k] < 0 ? "less the sink" : "({/:Italic u}_1, {/:Italic u}_2)",
-            exaggerated(L), one_in(L), k, k, k, k, k, k, VHEAD);
+            k, k, k, k, k, VHEAD);
+  }
 }
-#line 1729 "paper/figures.nw"
+#line 1735 "paper/figures.nw"
+#define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
+static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
+{
+  char t[512], shown[600];
+  va_list ap;
+  double w;
+  va_start(ap, fmt);
+  vsnprintf(t, sizeof t, fmt, ap);
+  va_end(ap);
+  snprintf(shown, sizeof shown, t, L->S[k]);
+  w = plot_text_cm(shown, 12);
+  fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
+          plot_real(fmin(1, TITLEW / w), 3));
+}
+#line 1755 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
   char t[64];
   plot_enhanced_number(L->t2[k], t, sizeof t);
   if (L->t2[k] < 0)
-    fprintf(f, "  set title sprintf('(%c) %s deformed: sink %s m, the rest × %%g%s', S%d)\n",
-            q->letter, state_name[k], t, exaggerated(L), k);
+    panel_title(f, L, k, "(%c) %s deformed: sink %s m, the rest × %%g%s", q->letter,
+                state_name[k], t, exaggerated(L));
   else
-    fprintf(f, "  set title sprintf('(%c) %s after deformation, displacements × %%g%s', S%d)\n",
-            q->letter, state_name[k], exaggerated(L), k);
+    panel_title(f, L, k, "(%c) %s after deformation, displacements × %%g%s", q->letter,
+                state_name[k], exaggerated(L));
   if (L->below[k])
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 1750 "paper/figures.nw"
+#line 1776 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -319,7 +338,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1771 "paper/figures.nw"
+#line 1797 "paper/figures.nw"
 /* the objective in a title, its symbol on an axis */
 static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
@@ -347,7 +366,8 @@ static void objective_graph(FILE *f, const Plot *pl)
           "  set xtics 0, %s out nomirror; set ytics autofreq out nomirror\n"
           "  set key top right spacing 1.2\n"
           "  plot opt.'/history.dat' using 1:($2/10.0**ee) with linespoints pt 7 ps 0.6 lw 1.5 \\\n"
-          "           lc '#1f4e99' title '%s'", plot_num(step), pl->projected ?
+          "           pi %d lc '#1f4e99' title '%s'", plot_num(step),
+          (int) ceil((pl->iterations + 1.0) / MARKS), pl->projected ?
           "iterates, from {/:Italic α}^0 projected onto {/:Italic B}" : "iterates");
   if (!isnan(pl->start_value))
     fprintf(f, ", \\\n       $start using 1:($2/10.0**ee) with points pt 6 ps 1.2 lc 'black' "
@@ -355,7 +375,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1819 "paper/figures.nw"
+#line 1846 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -383,7 +403,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1851 "paper/figures.nw"
+#line 1878 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -396,7 +416,8 @@ void plot_results_figure(FILE *f, const Plot *pl, const char *out)
   for (int k = 0; k < n; k++) {
     if (q[k].kind <= FIELD) { body_panel(f, pl, &L, &q[k]); continue; }
     if (k > 0 && q[k - 1].kind <= FIELD)
-      fprintf(f, "  unset title; set border 3; set ytics autofreq; set xtics autofreq\n");
+      fprintf(f, "  unset title; set title font sprintf(',%%g', fsz)\n"
+              "  set border 3; set ytics autofreq; set xtics autofreq\n");
     graph_place(f, &q[k]);
     if (q[k].kind == ENERGY) objective_graph(f, pl);
     else contact_graph(f, pl, &L, &q[k]);

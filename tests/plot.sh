@@ -319,6 +319,9 @@ check "N = 512: the triangulation drawn is every 10th line (thinned to 0.15 cm),
   "grep -q \"(a) triangulation of Ω({/:Italic α}^0), every 10th line'\" $TMP/script.gp && [ $lines -lt 12000 ]"
 check "N = 512: the arrows thinned, the contact graph marks every 16th node" sh -c \
   "grep -q 'one arrow in [0-9]' $TMP/script.gp && grep -q \"pt '▷' ps 1.3 lw 1.2 pi 16\" $TMP/script.gp"
+check "N = 512: the title of (c), wider than its column, in a smaller font; that of (a) as it is" sh -c \
+  "grep -q \"one arrow in [0-9]*', S0) font sprintf(',%g', 0\\.[0-9]*\\*fsz)\" $TMP/script.gp &&
+   grep -q \"every 10th line', S0) font sprintf(',%g', 1\\.0\\*fsz)\" $TMP/script.gp"
 script $TMP/example-5.1 --results
 check "N = 16: the whole mesh and every arrow" sh -c "! grep -q 'every [0-9]*.. line\|one arrow in' $TMP/script.gp"
 plotted "N = 512" $TMP/n512
