@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1383 "paper/figures.nw"
+#line 1384 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -15,21 +15,21 @@ typedef struct {
   double ucm, vex;    /* cm per metre along x1; x2 exaggerated vex times */
   double pw;          /* cm: a body panel's plot area, centred in its column */
   int graphs;         /* rows of graphs under the three rows of bodies */
-  int step;           /* every step-th line of the mesh */
+  int scol, srow;     /* lines of every scol-th column, every srow-th row */
   int acol, arow;     /* arrows at every acol-th node of every arow-th row */
   int marks;          /* a marker at every marks-th contact node */
   int sinks;          /* the body may move vertically: its sink is drawn unscaled */
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
-#line 1403 "paper/figures.nw"
+#line 1404 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1413 "paper/figures.nw"
+#line 1414 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -44,7 +44,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1432 "paper/figures.nw"
+#line 1433 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -60,7 +60,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1452 "paper/figures.nw"
+#line 1453 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -70,7 +70,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1464 "paper/figures.nw"
+#line 1465 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -86,13 +86,14 @@ static Results_page results_page(const Plot *pl)
     state_scale(&pl->mesh[k], L.sinks, 0.2 * p->gamma, &L.S[k], &L.t2[k]);
     L.below[k] = crosses(&pl->mesh[k], L.S[k], L.t2[k], CROSS / (L.ucm * L.vex));
   }
-  L.step = (int) fmax(1, ceil(MESHCELL / fmin(w, h) - SLACK));
+  L.scol = (int) fmax(1, ceil(MESHCELL / w - SLACK));
+  L.srow = (int) fmax(1, ceil(MESHCELL / h - SLACK));
   L.acol = (int) fmax(1, ceil(ARROWCELL / w - SLACK));
   L.arow = (int) fmax(1, ceil(ARROWCELL / h - SLACK));
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1489 "paper/figures.nw"
+#line 1491 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -103,7 +104,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1506 "paper/figures.nw"
+#line 1508 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -124,16 +125,17 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1530 "paper/figures.nw"
-static void mesh_block(FILE *f, const Plot_state *s, int k, int step)
+#line 1539 "paper/figures.nw"
+static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
 {
+  int d = sc < sr ? sc : sr;
   fprintf(f, "$mesh%d << EOD\n", k);
   mesh_straight(f, s, 0, 0, 1), mesh_straight(f, s, 0, s->nrow - 1, 1);
   mesh_straight(f, s, 1, 0, 1), mesh_straight(f, s, 1, s->ncol - 1, 1);
-  for (int j = step; j < s->nrow - 1; j += step) mesh_straight(f, s, 0, j, step);
-  for (int i = step; i < s->ncol - 1; i += step) mesh_straight(f, s, 1, i, step);
-  for (int i = 0; i < s->ncol - 1; i += step) mesh_diagonal(f, s, i, 0, step);
-  for (int j = step; j < s->nrow - 1; j += step) mesh_diagonal(f, s, 0, j, step);
+  for (int j = sr; j < s->nrow - 1; j += sr) mesh_straight(f, s, 0, j, sc);
+  for (int i = sc; i < s->ncol - 1; i += sc) mesh_straight(f, s, 1, i, sr);
+  for (int i = 0; i < s->ncol - 1; i += sc) mesh_diagonal(f, s, i, 0, d);
+  for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
 
@@ -146,7 +148,7 @@ static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
   fprintf(f, "EOD\n");
 }
-#line 1558 "paper/figures.nw"
+#line 1568 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -180,7 +182,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "amax(x, y) = x > y ? x : y\n"
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   for (int k = 0; k < 1 + pl->optimize; k++) {
-    mesh_block(f, &pl->mesh[k], k, L->step);
+    mesh_block(f, &pl->mesh[k], k, L->scol, L->srow);
     arrow_block(f, &pl->mesh[k], k, L->acol, L->arow);
   }
   if (!isnan(pl->start_value))
@@ -188,14 +190,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1602 "paper/figures.nw"
+#line 1612 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 1614 "paper/figures.nw"
+#line 1624 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -226,7 +228,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1650 "paper/figures.nw"
+#line 1660 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -250,14 +252,25 @@ static const char *exaggerated(const Results_page *L)
   return buf;
 }
 
-/* ", every 4th line" for n = 4, "" for n = 1 */
-static const char *every(int n)
+/* "every 4th" for n = 4, "every" for n = 1, in buf */
+static const char *nth(int n, char *buf, size_t size)
 {
-  static char buf[64];
   int t = n % 100 >= 11 && n % 100 <= 13 ? 0 : n % 10;
-  if (n <= 1) return "";
-  snprintf(buf, sizeof buf, ", every %d%s line", n, t == 1 ? "st" : t == 2 ? "nd" : t == 3
-           ? "rd" : "th");
+  if (n <= 1) snprintf(buf, size, "every");
+  else snprintf(buf, size, "every %d%s", n, t == 1 ? "st" : t == 2 ? "nd" : t == 3 ? "rd" : "th");
+  return buf;
+}
+
+/* the lines of the mesh left out: ", every 4th line", ", every 6th
+   column, every row", or "" for none */
+static const char *every(const Results_page *L)
+{
+  static char buf[96];
+  char c[32], r[32];
+  nth(L->scol, c, sizeof c), nth(L->srow, r, sizeof r);
+  if (L->scol == L->srow)
+    snprintf(buf, sizeof buf, L->scol > 1 ? ", %s line" : "", c);
+  else snprintf(buf, sizeof buf, ", %s column, %s row", c, r);
   return buf;
 }
 
@@ -268,7 +281,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 1698 "paper/figures.nw"
+#line 1719 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -279,7 +292,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
   body_panel_place(f, pl, L, q);
   if (q->kind == MESH) {
     panel_title(f, L, k, "(%c) triangulation of %s%s%s", q->letter, state_name[k],
-                exaggerated(L), every(L->step));
+                exaggerated(L), every(L));
     fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 1 lc 'black' notitle\n"
             "  unset object 1\n", foundation, k);
   }
@@ -298,7 +311,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 1735 "paper/figures.nw"
+#line 1756 "paper/figures.nw"
 #define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
@@ -313,7 +326,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW / w), 3));
 }
-#line 1755 "paper/figures.nw"
+#line 1776 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -329,7 +342,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 1776 "paper/figures.nw"
+#line 1797 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -338,7 +351,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1797 "paper/figures.nw"
+#line 1818 "paper/figures.nw"
 /* the objective in a title, its symbol on an axis */
 static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
@@ -375,7 +388,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1846 "paper/figures.nw"
+#line 1867 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -403,7 +416,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1878 "paper/figures.nw"
+#line 1899 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);

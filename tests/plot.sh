@@ -315,16 +315,24 @@ check "Example 5.1 (clamped on the left): no sink, the magnified contact said to
 $BIN solve data/example-5.1.scene -s mesh.refine=32 -o $TMP/n512 > /dev/null
 script $TMP/n512 --results
 lines=$(awk '/^\$mesh0 << EOD/ { on = 1; next } /^EOD/ { on = 0 } on && NF { n++ } END { print n + 0 }' $TMP/script.gp)
-check "N = 512: the triangulation drawn is every 10th line (thinned to 0.15 cm), $lines points, not the 66 177 nodes" sh -c \
-  "grep -q \"(a) triangulation of Ω({/:Italic α}^0), every 10th line'\" $TMP/script.gp && [ $lines -lt 12000 ]"
+check "N = 512: the triangulation drawn is every 8th column, every 10th row (lines 0.15 cm apart), $lines points, not the 66 177 nodes" sh -c \
+  "grep -q \"(a) triangulation of Ω({/:Italic α}^0), every 8th column, every 10th row'\" $TMP/script.gp && [ $lines -lt 12000 ]"
 check "N = 512: the arrows thinned, the contact graph marks every 16th node" sh -c \
   "grep -q 'one arrow in [0-9]' $TMP/script.gp && grep -q \"pt '▷' ps 1.3 lw 1.2 pi 16\" $TMP/script.gp"
-check "N = 512: the title of (c), wider than its column, in a smaller font; that of (a) as it is" sh -c \
+check "N = 512: the title of (c), wider than its column, in a smaller font; that of (b) as it is" sh -c \
   "grep -q \"one arrow in [0-9]*', S0) font sprintf(',%g', 0\\.[0-9]*\\*fsz)\" $TMP/script.gp &&
-   grep -q \"every 10th line', S0) font sprintf(',%g', 1\\.0\\*fsz)\" $TMP/script.gp"
+   grep -q \"after deformation, displacements × %g', S0) font sprintf(',%g', 1\\.0\\*fsz)\" $TMP/script.gp"
 script $TMP/example-5.1 --results
-check "N = 16: the whole mesh and every arrow" sh -c "! grep -q 'every [0-9]*.. line\|one arrow in' $TMP/script.gp"
+check "N = 16: the whole mesh and every arrow" sh -c "! grep -q 'every [0-9][0-9]*[snrt][tdh] \|one arrow in' $TMP/script.gp"
 plotted "N = 512" $TMP/n512
+
+# a body 100 m wide and 1 m high, N = 400: its columns thinned, its rows kept
+sed -e 's/^a = -2$/a = -50/' -e 's/^b = 2$/b = 50/' -e 's/^N = 16$/N = 400/' -e 's/^C2 = 3.91$/C2 = 99.99/' \
+    -e 's/^from = -2$/from = -10/' -e 's/^to = 2$/to = 10/' $scenes/roller.scene > $TMP/wide.scene
+$BIN solve $TMP/wide.scene -o $TMP/wide > /dev/null
+script $TMP/wide --results
+check "a body 100 m wide, 1 m high, N = 400: every 6th column, every row of its mesh" \
+  grep -q "(a) triangulation of Ω({/:Italic α}^0), {/:Italic x}_2 ×20, every 6th column, every row'" $TMP/script.gp
 
 # ---- titles that fit: a tall body ---------------------------------------------------------
 script $TMP/tall --body
