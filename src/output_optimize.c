@@ -1,18 +1,16 @@
-#line 1527 "paper/output.nw"
+#line 1525 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1539 "paper/output.nw"
+#line 1537 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1386 "paper/output.nw"
+#line 1389 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
-                                      const Model *md, const Output_start *start)
+                                      const double *J, const Output_start *start)
 {
-  double J[OBJECTIVE_COUNT];
-  output_objectives(md, ob->q, J);
   fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
           J[ob->kind]);
   for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
@@ -21,7 +19,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1607 "paper/output.nw"
+#line 1605 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -42,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1546 "paper/output.nw"
+#line 1544 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -87,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1635 "paper/output.nw"
+#line 1633 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -121,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1673 "paper/output.nw"
+#line 1671 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -134,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1696 "paper/output.nw"
+#line 1694 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -153,7 +151,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1718 "paper/output.nw"
+#line 1716 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -162,16 +160,17 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->energy = md->energy;
   start->cv = model_pressure_cv(md);
   start->moved = moved;
-  output_objectives(md, q, start->J);
-  return STATUS_OK;
+  return output_objectives(md, q, start->J, st);
 }
-#line 1735 "paper/output.nw"
+#line 1732 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
 {
   const Problem *p = md->problem;
-  FILE *f = output_open(o, "summary.dat", st);
+  double J[OBJECTIVE_COUNT];
+  int rc = output_objectives(md, run->objective->q, J, st);
+  FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\nscene %s\noptimizer %s\nmetric %s\nstate_solver %s\n"
           "model %s\n", run->scene, run->optimizer, run->metric,
@@ -192,7 +191,7 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
-  output_objectives_summary(f, run->objective, md, start);
+  output_objectives_summary(f, run->objective, J, start);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);

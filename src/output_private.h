@@ -38,7 +38,8 @@ int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
 /* J = every objective at the model's state, the peak's exponent q, NaN
-   where undefined (a body that lifts off has no pressure) */
-void output_objectives(const Model *md, double q, double *J);
+   where undefined (a body that lifts off has no pressure); the status
+   of an objective that failed otherwise (out of memory) */
+int output_objectives(const Model *md, double q, double *J, Status *st);
 #line 307 "paper/output.nw"
 #endif

@@ -4,13 +4,14 @@
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1357 "paper/output.nw"
-static void output_objective_lines(FILE *f, const Model *md, double q);
+#line 1358 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
   const Problem *p = md->problem;
+  double J[OBJECTIVE_COUNT];
   int rc = output_state(o, "", md, X, st);
+  if (!rc) rc = output_objectives(md, run->objective ? run->objective->q : 8, J, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\n");
@@ -19,7 +20,8 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
           p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
   fprintf(f, "energy %.15g\n", md->energy);
-  output_objective_lines(f, md, run->objective ? run->objective->q : 8);
+  for (int k = OBJECTIVE_ENERGY + 1; k < OBJECTIVE_COUNT; k++)   /* undefined: no line */
+    if (!isnan(J[k])) fprintf(f, "%s %.15g\n", objective_names[k], J[k]);
   fprintf(f, "kkt_residual %.3e\niterations %d\n", md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
@@ -27,24 +29,19 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1404 "paper/output.nw"
-void output_objectives(const Model *md, double q, double *J)
+#line 1407 "paper/output.nw"
+int output_objectives(const Model *md, double q, double *J, Status *st)
 {
   for (int k = 0; k < OBJECTIVE_COUNT; k++) {
     Objective o = { (Objective_kind) k, q };
-    Status st;
-    if (objective_value(md, &o, &J[k], &st)) J[k] = NAN;
+    Status why;
+    int rc = objective_value(md, &o, &J[k], &why);
+    if (rc == STATUS_NUMERIC) J[k] = NAN;
+    else if (rc) return status_set(st, rc, "%s", why.msg);
   }
+  return STATUS_OK;
 }
-
-static void output_objective_lines(FILE *f, const Model *md, double q)
-{
-  double J[OBJECTIVE_COUNT];
-  output_objectives(md, q, J);
-  for (int k = OBJECTIVE_ENERGY + 1; k < OBJECTIVE_COUNT; k++)
-    if (!isnan(J[k])) fprintf(f, "%s %.15g\n", objective_names[k], J[k]);
-}
-#line 1427 "paper/output.nw"
+#line 1425 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -59,7 +56,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1446 "paper/output.nw"
+#line 1444 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -82,7 +79,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1480 "paper/output.nw"
+#line 1478 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
