@@ -5,7 +5,7 @@
 #include "plot.h"
 #include "scene.h"
 #include "objective.h"
-#line 391 "paper/figures.nw"
+#line 392 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   double *xy;       /* 2 per node: x1, x2 [m] */
@@ -15,7 +15,7 @@ typedef struct {
    file that is not such a state, STATUS_MEMORY */
 int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st);
 void plot_state_free(Plot_state *s);
-#line 244 "paper/figures.nw"
+#line 245 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */

@@ -1,9 +1,10 @@
 #line 222 "paper/figures.nw"
+#include <errno.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 408 "paper/figures.nw"
+#line 409 "paper/figures.nw"
 /* the value of the attribute name in line, into buf; NULL if none */
 static const char *attribute(const char *line, const char *name, char *buf, size_t size)
 {
@@ -17,7 +18,7 @@ static const char *attribute(const char *line, const char *name, char *buf, size
   buf[e - s] = 0;
   return buf;
 }
-#line 427 "paper/figures.nw"
+#line 428 "paper/figures.nw"
 typedef struct {
   long points;                   /* NumberOfPoints */
   int native;                    /* written in this machine's byte order */
@@ -45,7 +46,7 @@ static int vtu_head(FILE *f, Vtu_head *h)
   h->base = ftell(f);
   return c == '_' && h->points > 0 && h->at[0] >= 0 && h->at[1] >= 0;
 }
-#line 458 "paper/figures.nw"
+#line 459 "paper/figures.nw"
 static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf)
 {
   uint64_t bytes;
@@ -56,7 +57,7 @@ static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf
   for (size_t j = 0; j < n; j++) out[2 * j] = buf[3 * j], out[2 * j + 1] = buf[3 * j + 1];
   return 1;
 }
-#line 472 "paper/figures.nw"
+#line 473 "paper/figures.nw"
 int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st)
 {
   char path[1200];
@@ -68,7 +69,7 @@ int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st
   s->ncol = p->N + 1, s->nrow = p->M + p->R + 1;
   snprintf(path, sizeof path, "%s/solution.vtu", dir);
   if (!(f = fopen(path, "rb")))
-    return status_set(st, STATUS_INPUT, "plot: cannot read %s", path);
+    return status_set(st, STATUS_INPUT, "plot: cannot read %s: %s", path, strerror(errno));
   if (!vtu_head(f, &h))
     rc = status_set(st, STATUS_INPUT, "plot: %s: not a state of contactopt (no "
                     "Points, displacement and appended data)", path);

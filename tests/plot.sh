@@ -390,6 +390,12 @@ refused "a solution.vtu cut short" 2 'solution.vtu: cut short' $TMP/free/plot-re
 cp $TMP/roller/solution.vtu $TMP/free/solution.vtu
 refused "the solution.vtu of another mesh" 2 'solution.vtu: 85 points, where the scene.s mesh has 165' \
   $TMP/free/plot-results $TMP/free --results
+sed 's/"LittleEndian"/"X"/; s/"BigEndian"/"LittleEndian"/; s/"X"/"BigEndian"/' $TMP/free.vtu > $TMP/free/solution.vtu
+refused "a solution.vtu of the other byte order" 2 'solution.vtu: written in the other byte order' \
+  $TMP/free/plot-results $TMP/free --results
+echo 'not a VTU file' > $TMP/free/solution.vtu
+refused "a solution.vtu that is no state" 2 'solution.vtu: not a state of contactopt' \
+  $TMP/free/plot-results $TMP/free --results
 mv $TMP/free.vtu $TMP/free/solution.vtu
 refused "--start with a run of solve" 2 'is a run of solve' $TMP/r \
   $TMP/free --results -o $TMP/r --start $TMP/example-5.1
