@@ -351,7 +351,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1819 "paper/figures.nw"
+#line 1821 "paper/figures.nw"
 /* the objective in a title, its symbol on an axis */
 static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
@@ -375,7 +375,8 @@ static void objective_graph(FILE *f, const Plot *pl)
           "  set xlabel 'iteration' offset 0, 0.4\n", title);
   if (*unit) fprintf(f, "  set ylabel sprintf('%s [10^{%%d}%s]', ee)\n", sym, unit);
   else fprintf(f, "  set ylabel (ee == 0 ? '%s' : sprintf('%s [10^{%%d}]', ee))\n", sym, sym);
-  fprintf(f, "  set xrange [*:*]; set autoscale xfix; set yrange [*:*]; set offsets 0.5, 0.5, 0, 0\n"
+  fprintf(f, "  set xrange [*:*]; set autoscale xfix; set yrange [*:*]\n"
+          "  set offsets 0.5, 0.5, graph 0.3, 0      # room for the key above the points\n"
           "  set xtics 0, %s out nomirror; set ytics autofreq out nomirror\n"
           "  set key top right spacing 1.2\n"
           "  plot opt.'/history.dat' using 1:($2/10.0**ee) with linespoints pt 7 ps 0.6 lw 1.5 \\\n"
@@ -388,7 +389,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1868 "paper/figures.nw"
+#line 1871 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -416,7 +417,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1900 "paper/figures.nw"
+#line 1903 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
