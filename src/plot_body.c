@@ -1,9 +1,9 @@
-#line 212 "paper/figures.nw"
+#line 215 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 807 "paper/figures.nw"
+#line 830 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
@@ -20,10 +20,10 @@ typedef struct {
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
   double width;               /* cm: the page */
 } Body_page;
-#line 827 "paper/figures.nw"
+#line 850 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 835 "paper/figures.nw"
+#line 858 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
@@ -48,7 +48,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
-#line 862 "paper/figures.nw"
+#line 885 "paper/figures.nw"
 static void top_support(FILE *f, Bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -63,7 +63,7 @@ static void top_support(FILE *f, Bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 881 "paper/figures.nw"
+#line 904 "paper/figures.nw"
 static double load_reach(const Side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Side *sd, int k)
@@ -75,7 +75,7 @@ static double side_reach(const Side *sd, int k)
   default: return 0;
   }
 }
-#line 897 "paper/figures.nw"
+#line 920 "paper/figures.nw"
 static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
@@ -85,19 +85,20 @@ static Body_page body_page(const Plot *pl)
   for (int i = 0; i <= p->N; i++) amax = fmax(amax, pl->s.alpha0[i]);
   L.ucm = fmin(17.6 / W, 8.8 / p->gamma);
   L.vex = p->gamma * L.ucm >= 1.76 ? 1 : plot_nice_down(3.52 / (p->gamma * L.ucm));
+  plot_widen(&L.ucm, &L.vex, W * L.ucm, 1.76, 3.52);
   for (int k = 0; k < SIDE_COUNT; k++) L.ext[k] = side_reach(&p->side[k], k);
   L.xlo = p->a - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
   L.xhi = p->b + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
   L.ylo = -BELOW / (L.ucm * L.vex);
   L.yhi = p->gamma + (L.ext[SIDE_TOP] + ABOVE) / (L.ucm * L.vex);
-  L.top = L.vex > 1 ? 2.2 : 1.4;
+  L.top = L.vex != 1 ? 2.2 : 1.4;
   L.slo = -0.2 * fmax(p->C0, amax);
   L.shi = 1.4 * fmax(p->C0, amax);
   L.exag = fmax(L.vex, plot_nice(3.52 / ((L.shi - L.slo) * L.ucm)));
   body_fit(pl, &L);
   return L;
 }
-#line 925 "paper/figures.nw"
+#line 949 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
 static void load_text(const Side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
@@ -120,7 +121,7 @@ static void body_fit(const Plot *pl, Body_page *L)
            pl->args->title ? pl->args->title : pl->args->dir);
   L->width = fmax(2.6 + (L->xhi - L->xlo) * L->ucm + 0.6, plot_text_cm(t, 12) + 1);
 }
-#line 960 "paper/figures.nw"
+#line 984 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -149,7 +150,7 @@ static double load_reach(const Side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 991 "paper/figures.nw"
+#line 1015 "paper/figures.nw"
 static void load_text(const Side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -159,13 +160,13 @@ static void load_text(const Side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 1005 "paper/figures.nw"
+#line 1029 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 1015 "paper/figures.nw"
+#line 1039 "paper/figures.nw"
 static void side_load(FILE *f, const Side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -199,7 +200,7 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1060 "paper/figures.nw"
+#line 1084 "paper/figures.nw"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
@@ -227,7 +228,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1094 "paper/figures.nw"
+#line 1118 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -252,7 +253,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low);
 }
-#line 1121 "paper/figures.nw"
+#line 1145 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -263,7 +264,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1135 "paper/figures.nw"
+#line 1159 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low)
 {
   char f1[64], f2[64];
@@ -273,7 +274,7 @@ static void body_force_label(FILE *f, const Problem *p, int low)
           "at a + %s*(b - a), %s*gamma center front\n", f1, f2, low ? "0.7" : "0.65",
           low ? "0.5" : "0.6");
 }
-#line 1152 "paper/figures.nw"
+#line 1176 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -282,8 +283,9 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
   plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor((p->b - p->a) * L->ucm / 2))), 0);
   plot_tics(f, "y", 0, p->gamma, 2, 1);
   fprintf(f, "  set ylabel '{/:Italic x}_2 [m]'\n  set border 3\n");
-  if (L->vex > 1)
-    fprintf(f, "  set title 'vertical scale exaggerated ×%g' offset 0, -0.3\n", L->vex);
+  if (L->vex != 1)
+    fprintf(f, "  set title '%s scale exaggerated ×%g' offset 0, -0.3\n", L->vex > 1
+            ? "vertical" : "horizontal", L->vex > 1 ? L->vex : 1 / L->vex);
   fprintf(f, "  set object rect from xlo, ylo to xhi, 0 fs pattern 5 noborder fc 'gray40' back\n"
           "  set arrow from xlo, 0 to xhi, 0 nohead lw 2 lc 'gray30' back\n");
   int n = rollers(p->gamma * L->ucm * L->vex);
@@ -301,7 +303,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1192 "paper/figures.nw"
+#line 1217 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -331,7 +333,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1226 "paper/figures.nw"
+#line 1251 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -341,7 +343,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1244 "paper/figures.nw"
+#line 1269 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;

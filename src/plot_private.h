@@ -5,7 +5,7 @@
 #include "plot.h"
 #include "scene.h"
 #include "objective.h"
-#line 392 "paper/figures.nw"
+#line 395 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   double *xy;       /* 2 per node: x1, x2 [m] */
@@ -15,7 +15,7 @@ typedef struct {
    file that is not such a state, STATUS_MEMORY */
 int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st);
 void plot_state_free(Plot_state *s);
-#line 245 "paper/figures.nw"
+#line 248 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -55,6 +55,9 @@ void plot_place(FILE *f, const char *x, const char *w, const char *y, const char
 /* the width on the page of enhanced text s at pt points, in cm (an
    estimate: DejaVu Sans averages 0.6 of its size a character) */
 double plot_text_cm(const char *s, double pt);
+/* a body w cm wide on the page, under least cm: x1 exaggerated a round
+   number of times, to about want cm (*ucm times it, *vex divided by it) */
+void plot_widen(double *ucm, double *vex, double w, double least, double want);
 /* the scripts of the two figures */
 void plot_body_figure(FILE *f, const Plot *pl, const char *out);
 void plot_results_figure(FILE *f, const Plot *pl, const char *out);

@@ -1,10 +1,10 @@
-#line 231 "paper/figures.nw"
+#line 234 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1385 "paper/figures.nw"
+#line 1412 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -22,14 +22,14 @@ typedef struct {
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
-#line 1405 "paper/figures.nw"
+#line 1432 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1415 "paper/figures.nw"
+#line 1442 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -44,7 +44,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1434 "paper/figures.nw"
+#line 1461 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -60,7 +60,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1454 "paper/figures.nw"
+#line 1481 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -70,7 +70,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1466 "paper/figures.nw"
+#line 1493 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -78,6 +78,7 @@ static Results_page results_page(const Plot *pl)
   Results_page L;
   L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * p->gamma));
   L.vex = p->gamma * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (p->gamma * L.ucm));
+  plot_widen(&L.ucm, &L.vex, 1.05 * (p->b - p->a) * L.ucm, 1.2, 2.6);
   L.pw = 1.05 * (p->b - p->a) * L.ucm;
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   L.sinks = free_vertically(p);
@@ -93,7 +94,7 @@ static Results_page results_page(const Plot *pl)
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1492 "paper/figures.nw"
+#line 1520 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -104,7 +105,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1509 "paper/figures.nw"
+#line 1537 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -125,7 +126,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1540 "paper/figures.nw"
+#line 1568 "paper/figures.nw"
 static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
 {
   int d = sc < sr ? sc : sr;
@@ -148,7 +149,7 @@ static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
   fprintf(f, "EOD\n");
 }
-#line 1569 "paper/figures.nw"
+#line 1597 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -190,14 +191,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1613 "paper/figures.nw"
+#line 1641 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 1625 "paper/figures.nw"
+#line 1653 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -228,7 +229,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1661 "paper/figures.nw"
+#line 1689 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -248,7 +249,8 @@ static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, con
 static const char *exaggerated(const Results_page *L)
 {
   static char buf[64];
-  snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
+  if (L->vex < 1) snprintf(buf, sizeof buf, ", {/:Italic x}_1 ×%g", 1 / L->vex);
+  else snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
 
@@ -281,7 +283,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 1720 "paper/figures.nw"
+#line 1749 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -311,7 +313,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 1757 "paper/figures.nw"
+#line 1786 "paper/figures.nw"
 #define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
@@ -326,7 +328,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW / w), 3));
 }
-#line 1777 "paper/figures.nw"
+#line 1806 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -342,7 +344,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 1798 "paper/figures.nw"
+#line 1827 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -351,7 +353,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1821 "paper/figures.nw"
+#line 1850 "paper/figures.nw"
 /* the objective in a title, its symbol on an axis */
 static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
@@ -389,7 +391,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1871 "paper/figures.nw"
+#line 1900 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -417,7 +419,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1903 "paper/figures.nw"
+#line 1932 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);

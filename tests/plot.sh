@@ -341,13 +341,17 @@ check "a body 0.5 m wide, 3 m tall: its panels widened to the strip's title ($(c
   holds '(h - l) * u >= 17' u=$1 l=$2 h=$3
 check "a tall body: two x1 tick marks, not five that run together" grep -q '^  set xtics 0, 0.5, 0.5 ' $TMP/script.gp
 check "a tall body: the top's name left of the arrows, clear of the load's value" \
-  grep -q "set label 'Γ@^{/\\*0.7 2}_{/\\*0.7 P}' at -0.2" $TMP/script.gp
+  grep -q "set label 'Γ@^{/\\*0.7 2}_{/\\*0.7 P}' at -0.1022" $TMP/script.gp
+check "a tall body: its horizontal scale exaggerated twice (1.47 cm wide at true scale), and the title says so" sh -c \
+  "grep -q '^ucm = 5.86667; vex = 0.5 ' $TMP/script.gp && grep -q \"set title 'horizontal scale exaggerated ×2'\" $TMP/script.gp"
 script $TMP/tall --results
 check "a tall body: its body panels centred in their columns" sh -c \
   "grep -q '^bodyx(c) = colx(c) + (colw - pw)/2' $TMP/script.gp && grep -q 'set lmargin at screen sx(bodyx(0))' $TMP/script.gp"
-u=$(awk '/^ucm = / { gsub(/;/, ""); print $3 }' $TMP/script.gp)
-check "a tall body: 7 cm high, its panels ($(calc '1.05 * 0.5 * u' u="$u") cm) narrower than a column (10.8 cm)" \
-  holds 'abs(1.35 * 3 * u - 7) < 1e-3 && 1.05 * 0.5 * u < 10.8' u="$u"
+set -- $(awk '/^ucm = / { gsub(/;/, ""); print $3, $6 }' $TMP/script.gp)
+check "a tall body: 7 cm high, its panels ($(calc '1.05 * 0.5 * u' u="$1") cm, x1 ×$(calc '1 / v' v="$2")) narrower than a column (10.8 cm)" \
+  holds 'abs(1.35 * 3 * u * v - 7) < 1e-3 && 1.05 * 0.5 * u < 10.8 && abs(v - 0.5) < 1e-12' u="$1" v="$2"
+check "a tall body: the titles of its body panels say x1 ×2" \
+  grep -q "(a) triangulation of Ω({/:Italic α}^0), {/:Italic x}_1 ×2[,']" $TMP/script.gp
 $BIN plot $TMP/tall --title "$(printf 'a very long title %.0s' 1 2 3 4 5 6)" -o $TMP/long --gnuplot > $TMP/script.gp
 set -- $(awk '/^Wcm = / { print $3 }' $TMP/script.gp)
 check "a title of 108 characters: both pages ($1, $2 cm) wider than it and its end (at 0.254 cm a character)" \
