@@ -325,6 +325,11 @@ check "N = 512: the title of (c), wider than its column, in a smaller font; that
 script $TMP/example-5.1 --results
 check "N = 16: the whole mesh and every arrow" sh -c "! grep -q 'every [0-9][0-9]*[snrt][tdh] \|one arrow in' $TMP/script.gp"
 plotted "N = 512" $TMP/n512
+script $TMP/n512 --results
+rm -f $TMP/n512/plot-results.*
+(cd $TMP && gnuplot script.gp) 2> $TMP/err
+check "N = 512: the printed script of the results, its data blocks in it, draws with gnuplot alone ($(head -c 200 $TMP/err))" \
+  figure $TMP/n512/plot-results
 
 # a body 100 m wide and 1 m high, N = 400: its columns thinned, its rows kept
 sed -e 's/^a = -2$/a = -50/' -e 's/^b = 2$/b = 50/' -e 's/^N = 16$/N = 400/' -e 's/^C2 = 3.91$/C2 = 99.99/' \
