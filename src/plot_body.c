@@ -228,17 +228,17 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1118 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p, int low);
+#line 1120 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
   char name[64], g[160];
   double x, up;
-  int low = p->gamma * L->ucm * L->vex < 3;
+  int low = p->gamma * L->ucm * L->vex < 3, narrow = !low && (p->b - p->a) * L->ucm < 4;
   fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + %s*(b - a), %s*gamma "
-          "center front font sprintf(',%%g', 1.4*fsz)\n", low ? "0.3" : "0.275",
-          low ? "0.5" : "0.6");
+          "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
+          : "0.275", low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
   fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right\n", name, L->ext[0] + LGAP);
   side_name(p, SIDE_RIGHT, name, sizeof name);
@@ -247,13 +247,13 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   top_name_place(p, L, &x, &up);
   fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center\n", name, plot_num(x), up);
   fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
-          low ? "0.1" : "0.1875");
+          narrow ? "0.5" : low ? "0.1" : "0.1875");
   foundation_text(p, g, sizeof g);
   fprintf(f, "  set label '%s' at (a + b)/2, -cy(0.44) center boxed\n", g);
   fprintf(f, "  set style textbox opaque noborder\n");
-  if (p->has_body_force) body_force_label(f, p, low);
+  if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1145 "paper/figures.nw"
+#line 1147 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -264,17 +264,17 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1159 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p, int low)
+#line 1162 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
   plot_enhanced_number(p->F[0], f1, sizeof f1);
   plot_enhanced_number(p->F[1], f2, sizeof f2);
   fprintf(f, "  set label 'body force ({/:Italic F}_1, {/:Italic F}_2) = (%s, %s) N/m^3' "
-          "at a + %s*(b - a), %s*gamma center front\n", f1, f2, low ? "0.7" : "0.65",
-          low ? "0.5" : "0.6");
+          "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
+          ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1176 "paper/figures.nw"
+#line 1179 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -303,7 +303,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1217 "paper/figures.nw"
+#line 1221 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -325,15 +325,16 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
     fprintf(f, "  set object rect from b, a_right to b + cx(%g), shi %s\n", WALL, hatch);
   fprintf(f, "  set arrow from a, a_left to a, shi nohead lw 2 lc 'black' front\n"
           "  set arrow from b, a_right to b, shi nohead lw 2 lc 'black' front\n"
-          "  set label 'Γ_C({/:Italic α}^0)' at a + 0.25*(b - a), 0.9*shi/1.4 center front\n"
+          "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), 0.9*shi/1.4 center front\n"
           "  if (a_max > 0) {\n"
           "    set label 'gap' at (x_gap < (a + b)/2 ? x_gap + 0.075*(b - a) : "
           "x_gap - 0.075*(b - a)), 0.4*a_max \\\n"
-          "        center front font sprintf(',%%g', 0.9*fsz)\n  }\n");
+          "        center front font sprintf(',%%g', 0.9*fsz)\n  }\n",
+          (p->b - p->a) * L->ucm < 4 ? "0.5" : "0.25");
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1251 "paper/figures.nw"
+#line 1256 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -343,7 +344,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1269 "paper/figures.nw"
+#line 1274 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;

@@ -347,6 +347,9 @@ check "a body 0.5 m wide, 3 m tall: its panels widened to the strip's title ($(c
 check "a tall body: two x1 tick marks, not five that run together" grep -q '^  set xtics 0, 0.5, 0.5 ' $TMP/script.gp
 check "a tall body: the top's name left of the arrows, clear of the load's value" \
   grep -q "set label 'Γ@^{/\\*0.7 2}_{/\\*0.7 P}' at -0.1022" $TMP/script.gp
+check "a tall body: the names of the body and of Γ_C in its middle, clear of its clamp" sh -c \
+  "grep -q \"set label 'Ω({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp &&
+   [ \$(grep -c \"set label 'Γ_C({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp) -eq 2 ]"
 check "a tall body: its horizontal scale exaggerated twice (1.47 cm wide at true scale), and the title says so" sh -c \
   "grep -q '^ucm = 5.86667; vex = 0.5 ' $TMP/script.gp && grep -q \"set title 'horizontal scale exaggerated ×2'\" $TMP/script.gp"
 script $TMP/tall --results
