@@ -1,4 +1,4 @@
-#line 222 "paper/main.nw"
+#line 225 "paper/main.nw"
 #include <string.h>
 #include "args.h"
 

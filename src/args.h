@@ -1,4 +1,4 @@
-#line 201 "paper/main.nw"
+#line 204 "paper/main.nw"
 #ifndef CONTACTOPT_ARGS_H
 #define CONTACTOPT_ARGS_H
 #include "status.h"

@@ -15,7 +15,7 @@
 #include "threads.h"
 #include "resources.h"
 #include "plot.h"
-#line 277 "paper/main.nw"
+#line 280 "paper/main.nw"
 /* st's message = "path: message", unless it begins with the path already */
 static void name_the_scene(Status *st, const char *path)
 {
@@ -26,7 +26,7 @@ static void name_the_scene(Status *st, const char *path)
   if (snprintf(st->msg, sizeof st->msg, "%s: %s", path, msg) >= (int) sizeof st->msg)
     strcpy(st->msg + sizeof st->msg - 4, "...");
 }
-#line 295 "paper/main.nw"
+#line 298 "paper/main.nw"
 /* *v = the number at *p, digits only; *p moves past it */
 static int component_number(const char **p, long *v)
 {
@@ -71,7 +71,7 @@ static int components_read(const char *spec, int N, Grad_check *gc, Status *st)
   free(chosen);
   return rc;
 }
-#line 342 "paper/main.nw"
+#line 345 "paper/main.nw"
 typedef struct {
   const Args *a;            /* the command line */
   Scene s;                  /* the scene, overrides applied */
@@ -91,7 +91,7 @@ static void warn_unloaded(const Scene *s)
     fprintf(stderr, "contactopt: warning: %s: the scene has no load (no side "
             "with bc = traction, no body force): its state is u = 0\n", s->path);
 }
-#line 368 "paper/main.nw"
+#line 371 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -128,7 +128,7 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
   scene_free(&r.s);
   return rc;
 }
-#line 428 "paper/main.nw"
+#line 431 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -139,7 +139,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 447 "paper/main.nw"
+#line 450 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -174,7 +174,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 484 "paper/main.nw"
+#line 487 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -189,7 +189,7 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 520 "paper/main.nw"
+#line 523 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -212,7 +212,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 546 "paper/main.nw"
+#line 549 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -231,7 +231,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 574 "paper/main.nw"
+#line 577 "paper/main.nw"
 /* the refusal of the Newton method for a Coulomb scene */
 static int no_newton(const Run *r, Status *st)
 {
@@ -293,7 +293,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 783 "paper/main.nw"
+#line 786 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -304,7 +304,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 800 "paper/main.nw"
+#line 803 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -317,7 +317,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve(r->md, X, st);
 }
-#line 825 "paper/main.nw"
+#line 828 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -347,7 +347,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->evaluations == 1 ? "" : "s", c->seconds, N);
   return rc;
 }
-#line 858 "paper/main.nw"
+#line 861 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -357,7 +357,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 878 "paper/main.nw"
+#line 881 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -422,7 +422,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 952 "paper/main.nw"
+#line 955 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -441,7 +441,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 982 "paper/main.nw"
+#line 985 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -457,7 +457,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1010 "paper/main.nw"
+#line 1013 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -1,14 +1,13 @@
-#line 1598 "paper/output.nw"
+#line 1628 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1610 "paper/output.nw"
-static int output_objectives(const Model *md, double q, double *J, Status *st);
+#line 1640 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1479 "paper/output.nw"
+#line 1491 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const double *J, const Output_start *start)
 {
@@ -20,7 +19,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1679 "paper/output.nw"
+#line 1708 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -41,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1618 "paper/output.nw"
+#line 1647 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -86,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1707 "paper/output.nw"
+#line 1736 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -120,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1745 "paper/output.nw"
+#line 1774 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -133,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1768 "paper/output.nw"
+#line 1797 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -152,22 +151,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1790 "paper/output.nw"
-/* J = every objective at the model's state, the peak's exponent q, NaN
-   where undefined (a body that lifts off has no pressure); another
-   failure (out of memory) is the caller's */
-static int output_objectives(const Model *md, double q, double *J, Status *st)
-{
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
-    Objective o = { (Objective_kind) k, q };
-    Status why;
-    int rc = objective_value(md, &o, &J[k], &why);
-    if (rc == STATUS_NUMERIC) J[k] = NAN;
-    else if (rc) return *st = why, rc;
-  }
-  return STATUS_OK;
-}
-
+#line 1819 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -178,7 +162,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return output_objectives(md, q, start->J, st);
 }
-#line 1824 "paper/output.nw"
+#line 1838 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)

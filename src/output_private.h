@@ -34,12 +34,16 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st);
 /* solution.vtu in the sub-folder sub: the state of md at X */
 int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
                Status *st);
-#line 1408 "paper/output.nw"
+#line 1409 "paper/output.nw"
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
 /* the lines of a summary of the model's state: the reactions of its held
    sides, the peak contact pressure, the contact length, the largest von
    Mises stress (model_summary's ms) */
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms);
+/* J = every objective at the model's state, the peak's exponent q, NaN
+   where undefined (a body that lifts off has no pressure); the status
+   of an objective that failed otherwise (out of memory) */
+int output_objectives(const Model *md, double q, double *J, Status *st);
 #line 320 "paper/output.nw"
 #endif

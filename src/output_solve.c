@@ -1,16 +1,19 @@
 #line 1399 "paper/output.nw"
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1420 "paper/output.nw"
+#line 1428 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
   const Problem *p = md->problem;
   Model_summary ms;
+  double J[OBJECTIVE_COUNT];
   int rc = output_state(o, "", md, X, st);
   if (!rc) rc = model_summary(md, &ms, st);
+  if (!rc) rc = output_objectives(md, run->objective ? run->objective->q : 8, J, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
@@ -18,8 +21,10 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
           run->state_solver, problem_model_name(p->model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
           p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
-  fprintf(f, "energy %.15g\nkkt_residual %.3e\niterations %d\n", md->energy,
-          md->report.kkt, md->report.iterations);
+  fprintf(f, "energy %.15g\n", md->energy);
+  for (int k = OBJECTIVE_ENERGY + 1; k < OBJECTIVE_COUNT; k++)   /* undefined: no line */
+    if (!isnan(J[k])) fprintf(f, "%s %.15g\n", objective_names[k], J[k]);
+  fprintf(f, "kkt_residual %.3e\niterations %d\n", md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
   output_reactions(f, md, &ms);
@@ -27,7 +32,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1459 "paper/output.nw"
+#line 1471 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
@@ -41,7 +46,19 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1497 "paper/output.nw"
+#line 1509 "paper/output.nw"
+int output_objectives(const Model *md, double q, double *J, Status *st)
+{
+  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
+    Objective o = { (Objective_kind) k, q };
+    Status why;
+    int rc = objective_value(md, &o, &J[k], &why);
+    if (rc == STATUS_NUMERIC) J[k] = NAN;
+    else if (rc) return status_set(st, rc, "%s", why.msg);
+  }
+  return STATUS_OK;
+}
+#line 1527 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -56,7 +73,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1516 "paper/output.nw"
+#line 1546 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -79,7 +96,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1550 "paper/output.nw"
+#line 1580 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

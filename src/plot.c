@@ -1,4 +1,4 @@
-#line 130 "paper/figures.nw"
+#line 137 "paper/figures.nw"
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 239 "paper/figures.nw"
+#line 268 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -39,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 279 "paper/figures.nw"
+#line 308 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -59,9 +59,8 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 302 "paper/figures.nw"
-static const char *const state_files[] = {
-  "shape.dat", "contact.dat", "nodes.dat", "triangles.dat" };
+#line 332 "paper/figures.nw"
+static const char *const state_files[] = { "shape.dat", "contact.dat", "solution.vtu" };
 
 /* dir: a finished run of solve or optimize (*optimize says which) whose
    states have their mesh files */
@@ -84,21 +83,17 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
                       "or optimize (no summary.dat and effective.scene)", dir);
   *optimize = has(dir, "history.dat");
   for (int k = 0; k < (*optimize ? 2 : 1); k++)
-    for (int j = 0; j < 4; j++) {
+    for (int j = 0; j < 3; j++) {
       char name[64];
       snprintf(name, sizeof name, "%s%s", *optimize ? (k ? "final/" : "initial/")
                : "", state_files[j]);
-      if (has(dir, name)) continue;
-      if (j < 2)
+      if (!has(dir, name))
         return status_set(st, STATUS_INPUT, "plot: %s: not an output folder of "
                           "solve or optimize (no %s)", dir, name);
-      return status_set(st, STATUS_INPUT, "plot: %s: no %s: the mesh files are "
-                        "written only with --plot-files; rerun the command with it",
-                        dir, name);
     }
   return STATUS_OK;
 }
-#line 345 "paper/figures.nw"
+#line 370 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -112,7 +107,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 1388 "paper/figures.nw"
+#line 1972 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -144,7 +139,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 1423 "paper/figures.nw"
+#line 2007 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -157,7 +152,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 1444 "paper/figures.nw"
+#line 2028 "paper/figures.nw"
 enum { GNUPLOT_GRACE = 2000 };   /* ms that gnuplot has to end after an interrupt */
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
@@ -179,7 +174,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 1472 "paper/figures.nw"
+#line 2056 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -213,7 +208,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 1514 "paper/figures.nw"
+#line 2098 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -241,7 +236,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 1551 "paper/figures.nw"
+#line 2135 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -262,7 +257,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 1577 "paper/figures.nw"
+#line 2165 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -286,9 +281,13 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   if ((rc = scene_load(&pl->s, scene, 2, override, st))) return rc;
   pl->projected = summary_value(a->dir, "initial_projected", 0) != 0;
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
+  pl->start_value = a->start ? summary_value(a->start,
+                   objective_name(pl->s.optimizer.objective.kind), NAN) : NAN;
+  for (int k = 0; k < 1 + pl->optimize && (a->figures & PLOT_RESULTS); k++)
+    if ((rc = plot_state_read(pl->state[k], &pl->s.problem, &pl->mesh[k], st))) return rc;
   return STATUS_OK;
 }
-#line 1607 "paper/figures.nw"
+#line 2199 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };
@@ -313,6 +312,7 @@ int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
   if (!a->print) interrupt_catch(0, NULL, NULL, NULL);
   if (!rc && a->print && fflush(out))
     rc = status_set(st, STATUS_SYSTEM, "plot: cannot print the script: %s", strerror(errno));
+  plot_state_free(&pl.mesh[0]), plot_state_free(&pl.mesh[1]);
   scene_free(&pl.s);
   return rc;
 }

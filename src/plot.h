@@ -1,4 +1,4 @@
-#line 97 "paper/figures.nw"
+#line 104 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_H
 #define CONTACTOPT_PLOT_H
 #include <stdio.h>

@@ -1,9 +1,9 @@
-#line 198 "paper/figures.nw"
+#line 215 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 623 "paper/figures.nw"
+#line 830 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
@@ -18,11 +18,12 @@ typedef struct {
   double xlo, xhi, ylo, yhi;  /* the upper panel, m */
   double top;                 /* cm above the upper panel */
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
+  double width;               /* cm: the page */
 } Body_page;
-#line 642 "paper/figures.nw"
+#line 850 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 650 "paper/figures.nw"
+#line 858 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
@@ -47,7 +48,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
-#line 677 "paper/figures.nw"
+#line 885 "paper/figures.nw"
 static void top_support(FILE *f, Bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -62,7 +63,7 @@ static void top_support(FILE *f, Bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 696 "paper/figures.nw"
+#line 904 "paper/figures.nw"
 static double load_reach(const Side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Side *sd, int k)
@@ -74,7 +75,8 @@ static double side_reach(const Side *sd, int k)
   default: return 0;
   }
 }
-#line 712 "paper/figures.nw"
+#line 920 "paper/figures.nw"
+static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -83,18 +85,43 @@ static Body_page body_page(const Plot *pl)
   for (int i = 0; i <= p->N; i++) amax = fmax(amax, pl->s.alpha0[i]);
   L.ucm = fmin(17.6 / W, 8.8 / p->gamma);
   L.vex = p->gamma * L.ucm >= 1.76 ? 1 : plot_nice_down(3.52 / (p->gamma * L.ucm));
+  plot_widen(&L.ucm, &L.vex, W * L.ucm, 1.76, 3.52);
   for (int k = 0; k < SIDE_COUNT; k++) L.ext[k] = side_reach(&p->side[k], k);
   L.xlo = p->a - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
   L.xhi = p->b + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
   L.ylo = -BELOW / (L.ucm * L.vex);
   L.yhi = p->gamma + (L.ext[SIDE_TOP] + ABOVE) / (L.ucm * L.vex);
-  L.top = L.vex > 1 ? 2.2 : 1.4;
+  L.top = L.vex != 1 ? 2.2 : 1.4;
   L.slo = -0.2 * fmax(p->C0, amax);
   L.shi = 1.4 * fmax(p->C0, amax);
   L.exag = fmax(L.vex, plot_nice(3.52 / ((L.shi - L.slo) * L.ucm)));
+  body_fit(pl, &L);
   return L;
 }
-#line 744 "paper/figures.nw"
+#line 949 "paper/figures.nw"
+static void foundation_text(const Problem *p, char *buf, size_t size);
+static void load_text(const Side *sd, char *buf, size_t size);
+static void body_fit(const Plot *pl, Body_page *L)
+{
+  const Problem *p = &pl->s.problem;
+  char t[256];
+  double w, grow;
+  snprintf(t, sizeof t, "the bottom strip −%g ≤ x_2 ≤ %g, vertical scale exaggerated ×%g%s",
+           -L->slo, L->shi, L->exag, pl->optimize ? "; dashed: the final α^*" : "");
+  w = plot_text_cm(t, 12);
+  foundation_text(p, t, sizeof t);
+  w = fmax(w, plot_text_cm(t, 12));
+  if (p->side[SIDE_TOP].kind == BC_TRACTION) {
+    load_text(&p->side[SIDE_TOP], t, sizeof t);
+    w = fmax(w, plot_text_cm(t, 12));
+  }
+  grow = fmax(0, (w + 1) / L->ucm - (L->xhi - L->xlo)) / 2;
+  L->xlo -= grow, L->xhi += grow;
+  snprintf(t, sizeof t, "%s: Ω(α^0) and the parts of its boundary",
+           pl->args->title ? pl->args->title : pl->args->dir);
+  L->width = fmax(2.6 + (L->xhi - L->xlo) * L->ucm + 0.6, plot_text_cm(t, 12) + 1);
+}
+#line 984 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -123,7 +150,7 @@ static double load_reach(const Side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 775 "paper/figures.nw"
+#line 1015 "paper/figures.nw"
 static void load_text(const Side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -133,13 +160,13 @@ static void load_text(const Side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 789 "paper/figures.nw"
+#line 1029 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 799 "paper/figures.nw"
+#line 1039 "paper/figures.nw"
 static void side_load(FILE *f, const Side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -173,7 +200,7 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 843 "paper/figures.nw"
+#line 1084 "paper/figures.nw"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
@@ -196,22 +223,22 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
   if (fmax(left, right) >= 0.2 * W) {
     *x = left >= right ? p->a + 0.5 * left : t->to + 0.5 * right;
     *up = 0.396;
-  } else {
-    *x = p->a + 0.08 * W;
-    *up = L->ext[SIDE_TOP] + ALABEL + 0.396;
+  } else {                 /* beside the arrows, clear of their value */
+    *x = p->a - 0.6 / L->ucm;
+    *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 877 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p, int low);
+#line 1120 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
-  char name[64], g[64];
+  char name[64], g[160];
   double x, up;
-  int low = p->gamma * L->ucm * L->vex < 3;
+  int low = p->gamma * L->ucm * L->vex < 3, narrow = !low && (p->b - p->a) * L->ucm < 4;
   fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + %s*(b - a), %s*gamma "
-          "center front font sprintf(',%%g', 1.4*fsz)\n", low ? "0.3" : "0.275",
-          low ? "0.5" : "0.6");
+          "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
+          : "0.275", low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
   fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right\n", name, L->ext[0] + LGAP);
   side_name(p, SIDE_RIGHT, name, sizeof name);
@@ -220,38 +247,45 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   top_name_place(p, L, &x, &up);
   fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center\n", name, plot_num(x), up);
   fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
-          low ? "0.1" : "0.1875");
+          narrow ? "0.5" : low ? "0.1" : "0.1875");
+  foundation_text(p, g, sizeof g);
+  fprintf(f, "  set label '%s' at (a + b)/2, -cy(0.44) center boxed\n", g);
+  fprintf(f, "  set style textbox opaque noborder\n");
+  if (p->has_body_force) body_force_label(f, p, low, narrow);
+}
+#line 1147 "paper/figures.nw"
+static void foundation_text(const Problem *p, char *buf, size_t size)
+{
+  char g[64] = "";
   if (p->contact == CONTACT_TRESCA) plot_enhanced_number(p->slip_bound, g, sizeof g);
   if (p->contact == CONTACT_COULOMB) plot_enhanced_number(p->friction, g, sizeof g);
-  fprintf(f, "  set label 'rigid foundation  {/:Italic x}_2 ≤ 0%s%s%s' at (a + b)/2, "
-          "-cy(0.44) center boxed\n", p->contact == CONTACT_TRESCA ? ", given friction "
-          "{/:Italic g} = " : p->contact == CONTACT_COULOMB ? ", Coulomb friction "
-          "{/:Italic F} = " : "", p->contact == CONTACT_FRICTIONLESS ? "" : g,
-          p->contact == CONTACT_TRESCA ? " N/m^2" : "");
-  fprintf(f, "  set style textbox opaque noborder\n");
-  if (p->has_body_force) body_force_label(f, p, low);
+  snprintf(buf, size, "rigid foundation  {/:Italic x}_2 ≤ 0%s%s%s",
+           p->contact == CONTACT_TRESCA ? ", given friction {/:Italic g} = "
+           : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
+           g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 910 "paper/figures.nw"
-static void body_force_label(FILE *f, const Problem *p, int low)
+#line 1162 "paper/figures.nw"
+static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
   plot_enhanced_number(p->F[0], f1, sizeof f1);
   plot_enhanced_number(p->F[1], f2, sizeof f2);
   fprintf(f, "  set label 'body force ({/:Italic F}_1, {/:Italic F}_2) = (%s, %s) N/m^3' "
-          "at a + %s*(b - a), %s*gamma center front\n", f1, f2, low ? "0.7" : "0.65",
-          low ? "0.5" : "0.6");
+          "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
+          ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 925 "paper/figures.nw"
+#line 1179 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
   plot_place(f, "left", "(xhi - xlo)*ucm", "top", "(yhi - ylo)*ucm*vex");
   fprintf(f, "  set xrange [xlo:xhi]; set yrange [ylo:yhi]\n");
-  plot_tics(f, "x", p->a, p->b, 4, 0);
+  plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor((p->b - p->a) * L->ucm / 2))), 0);
   plot_tics(f, "y", 0, p->gamma, 2, 1);
   fprintf(f, "  set ylabel '{/:Italic x}_2 [m]'\n  set border 3\n");
-  if (L->vex > 1)
-    fprintf(f, "  set title 'vertical scale exaggerated ×%g' offset 0, -0.3\n", L->vex);
+  if (L->vex != 1)
+    fprintf(f, "  set title '%s scale exaggerated ×%g' offset 0, -0.3\n", L->vex > 1
+            ? "vertical" : "horizontal", L->vex > 1 ? L->vex : 1 / L->vex);
   fprintf(f, "  set object rect from xlo, ylo to xhi, 0 fs pattern 5 noborder fc 'gray40' back\n"
           "  set arrow from xlo, 0 to xhi, 0 nohead lw 2 lc 'gray30' back\n");
   int n = rollers(p->gamma * L->ucm * L->vex);
@@ -269,7 +303,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 965 "paper/figures.nw"
+#line 1221 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -291,24 +325,26 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
     fprintf(f, "  set object rect from b, a_right to b + cx(%g), shi %s\n", WALL, hatch);
   fprintf(f, "  set arrow from a, a_left to a, shi nohead lw 2 lc 'black' front\n"
           "  set arrow from b, a_right to b, shi nohead lw 2 lc 'black' front\n"
-          "  set label 'Γ_C({/:Italic α}^0)' at a + 0.25*(b - a), 0.9*shi/1.4 center front\n"
+          "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), 0.9*shi/1.4 center front\n"
           "  if (a_max > 0) {\n"
           "    set label 'gap' at (x_gap < (a + b)/2 ? x_gap + 0.075*(b - a) : "
           "x_gap - 0.075*(b - a)), 0.4*a_max \\\n"
-          "        center front font sprintf(',%%g', 0.9*fsz)\n  }\n");
+          "        center front font sprintf(',%%g', 0.9*fsz)\n  }\n",
+          (p->b - p->a) * L->ucm < 4 ? "0.5" : "0.25");
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 998 "paper/figures.nw"
+#line 1256 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
-          "       shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc 'black' notitle");
+          "       shape using 1:2 with linespoints lw 2 pt 7 ps 0.5 pi %d lc 'black' notitle",
+          (int) ceil((pl->s.problem.N + 1.0) / MARKS));
   if (pl->optimize)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1015 "paper/figures.nw"
+#line 1274 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
@@ -332,9 +368,10 @@ void plot_body_figure(FILE *f, const Plot *pl, const char *out)
           plot_real(L.xlo, 6), plot_real(L.xhi, 6), plot_real(L.ylo, 6), plot_real(L.yhi, 6));
   fprintf(f, "slo = %s; shi = %s; exag = %s     # the bottom strip, x2 times exag\n"
           "left = 2.6; top = %s; gap = 2.2                  # margins (cm)\n"
-          "Wcm = left + (xhi - xlo)*ucm + 0.6\n"
+          "Wcm = %s       # left + (xhi - xlo)*ucm + 0.6, or the title's width\n"
           "Hcm = top + (yhi - ylo)*ucm*vex + gap + (shi - slo)*exag*ucm + 1.6\n",
-          plot_real(L.slo, 6), plot_real(L.shi, 6), plot_real(L.exag, 0), plot_real(L.top, 0));
+          plot_real(L.slo, 6), plot_real(L.shi, 6), plot_real(L.exag, 0), plot_real(L.top, 0),
+          plot_real(L.width, 6));
   fputs(plot_page_lines, f);
   fprintf(f, "do for [fmt in 'pdf png'] {\n%s", plot_terminal_lines);
   fprintf(f, "  set multiplot title sprintf('%%s: Ω({/:Italic α}^0) and the parts of its "

@@ -1,10 +1,21 @@
-#line 151 "paper/figures.nw"
+#line 159 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_PRIVATE_H
 #define CONTACTOPT_PLOT_PRIVATE_H
 #include <stdio.h>
 #include "plot.h"
 #include "scene.h"
-#line 221 "paper/figures.nw"
+#include "objective.h"
+#line 395 "paper/figures.nw"
+typedef struct {
+  int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
+  double *xy;       /* 2 per node: x1, x2 [m] */
+  double *u;        /* 2 per node: u1, u2 [m] */
+} Plot_state;
+/* the state in dir/solution.vtu, of the mesh of p; STATUS_INPUT for a
+   file that is not such a state, STATUS_MEMORY */
+int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st);
+void plot_state_free(Plot_state *s);
+#line 248 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -12,9 +23,12 @@ typedef struct {
   int projected;           /* its start was projected onto B */
   int iterations;          /* its iterations */
   char state[2][1100];     /* the folders of its states: initial, final */
+  Plot_state mesh[2];      /* their meshes and displacements (results only) */
+  double start_value;      /* --start: the objective at alpha0 as given, or NaN */
 } Plot;
-#line 157 "paper/figures.nw"
+#line 167 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
+#define MARKS 33      /* the most markers along a curve of the contact surface */
 /* the lines that set up the page and the terminal of every script */
 extern const char plot_page_lines[], plot_terminal_lines[];
 /* v as gnuplot reads it back exactly; in a static buffer of 8 */
@@ -38,6 +52,12 @@ void plot_tics(FILE *f, const char *axis, double lo, double hi, double n, int fo
 void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out);
 /* a panel's plot area, in centimetres on the page */
 void plot_place(FILE *f, const char *x, const char *w, const char *y, const char *h);
+/* the width on the page of enhanced text s at pt points, in cm (an
+   estimate: DejaVu Sans averages 0.6 of its size a character) */
+double plot_text_cm(const char *s, double pt);
+/* a body w cm wide on the page, under least cm: x1 exaggerated a round
+   number of times, to about want cm (*ucm times it, *vex divided by it) */
+void plot_widen(double *ucm, double *vex, double w, double least, double want);
 /* the scripts of the two figures */
 void plot_body_figure(FILE *f, const Plot *pl, const char *out);
 void plot_results_figure(FILE *f, const Plot *pl, const char *out);

@@ -1,27 +1,100 @@
-#line 208 "paper/figures.nw"
+#line 234 "paper/figures.nw"
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1109 "paper/figures.nw"
+#line 1417 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
+#define MESHCELL 0.15 /* cm: the least cell of the mesh drawn */
+#define ARROWCELL 0.3 /* cm: the least distance between two arrows */
+#define CROSS 0.02    /* cm: a crossing of x2 = 0 that the title reports */
 typedef struct {
-  double ucm, vex;  /* cm per metre along x1; x2 exaggerated vex times */
-  int graphs;       /* rows of graphs under the three rows of bodies */
+  double ucm, vex;    /* cm per metre along x1; x2 exaggerated vex times */
+  double pw;          /* cm: a body panel's plot area, centred in its column */
+  int graphs;         /* rows of graphs under the three rows of bodies */
+  int scol, srow;     /* lines of every scol-th column, every srow-th row */
+  int acol, arow;     /* arrows at every acol-th node of every arow-th row */
+  int marks;          /* a marker at every marks-th contact node */
+  int sinks;          /* the body may move vertically: its sink is drawn unscaled */
+  double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
+  int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
+#line 1437 "paper/figures.nw"
+static int free_vertically(const Problem *p)
+{
+  Bc_kind t = p->side[SIDE_TOP].kind;
+  return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
+         && t != BC_CLAMPED && t != BC_ROLLER;
+}
+#line 1447 "paper/figures.nw"
+static double largest(const Plot_state *s, double t2)
+{
+  double m = 0;
+  for (int k = 0; k < s->ncol * s->nrow; k++) m = fmax(m, hypot(s->u[2 * k], s->u[2 * k + 1] - t2));
+  return m;
+}
 
+static double sink(const Plot_state *s)
+{
+  double t = 0, touch = 1e-6 * largest(s, 0);
+  for (int i = 0; i < s->ncol; i++)
+    if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
+  return t;
+}
+#line 1466 "paper/figures.nw"
+static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
+{
+  double m;
+  *t2 = sinks ? sink(s) : 0;
+  m = largest(s, *t2);
+  *S = m > 0 ? fmax(1, plot_nice_down(umax / m)) : 1;
+}
+
+/* the contact surface of s drawn with the factor S and the sink t2 lower than -tol */
+static int crosses(const Plot_state *s, double S, double t2, double tol)
+{
+  for (int i = 0; i < s->ncol; i++)
+    if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
+  return 0;
+}
+#line 1486 "paper/figures.nw"
+static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
+{
+  for (int j = 0; j < s->nrow; j++)
+    for (int i = 0; i < s->ncol; i++) {
+      const double *x = s->xy + 2 * (j * s->ncol + i);
+      if (i + 1 < s->ncol) *w = fmin(*w, (x[2] - x[0]) * L->ucm);
+      if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
+    }
+}
+#line 1498 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
+  double w = HUGE_VAL, h = HUGE_VAL;
   Results_page L;
   L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * p->gamma));
   L.vex = p->gamma * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (p->gamma * L.ucm));
+  plot_widen(&L.ucm, &L.vex, 1.05 * (p->b - p->a) * L.ucm, 1.2, 2.6);
+  L.pw = 1.05 * (p->b - p->a) * L.ucm;
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
+  L.sinks = free_vertically(p);
+  for (int k = 0; k < 1 + pl->optimize; k++) {
+    least_cell(&pl->mesh[k], &L, &w, &h);
+    state_scale(&pl->mesh[k], L.sinks, 0.2 * p->gamma, &L.S[k], &L.t2[k]);
+    L.below[k] = crosses(&pl->mesh[k], L.S[k], L.t2[k], CROSS / (L.ucm * L.vex));
+  }
+  L.scol = (int) fmax(1, ceil(MESHCELL / w - SLACK));
+  L.srow = (int) fmax(1, ceil(MESHCELL / h - SLACK));
+  L.acol = (int) fmax(1, ceil(ARROWCELL / w - SLACK));
+  L.arow = (int) fmax(1, ceil(ARROWCELL / h - SLACK));
+  L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1130 "paper/figures.nw"
+#line 1525 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -32,8 +105,53 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1146 "paper/figures.nw"
+#line 1542 "paper/figures.nw"
+static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
+{
+  const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
+  fprintf(f, "%.9g %.9g %.10g %.10g\n", x[0], x[1], u[0], u[1]);
+}
+
+/* row j (column: 0) or column i (1), every step nodes and the last */
+static void mesh_straight(FILE *f, const Plot_state *s, int column, int at, int step)
+{
+  int n = column ? s->nrow : s->ncol;
+  for (int k = 0; k < n; k += step) mesh_node(f, s, column ? at : k, column ? k : at);
+  if ((n - 1) % step) mesh_node(f, s, column ? at : n - 1, column ? n - 1 : at);
+  fputc('\n', f);
+}
+
+static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
+{
+  for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
+  fputc('\n', f);
+}
+#line 1573 "paper/figures.nw"
+static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
+{
+  int d = sc < sr ? sc : sr;
+  fprintf(f, "$mesh%d << EOD\n", k);
+  mesh_straight(f, s, 0, 0, 1), mesh_straight(f, s, 0, s->nrow - 1, 1);
+  mesh_straight(f, s, 1, 0, 1), mesh_straight(f, s, 1, s->ncol - 1, 1);
+  for (int j = sr; j < s->nrow - 1; j += sr) mesh_straight(f, s, 0, j, sc);
+  for (int i = sc; i < s->ncol - 1; i += sc) mesh_straight(f, s, 1, i, sr);
+  for (int i = 0; i < s->ncol - 1; i += sc) mesh_diagonal(f, s, i, 0, d);
+  for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
+  fprintf(f, "EOD\n");
+}
+
+/* the nodes that carry an arrow: every c-th of every r-th row, and the
+   last row, where the top's load acts */
+static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
+{
+  fprintf(f, "$arrows%d << EOD\n", k);
+  for (int j = 0; j < s->nrow; j = j + r < s->nrow || j == s->nrow - 1 ? j + r : s->nrow - 1)
+    for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
+  fprintf(f, "EOD\n");
+}
+#line 1602 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
+static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
   const Problem *p = &pl->s.problem;
@@ -42,7 +160,9 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
   for (int k = 0; k < 1 + pl->optimize; k++) {
     fprintf(f, "s%d = ", k);
     plot_quote(f, pl->state[k], 0);
-    fprintf(f, "                # the %s state\n", k ? "final" : "initial");
+    fprintf(f, "                # the %s state\nS%d = %s; T%d = %s     # its displacements "
+            "drawn as T + S*(u - T), T its sink\n", k ? "final" : "initial", k,
+            plot_real(L->S[k], 0), k, plot_real(L->t2[k], 6));
   }
   if (pl->optimize) fprintf(f, "opt = "), plot_quote(f, pl->args->dir, 0), fprintf(f, "\n");
   if (pl->args->start) fprintf(f, "start = "), plot_quote(f, pl->args->start, 0), fprintf(f, "\n");
@@ -52,30 +172,44 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
   fprintf(f, "ucm = %s; vex = %s              # cm per metre along x1; x2 exaggerated\n"
           "left = 2.8; colw = %s; colgap = 2.4; pw = (bxhi - bxlo)*ucm    # cm\n"
           "top = 2.4; rowgap = 2.3; graphh = %s; bodyh = (byhi - bylo)*ucm*vex\n"
-          "Wcm = left + 2*colw + colgap + 0.5\n"
+          "Wcm = %s\n"
           "graphgap = rowgap + 0.8          # between two rows of graphs, room for x labels\n"
           "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + %d*0.8 + 1.6\n",
-          plot_real(L->ucm, 6), plot_real(L->vex, 0), plot_real(COLW, 0), plot_real(GRAPHH, 0), L->graphs,
-          L->graphs > 1 ? L->graphs - 1 : 0);
+          plot_real(L->ucm, 6), plot_real(L->vex, 0), plot_real(COLW, 0), plot_real(GRAPHH, 0),
+          results_width(pl), L->graphs, L->graphs > 1 ? L->graphs - 1 : 0);
   fputs(plot_page_lines, f);
   fprintf(f, "colx(c) = left + c*(colw + colgap)         # the left edge of column c\n"
+          "bodyx(c) = colx(c) + (colw - pw)/2          # and of its body panels\n"
           "amax(x, y) = x > y ? x : y\n"
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
+  for (int k = 0; k < 1 + pl->optimize; k++) {
+    mesh_block(f, &pl->mesh[k], k, L->scol, L->srow);
+    arrow_block(f, &pl->mesh[k], k, L->acol, L->arow);
+  }
+  if (!isnan(pl->start_value))
+    fprintf(f, "$start << EOD      # %s at alpha0 as given, from start's summary.dat\n"
+            "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1182 "paper/figures.nw"
+#line 1646 "paper/figures.nw"
+static const char *results_width(const Plot *pl)
+{
+  const char *t = pl->args->title ? pl->args->title : pl->args->dir;
+  double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
+  return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
+}
+#line 1658 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
-  fprintf(f, "umax = 0.2*gamma      # the largest scaled displacement\n"
-          "round_down(x) = (p = 10**floor(log10(x)), m = x/p, "
+  fprintf(f, "round_down(x) = (p = 10**floor(log10(x)), m = x/p, "
           "(m >= 5 ? 5 : m >= 2 ? 2 : 1) * p)\n");
-  for (int k = 0; k < 1 + pl->optimize; k++)
-    fprintf(f, "stats s%d.'/nodes.dat' using (sqrt($6**2 + $7**2)) nooutput\n"
-            "S%d = STATS_max > 0 ? round_down(umax / STATS_max) : 1\n", k, k);
-  if (pl->optimize)
+  if (pl->optimize) {
     fprintf(f, "stats opt.'/history.dat' using 2 nooutput\n"
             "ee = tens(amax(abs(STATS_min), abs(STATS_max)))\n");
+    if (!*objective_unit(pl->s.optimizer.objective.kind))
+      fprintf(f, "if (ee >= -2 && ee < 3) { ee = 0 }      # dimensionless: as it is\n");
+  }
   results_power(f, pl, "pm", "pe", 6);
   fprintf(f, "plo = pm > 0 ? -0.06*pm/10.0**pe : -1\n");
   if (pl->s.problem.contact != CONTACT_FRICTIONLESS) {
@@ -95,18 +229,18 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1218 "paper/figures.nw"
+#line 1694 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
-static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
+static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
   char x[32], y[64];
-  snprintf(x, sizeof x, "colx(%d)", q->col);
+  snprintf(x, sizeof x, "bodyx(%d)", q->col);
   snprintf(y, sizeof y, "top + %d*(bodyh + rowgap)", q->row);
   plot_place(f, x, "pw", y, "bodyh");
   fprintf(f, "  set xrange [bxlo:bxhi]; set yrange [bylo:byhi]\n");
-  plot_tics(f, "x", p->a, p->b, 4, 0);
+  plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor(L->pw / 2))), 0);
   plot_tics(f, "y", 0, p->gamma, 2, 0);
   fprintf(f, "  set border 3\n");
 }
@@ -115,33 +249,102 @@ static void body_panel_place(FILE *f, const Plot *pl, const Panel *q)
 static const char *exaggerated(const Results_page *L)
 {
   static char buf[64];
-  snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
+  if (L->vex < 1) snprintf(buf, sizeof buf, ", {/:Italic x}_1 ×%g", 1 / L->vex);
+  else snprintf(buf, sizeof buf, L->vex > 1 ? ", {/:Italic x}_2 ×%g" : "", L->vex);
   return buf;
 }
-#line 1247 "paper/figures.nw"
+
+/* "every 4th" for n = 4, "every" for n = 1, in buf */
+static const char *nth(int n, char *buf, size_t size)
+{
+  int t = n % 100 >= 11 && n % 100 <= 13 ? 0 : n % 10;
+  if (n <= 1) snprintf(buf, size, "every");
+  else snprintf(buf, size, "every %d%s", n, t == 1 ? "st" : t == 2 ? "nd" : t == 3 ? "rd" : "th");
+  return buf;
+}
+
+/* the lines of the mesh left out: ", every 4th line", ", every 6th
+   column, every row", or "" for none */
+static const char *every(const Results_page *L)
+{
+  static char buf[96];
+  char c[32], r[32];
+  nth(L->scol, c, sizeof c), nth(L->srow, r, sizeof r);
+  if (L->scol == L->srow)
+    snprintf(buf, sizeof buf, L->scol > 1 ? ", %s line" : "", c);
+  else snprintf(buf, sizeof buf, ", %s column, %s row", c, r);
+  return buf;
+}
+
+/* ", one arrow in 12" for the nodes left out, "" for none */
+static const char *one_in(const Results_page *L)
+{
+  static char buf[64];
+  snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
+  return buf;
+}
+#line 1754 "paper/figures.nw"
+static const char foundation[] =
+  "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
+static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
+static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...);
 static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   int k = q->state;
-  body_panel_place(f, pl, q);
-  if (q->kind == MESH)
-    fprintf(f, "  set title '(%c) triangulation of %s%s'\n"
-            "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n"
-            "  plot s%d.'/triangles.dat' using 1:2 with lines lw 1 lc 'black' notitle\n"
-            "  unset object 1\n", q->letter, state_name[k], exaggerated(L), k);
-  if (q->kind == DEFORMED)
-    fprintf(f, "  set title sprintf('(%c) %s after deformation, displacements × %%g%s', S%d)\n"
-            "  plot s%d.'/triangles.dat' using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
-            "       s%d.'/triangles.dat' using ($1 + S%d*$3):($2 + S%d*$4) with lines lw 1 "
-            "lc '#1f4e99' notitle\n", q->letter, state_name[k], exaggerated(L), k, k, k, k, k);
-  if (q->kind == FIELD)
-    fprintf(f, "  set title sprintf('(%c) displacement field ({/:Italic u}_1, {/:Italic u}_2) "
-            "× %%g%s', S%d)\n"
-            "  plot s%d.'/triangles.dat' using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
-            "       s%d.'/nodes.dat' using 4:5:(S%d*$6):(S%d*$7) with vectors head filled "
+  body_panel_place(f, pl, L, q);
+  if (q->kind == MESH) {
+    panel_title(f, L, k, "(%c) triangulation of %s%s%s", q->letter, state_name[k],
+                exaggerated(L), every(L));
+    fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 1 lc 'black' notitle\n"
+            "  unset object 1\n", foundation, k);
+  }
+  if (q->kind == DEFORMED) {
+    deformed_title(f, L, q);
+    fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
+            "       $mesh%d using ($1 + S%d*$3):($2 + T%d + S%d*($4 - T%d)) with lines lw 1 "
+            "lc '#1f4e99' notitle\n  unset object 1; unset label 1; set format x\n", foundation, k, k, k, k, k, k);
+  }
+  if (q->kind == FIELD) {
+    panel_title(f, L, k, "(%c) displacement field %s × %%g%s%s", q->letter, L->t2[k] < 0
+                ? "less the sink" : "({/:Italic u}_1, {/:Italic u}_2)", exaggerated(L), one_in(L));
+    fprintf(f, "  plot $mesh%d using 1:2 with lines lw 0.5 lc 'gray75' notitle, \\\n"
+            "       $arrows%d using 1:2:(S%d*$3):(S%d*($4 - T%d)) with vectors head filled "
             "size cx(%g),20 \\\n           lw 1.2 lc '#b00000' notitle\n",
-            q->letter, exaggerated(L), k, k, k, k, k, VHEAD);
+            k, k, k, k, k, VHEAD);
+  }
 }
-#line 1275 "paper/figures.nw"
+#line 1791 "paper/figures.nw"
+#define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
+static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
+{
+  char t[512], shown[600];
+  va_list ap;
+  double w;
+  va_start(ap, fmt);
+  vsnprintf(t, sizeof t, fmt, ap);
+  va_end(ap);
+  snprintf(shown, sizeof shown, t, L->S[k]);
+  w = plot_text_cm(shown, 12);
+  fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
+          plot_real(fmin(1, TITLEW / w), 3));
+}
+#line 1811 "paper/figures.nw"
+static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
+{
+  int k = q->state;
+  char t[64];
+  plot_enhanced_number(L->t2[k], t, sizeof t);
+  if (L->t2[k] < 0)
+    panel_title(f, L, k, "(%c) %s deformed: sink %s m, the rest × %%g%s", q->letter,
+                state_name[k], t, exaggerated(L));
+  else
+    panel_title(f, L, k, "(%c) %s after deformation, displacements × %%g%s", q->letter,
+                state_name[k], exaggerated(L));
+  if (L->below[k])
+    fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
+            "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
+}
+#line 1832 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -150,28 +353,46 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1291 "paper/figures.nw"
-static void energy_graph(FILE *f, const Plot *pl)
+#line 1855 "paper/figures.nw"
+/* the objective in a title, its symbol on an axis */
+static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
+  static const char *const name[] = { "", "compliance ", "pressure spread ", "pressure peak " };
+  static const char *const sym[] = { "{/:Italic E_h}", "{/:Italic J_c}", "{/:Italic J_s}",
+                                     "{/:Italic J_q}" };
+  snprintf(symbol, size, "%s", sym[o->kind]);
+  snprintf(title, size, "%s%s", name[o->kind], sym[o->kind]);
+  if (o->kind == OBJECTIVE_PEAK)
+    snprintf(title, size, "%s%s, {/:Italic q} = %s", name[o->kind], sym[o->kind], plot_num(o->q));
+}
+
+static void objective_graph(FILE *f, const Plot *pl)
+{
+  const Objective *o = &pl->s.optimizer.objective;
+  const char *unit = objective_unit(o->kind);
   double step = plot_nice_up(fmax(1, pl->iterations / 2.0));
-  fprintf(f, "  set title '(d) {/:Italic E_h} against iteration'\n"
-          "  set xlabel 'iteration' offset 0, 0.4\n"
-          "  set ylabel sprintf('{/:Italic E_h} [10^{%%d} J/m]', ee)\n"
-          "  set xrange [*:*]; set autoscale xfix; set yrange [*:*]; set offsets 0.5, 0.5, 0, 0\n"
+  char title[128], sym[64];
+  objective_words(o, title, sym, sizeof title);
+  fprintf(f, "  set title '(d) %s against iteration'\n"
+          "  set xlabel 'iteration' offset 0, 0.4\n", title);
+  if (*unit) fprintf(f, "  set ylabel sprintf('%s [10^{%%d}%s]', ee)\n", sym, unit);
+  else fprintf(f, "  set ylabel (ee == 0 ? '%s' : sprintf('%s [10^{%%d}]', ee))\n", sym, sym);
+  fprintf(f, "  set xrange [*:*]; set autoscale xfix; set yrange [*:*]\n"
+          "  set offsets 0.5, 0.5, graph 0.3, 0      # room for the key above the points\n"
           "  set xtics 0, %s out nomirror; set ytics autofreq out nomirror\n"
           "  set key top right spacing 1.2\n"
           "  plot opt.'/history.dat' using 1:($2/10.0**ee) with linespoints pt 7 ps 0.6 lw 1.5 \\\n"
-          "           lc '#1f4e99' title '%s'", plot_num(step), pl->projected ?
+          "           pi %d lc '#1f4e99' title '%s'", plot_num(step),
+          (int) ceil((pl->iterations + 1.0) / MARKS), pl->projected ?
           "iterates, from {/:Italic α}^0 projected onto {/:Italic B}" : "iterates");
-  if (pl->args->start)
-    fprintf(f, ", \\\n       start.'/summary.dat' using (0):(strcol(1) eq 'energy' ? "
-            "$2/10.0**ee : NaN) \\\n           with points pt 6 ps 1.2 lc 'black' title '%s'",
-            pl->projected ? "{/:Italic α}^0 as given, outside {/:Italic B}"
-                          : "{/:Italic α}^0 as given");
+  if (!isnan(pl->start_value))
+    fprintf(f, ", \\\n       $start using 1:($2/10.0**ee) with points pt 6 ps 1.2 lc 'black' "
+            "title '%s'", pl->projected ? "{/:Italic α}^0 as given, outside {/:Italic B}"
+                                        : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1323 "paper/figures.nw"
-static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
+#line 1905 "paper/figures.nw"
+static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
   int c = q->kind == PRESSURE ? 6 : q->kind == TANGENTIAL ? 8 : 7;
@@ -190,14 +411,15 @@ static void contact_graph(FILE *f, const Plot *pl, const Panel *q)
   if (q->row < 3) fprintf(f, "  set ytics %s_step out nomirror\n", e);
   fprintf(f, q->kind == PRESSURE ? "  set key top left\n" : "  unset key\n");
   fprintf(f, "  plot s0.'/contact.dat' using 1:($%d/10.0**%s) with "
-          "linespoints pt '▷' ps 1.3 lw 1.2 \\\n           lc '#b00000' %s", c, e,
-          pl->optimize ? "title 'initial {/:Italic α}^0'" : "notitle");
+          "linespoints pt '▷' ps 1.3 lw 1.2 pi %d \\\n           lc '#b00000' %s", c, e,
+          L->marks, pl->optimize ? "title 'initial {/:Italic α}^0'" : "notitle");
   if (pl->optimize)
     fprintf(f, ", \\\n       s1.'/contact.dat' using 1:($%d/10.0**%s) with linespoints "
-            "pt '◁' ps 1.3 lw 1.2 \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'", c, e);
+            "pt '◁' ps 1.3 lw 1.2 pi %d \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'",
+            c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1354 "paper/figures.nw"
+#line 1937 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -210,10 +432,11 @@ void plot_results_figure(FILE *f, const Plot *pl, const char *out)
   for (int k = 0; k < n; k++) {
     if (q[k].kind <= FIELD) { body_panel(f, pl, &L, &q[k]); continue; }
     if (k > 0 && q[k - 1].kind <= FIELD)
-      fprintf(f, "  unset title; set border 3; set ytics autofreq; set xtics autofreq\n");
+      fprintf(f, "  unset title; set title font sprintf(',%%g', fsz)\n"
+              "  set border 3; set ytics autofreq; set xtics autofreq\n");
     graph_place(f, &q[k]);
-    if (q[k].kind == ENERGY) energy_graph(f, pl);
-    else contact_graph(f, pl, &q[k]);
+    if (q[k].kind == ENERGY) objective_graph(f, pl);
+    else contact_graph(f, pl, &L, &q[k]);
   }
   fprintf(f, "  unset multiplot\n  set output\n}\n");
 }

@@ -1,10 +1,10 @@
-#line 188 "paper/figures.nw"
+#line 205 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 369 "paper/figures.nw"
+#line 524 "paper/figures.nw"
 /* v in the fewest digits that read back as v; an integer as one (10, not 1e+01) */
 const char *plot_num(double v)
 {
@@ -21,7 +21,7 @@ const char *plot_num(double v)
   }
   return s;
 }
-#line 391 "paper/figures.nw"
+#line 546 "paper/figures.nw"
 const char *plot_real(double v, int digits)
 {
   static char buf[8][40];
@@ -32,7 +32,18 @@ const char *plot_real(double v, int digits)
   if (!strpbrk(s, ".en")) strcat(s, ".0");
   return s;
 }
-#line 405 "paper/figures.nw"
+#line 561 "paper/figures.nw"
+/* |v| of power of ten x, -2 <= x <= 3, after the sign: three significant
+   digits, or all of its integer part (1000, not 1e+03) */
+static void plain_number(double v, int x, const char *minus, char *buf, size_t size)
+{
+  char *e;
+  snprintf(buf, size, "%s%.*f", minus, x < 2 ? 2 - x : 0, fabs(v));
+  if (!strchr(buf, '.')) return;
+  for (e = buf + strlen(buf) - 1; *e == '0'; e--) *e = 0;
+  if (*e == '.') *e = 0;
+}
+
 /* v as enhanced text: -5.75e8 as −5.75·10^{8} */
 void plot_enhanced_number(double v, char *buf, size_t size)
 {
@@ -46,11 +57,11 @@ void plot_enhanced_number(double v, char *buf, size_t size)
   for (e--; *e == '0'; e--) *e = 0;          /* 5.00 -> 5. -> 5 */
   if (*e == '.') *e = 0;
   if (v == 0) snprintf(buf, size, "0");
-  else if (x >= -2 && x <= 3) snprintf(buf, size, "%s%.3g", minus, fabs(v));
+  else if (x >= -2 && x <= 3) plain_number(v, x, minus, buf, size);
   else snprintf(buf, size, "%s%s%s10^{%s%d}", minus, strcmp(m, "1") ? m : "",
                 strcmp(m, "1") ? "·" : "", x < 0 ? "−" : "", abs(x));
 }
-#line 429 "paper/figures.nw"
+#line 596 "paper/figures.nw"
 /* s between single quotes for gnuplot; enhanced: its marks escaped */
 void plot_quote(FILE *f, const char *s, int enhanced)
 {
@@ -62,7 +73,21 @@ void plot_quote(FILE *f, const char *s, int enhanced)
   }
   fputc('\'', f);
 }
-#line 446 "paper/figures.nw"
+#line 614 "paper/figures.nw"
+double plot_text_cm(const char *s, double pt)
+{
+  int n = 0;
+  for (; *s; s++) {
+    if (*s == '/' && (s[1] == ':' || s[1] == '*')) {      /* a font switch: to its blank */
+      while (*s && *s != ' ') s++;
+      if (!*s) break;
+      continue;
+    }
+    if (!strchr("{}_^@", *s) && ((unsigned char) *s & 0xC0) != 0x80) n++;
+  }
+  return n * 0.6 * pt * 2.54 / 72;
+}
+#line 633 "paper/figures.nw"
 double plot_nice_down(double x)
 {
   double p = pow(10, floor(log10(x) + SLACK)), m = x / p * (1 + SLACK);
@@ -79,7 +104,7 @@ double plot_nice(double x)
   double d = plot_nice_down(x), u = plot_nice_up(x);
   return x / d <= u / x ? d : u;
 }
-#line 471 "paper/figures.nw"
+#line 658 "paper/figures.nw"
 void plot_tics_at(FILE *f, const char *axis, double first, double step,
                     double last, int format)
 {
@@ -94,7 +119,7 @@ void plot_tics(FILE *f, const char *axis, double lo, double hi, double n, int fo
   double step = plot_nice((hi - lo) / n);
   plot_tics_at(f, axis, ceil(lo / step - SLACK) * step, step, hi, format);
 }
-#line 536 "paper/figures.nw"
+#line 723 "paper/figures.nw"
 const char plot_page_lines[] =
   "dpcm = 1600.0 / Wcm; fontpt = 12\n"
   "sx(cm) = cm / Wcm\n"
@@ -116,7 +141,16 @@ const char plot_terminal_lines[] =
   "  }\n"
   "  set output out.'.'.fmt\n"
   "  unset xlabel; unset ylabel; unset title; unset key\n";
-#line 566 "paper/figures.nw"
+#line 754 "paper/figures.nw"
+void plot_widen(double *ucm, double *vex, double w, double least, double want)
+{
+  double hex;
+  if (w >= least) return;
+  hex = plot_nice_down(want / w);
+  *ucm *= hex;
+  *vex /= hex;
+}
+#line 771 "paper/figures.nw"
 /* the head of a script: the figure, the run, and the variables of both */
 void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out)
 {
@@ -131,7 +165,7 @@ void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out
   fprintf(f, "\na = %s; b = %s; gamma = %s      # the body: a < x1 < b, x2 < gamma\n",
           plot_real(p->a, 0), plot_real(p->b, 0), plot_real(p->gamma, 0));
 }
-#line 584 "paper/figures.nw"
+#line 789 "paper/figures.nw"
 void plot_place(FILE *f, const char *x, const char *w, const char *y, const char *h)
 {
   fprintf(f, "  set lmargin at screen sx(%s); set rmargin at screen sx(%s + %s)\n"

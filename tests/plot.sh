@@ -128,6 +128,37 @@ friction = 0.3
 EOF
 steel $scenes/friction.scene
 
+# a body six times taller than wide, its left side clamped, the right free
+cat > $scenes/tall.scene <<'EOF'
+[geometry]
+a = 0
+b = 0.5
+gamma = 3
+[design]
+N = 16
+C0 = 0.01
+C1 = 0.05
+C2 = 1.4985
+initial = constant
+constant = 0.002
+[mesh]
+M = 1
+R = 8
+C0prime = 0.05
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = clamped
+[right]
+bc = free
+[top]
+bc = traction
+from = 0
+to = 0.5
+P2 = -1e8
+EOF
+
 # ---- reading a figure back ----------------------------------------------------
 # png_width FILE: the width in the PNG's header
 png_width() { od -An -tu1 -j16 -N4 "$1" | awk '{ print (($1 * 256 + $2) * 256 + $3) * 256 + $4 }'; }
@@ -156,16 +187,16 @@ plotted() {
 # ---- every shipped scene, and the user's ------------------------------------------
 for s in data/*.scene $scenes/*.scene; do
   n=$(basename $s .scene)
-  $BIN solve $s -o $TMP/$n --plot-files > /dev/null 2>&1
-  check "solve $n --plot-files exits 0" test -s $TMP/$n/summary.dat
+  $BIN solve $s -o $TMP/$n > /dev/null 2>&1
+  check "solve $n (no --plot-files) exits 0" test -s $TMP/$n/summary.dat
   plotted "solve $n" $TMP/$n
 done
 for n in example-5.1 example-5.1-tresca; do
-  $BIN optimize data/$n.scene -o $TMP/$n-opt --plot-files > /dev/null 2>&1
+  $BIN optimize data/$n.scene -o $TMP/$n-opt > /dev/null 2>&1
   plotted "optimize $n" $TMP/$n-opt
 done
 $BIN optimize $scenes/free.scene -o $TMP/free-opt --plot-files > /dev/null 2>&1
-plotted "optimize free (the user's)" $TMP/free-opt
+plotted "optimize free (the user's), with --plot-files" $TMP/free-opt
 
 # ---- what the scripts draw: the scene's axes, sides and loads ---------------------------
 script() { $BIN plot "$@" --gnuplot > $TMP/script.gp; }
@@ -230,6 +261,110 @@ rm -f $TMP/example-5.1-opt/plot-body.*
 (cd $TMP && gnuplot script.gp) 2> $TMP/err
 check "the printed script draws with gnuplot alone ($(head -c 200 $TMP/err))" figure $TMP/example-5.1-opt/plot-body
 
+# ---- panel (d) and its marker follow objective.kind ------------------------------
+# the objective of an optimisation of Example 5.1 by SLSQP, its script
+for kind in compliance pressure_spread pressure_peak; do
+  $BIN optimize data/example-5.1.scene -s objective.kind=$kind -s optimizer.method=slsqp \
+    -o $TMP/$kind > /dev/null 2>&1
+  script $TMP/$kind --results --start $TMP/example-5.1
+  cp $TMP/script.gp $TMP/$kind.gp
+done
+check "compliance: (d) names the compliance J_c in J/m, not E_h" sh -c \
+  "grep -q \"set title '(d) compliance {/:Italic J_c} against iteration'\" $TMP/compliance.gp &&
+   grep -q \"set ylabel sprintf('{/:Italic J_c} \\[10^{%d} J/m\\]', ee)\" $TMP/compliance.gp &&
+   ! grep -q 'E_h' $TMP/compliance.gp"
+check "pressure_spread: (d) names the spread J_s, with no unit (no J/m anywhere)" sh -c \
+  "grep -q \"set title '(d) pressure spread {/:Italic J_s} against iteration'\" $TMP/pressure_spread.gp &&
+   ! grep -q 'J/m' $TMP/pressure_spread.gp && ! grep -q 'E_h' $TMP/pressure_spread.gp"
+check "pressure_spread: a spread between 0.01 and 1000 is shown as it is, not in a power of ten" \
+  grep -q '^if (ee >= -2 && ee < 3) { ee = 0 }' $TMP/pressure_spread.gp
+check "pressure_peak: (d) names the peak J_q and its q = 8, with no unit" sh -c \
+  "grep -q \"(d) pressure peak {/:Italic J_q}, {/:Italic q} = 8 against\" $TMP/pressure_peak.gp &&
+   ! grep -q 'J/m' $TMP/pressure_peak.gp"
+for kind in compliance pressure_spread pressure_peak; do
+  v=$(value $kind $TMP/example-5.1)
+  check "$kind: the --start marker is the start's $kind ($v from its summary.dat), not its energy" sh -c \
+    "[ -n '$v' ] && grep -q '^\\\$start << EOD .*$kind' $TMP/$kind.gp && grep -qx '0 $v' $TMP/$kind.gp &&
+     ! grep -qx '0 $(value energy $TMP/example-5.1)' $TMP/$kind.gp"
+  $BIN plot $TMP/$kind --results --start $TMP/example-5.1 -o $TMP/$kind-fig > /dev/null 2> $TMP/err
+  check "$kind: the results figure is drawn ($(head -c 200 $TMP/err))" figure $TMP/$kind-fig
+done
+script $TMP/example-5.1-opt --results --start $TMP/example-5.1
+check "energy: (d) is E_h in J/m, and the marker the start's energy" sh -c \
+  "grep -q \"(d) {/:Italic E_h} against iteration\" $TMP/script.gp &&
+   grep -qx '0 $(value energy $TMP/example-5.1)' $TMP/script.gp"
+
+# ---- the deformed body and its contact ------------------------------------------------
+# the roller body may sink as a whole: its sink is drawn unscaled, the
+# lowest touching node on the foundation; Example 5.1, clamped on the
+# left, has none, and says that its magnified contact falls below x2 = 0
+script $TMP/roller --results
+set -- $(awk '/^S0 = / { gsub(/;/, ""); print $3, $6 }' $TMP/script.gp)
+sink=$(awk '$5 != "" && $4 <= 1e-12 && $1 !~ /^#/ { if (!n++ || $3 < m) m = $3 } END { print m }' $TMP/roller/contact.dat)
+check "rollers on both sides: the sink T0 = $2 is u2 of the highest touching node ($sink)" \
+  holds 't < 0 && abs(t - s) <= 1e-6 * abs(s)' t="$2" s="$sink"
+check "rollers on both sides: the sink drawn unscaled, the rest × $1, and the title says so" sh -c \
+  "grep -q \"deformed: sink .* m, the rest × %g', S0)\" $TMP/script.gp &&
+   grep -q 'using (\$1 + S0\*\$3):(\$2 + T0 + S0\*(\$4 - T0))' $TMP/script.gp"
+script $TMP/example-5.1 --results
+check "Example 5.1 (clamped on the left): no sink, the magnified contact said to fall below x2 = 0" sh -c \
+  "grep -q '^S0 = [0-9.]*; T0 = 0.0 ' $TMP/script.gp && grep -q 'Γ_C falls below' $TMP/script.gp &&
+   ! grep -q 'deformed: sink' $TMP/script.gp"
+
+# ---- a large mesh: thinned, drawn from the data blocks, in its own script ---------------
+$BIN solve data/example-5.1.scene -s mesh.refine=32 -o $TMP/n512 > /dev/null
+script $TMP/n512 --results
+lines=$(awk '/^\$mesh0 << EOD/ { on = 1; next } /^EOD/ { on = 0 } on && NF { n++ } END { print n + 0 }' $TMP/script.gp)
+check "N = 512: the triangulation drawn is every 8th column, every 10th row (lines 0.15 cm apart), $lines points, not the 66 177 nodes" sh -c \
+  "grep -q \"(a) triangulation of Ω({/:Italic α}^0), every 8th column, every 10th row'\" $TMP/script.gp && [ $lines -lt 12000 ]"
+check "N = 512: the arrows thinned, the contact graph marks every 16th node" sh -c \
+  "grep -q 'one arrow in [0-9]' $TMP/script.gp && grep -q \"pt '▷' ps 1.3 lw 1.2 pi 16\" $TMP/script.gp"
+check "N = 512: the title of (c), wider than its column, in a smaller font; that of (b) as it is" sh -c \
+  "grep -q \"one arrow in [0-9]*', S0) font sprintf(',%g', 0\\.[0-9]*\\*fsz)\" $TMP/script.gp &&
+   grep -q \"after deformation, displacements × %g', S0) font sprintf(',%g', 1\\.0\\*fsz)\" $TMP/script.gp"
+script $TMP/example-5.1 --results
+check "N = 16: the whole mesh and every arrow" sh -c "! grep -q 'every [0-9][0-9]*[snrt][tdh] \|one arrow in' $TMP/script.gp"
+plotted "N = 512" $TMP/n512
+script $TMP/n512 --results
+rm -f $TMP/n512/plot-results.*
+(cd $TMP && gnuplot script.gp) 2> $TMP/err
+check "N = 512: the printed script of the results, its data blocks in it, draws with gnuplot alone ($(head -c 200 $TMP/err))" \
+  figure $TMP/n512/plot-results
+
+# a body 100 m wide and 1 m high, N = 400: its columns thinned, its rows kept
+sed -e 's/^a = -2$/a = -50/' -e 's/^b = 2$/b = 50/' -e 's/^N = 16$/N = 400/' -e 's/^C2 = 3.91$/C2 = 99.99/' \
+    -e 's/^from = -2$/from = -10/' -e 's/^to = 2$/to = 10/' $scenes/roller.scene > $TMP/wide.scene
+$BIN solve $TMP/wide.scene -o $TMP/wide > /dev/null
+script $TMP/wide --results
+check "a body 100 m wide, 1 m high, N = 400: every 6th column, every row of its mesh" \
+  grep -q "(a) triangulation of Ω({/:Italic α}^0), {/:Italic x}_2 ×20, every 6th column, every row'" $TMP/script.gp
+
+# ---- titles that fit: a tall body ---------------------------------------------------------
+script $TMP/tall --body
+set -- $(awk '/^ucm = / { gsub(/;/, ""); u = $3 } /^xlo = / { gsub(/;/, ""); lo = $3; hi = $6 } END { print u, lo, hi }' $TMP/script.gp)
+check "a body 0.5 m wide, 3 m tall: its panels widened to the strip's title ($(calc '(h - l) * u' u=$1 l=$2 h=$3) cm >= 17)" \
+  holds '(h - l) * u >= 17' u=$1 l=$2 h=$3
+check "a tall body: two x1 tick marks, not five that run together" grep -q '^  set xtics 0, 0.5, 0.5 ' $TMP/script.gp
+check "a tall body: the top's name left of the arrows, clear of the load's value" \
+  grep -q "set label 'Γ@^{/\\*0.7 2}_{/\\*0.7 P}' at -0.1022" $TMP/script.gp
+check "a tall body: the names of the body and of Γ_C in its middle, clear of its clamp" sh -c \
+  "grep -q \"set label 'Ω({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp &&
+   [ \$(grep -c \"set label 'Γ_C({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp) -eq 2 ]"
+check "a tall body: its horizontal scale exaggerated twice (1.47 cm wide at true scale), and the title says so" sh -c \
+  "grep -q '^ucm = 5.86667; vex = 0.5 ' $TMP/script.gp && grep -q \"set title 'horizontal scale exaggerated ×2'\" $TMP/script.gp"
+script $TMP/tall --results
+check "a tall body: its body panels centred in their columns" sh -c \
+  "grep -q '^bodyx(c) = colx(c) + (colw - pw)/2' $TMP/script.gp && grep -q 'set lmargin at screen sx(bodyx(0))' $TMP/script.gp"
+set -- $(awk '/^ucm = / { gsub(/;/, ""); print $3, $6 }' $TMP/script.gp)
+check "a tall body: 7 cm high, its panels ($(calc '1.05 * 0.5 * u' u="$1") cm, x1 ×$(calc '1 / v' v="$2")) narrower than a column (10.8 cm)" \
+  holds 'abs(1.35 * 3 * u * v - 7) < 1e-3 && 1.05 * 0.5 * u < 10.8 && abs(v - 0.5) < 1e-12' u="$1" v="$2"
+check "a tall body: the titles of its body panels say x1 ×2" \
+  grep -q "(a) triangulation of Ω({/:Italic α}^0), {/:Italic x}_1 ×2[,']" $TMP/script.gp
+$BIN plot $TMP/tall --title "$(printf 'a very long title %.0s' 1 2 3 4 5 6)" -o $TMP/long --gnuplot > $TMP/script.gp
+set -- $(awk '/^Wcm = / { print $3 }' $TMP/script.gp)
+check "a title of 108 characters: both pages ($1, $2 cm) wider than it and its end (at 0.254 cm a character)" \
+  holds 'b >= 0.254 * (108 + 37) && r >= 0.254 * (108 + 19)' b="$1" r="$2"
+
 # ---- the names of the figures -------------------------------------------------------
 $BIN plot $TMP/example-5.1-opt --results --start $TMP/example-5.1 --title 'Example 5.1' \
   -o $TMP/fig-5.2 > /dev/null 2> $TMP/err; rc=$?
@@ -257,8 +392,23 @@ refused "the staging folder of an unfinished run" 2 'staging folder of a run tha
   $TMP/free.partial-4242/plot-body $TMP/free.partial-4242
 $BIN gradcheck data/example-5.1.scene -o $TMP/gc > /dev/null 2>&1
 refused "a folder of gradcheck" 2 'gradcheck' $TMP/gc/plot-body $TMP/gc
-$BIN solve data/example-5.1.scene -o $TMP/bare > /dev/null
-refused "a run without --plot-files" 2 'no nodes.dat: .*--plot-files' $TMP/bare/plot-body $TMP/bare
+# a state's solution.vtu missing, cut short, or of another mesh
+rm -f $TMP/free/plot-*
+mv $TMP/free/solution.vtu $TMP/free.vtu
+refused "a run whose solution.vtu is gone" 2 'not an output folder .*no solution.vtu' \
+  $TMP/free/plot-body $TMP/free
+head -c 3000 $TMP/free.vtu > $TMP/free/solution.vtu
+refused "a solution.vtu cut short" 2 'solution.vtu: cut short' $TMP/free/plot-results $TMP/free --results
+cp $TMP/roller/solution.vtu $TMP/free/solution.vtu
+refused "the solution.vtu of another mesh" 2 'solution.vtu: 85 points, where the scene.s mesh has 165' \
+  $TMP/free/plot-results $TMP/free --results
+sed 's/"LittleEndian"/"X"/; s/"BigEndian"/"LittleEndian"/; s/"X"/"BigEndian"/' $TMP/free.vtu > $TMP/free/solution.vtu
+refused "a solution.vtu of the other byte order" 2 'solution.vtu: written in the other byte order' \
+  $TMP/free/plot-results $TMP/free --results
+echo 'not a VTU file' > $TMP/free/solution.vtu
+refused "a solution.vtu that is no state" 2 'solution.vtu: not a state of contactopt' \
+  $TMP/free/plot-results $TMP/free --results
+mv $TMP/free.vtu $TMP/free/solution.vtu
 refused "--start with a run of solve" 2 'is a run of solve' $TMP/r \
   $TMP/free --results -o $TMP/r --start $TMP/example-5.1
 refused "--start naming a run of optimize" 2 'a run of optimize, not of solve' \
