@@ -264,6 +264,7 @@ static void test_endgame(void)
 {
   int found = 1, solved = 0, trials = 24;
   double worst = 0, worst_rel = 0, smallest = HUGE_VAL, worst_pred = 0;
+  double worst_round = 0, noisiest = 0;
   char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     int n = 4, m = 1 + t % 3;
@@ -278,6 +279,8 @@ static void test_endgame(void)
     double dist = distance(&k, z, d, v), pred = (double) decrease_long(&k, d, v);
     worst = fmax(worst, dist), solved++;
     worst_pred = fmax(worst_pred, fabs(rep.pred - pred) / pred);
+    worst_round = fmax(worst_round, fabs(rep.pred - pred) / rep.rounding);
+    noisiest = fmax(noisiest, rep.rounding / pred);
     if (step > 0) worst_rel = fmax(worst_rel, dist / step), smallest = fmin(smallest, step);
   }
   check(found, "the end game (n = 4 on a bound and a slope, tiny gradients): one active set meets the KKT conditions");
@@ -287,6 +290,9 @@ static void test_endgame(void)
         smallest, worst_rel);
   check(solved > 0 && worst_pred <= 1e-6, "their predicted decreases, down to 1e-20, are those "
         "of the steps (in long double) to %.1e <= 1e-6 of themselves", worst_pred);
+  check(solved > 0 && worst_round <= 1 && noisiest <= 1e-4, "their reported rounding bounds "
+        "that difference (%.2f of it at most) and shrinks with the step (at most %.1e of the "
+        "decrease <= 1e-4)", worst_round, noisiest);
 }
 
 /* ---- (2) an interior solution in closed form ----------------------------- */
