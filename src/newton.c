@@ -1,11 +1,11 @@
-#line 139 "paper/newton.nw"
+#line 140 "paper/newton.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "newton_private.h"
-#line 227 "paper/newton.nw"
+#line 228 "paper/newton.nw"
 Newton_workspace *newton_alloc(int n, int m, Status *st)
 {
   Newton_workspace *w = calloc(1, sizeof *w);
@@ -53,7 +53,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 281 "paper/newton.nw"
+#line 282 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double force_scale(const Newton_model *mdl)
 {
@@ -88,7 +88,7 @@ static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 319 "paper/newton.nw"
+#line 320 "paper/newton.nw"
 /* out = A z (p values) */
 void newton_constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out)
@@ -118,8 +118,9 @@ void newton_constraints_transposed(const Newton_workspace *w, const int *col,
     out[n + c] = -yc, out[col[c]] -= yc;
   }
 }
-#line 695 "paper/newton.nw"
+#line 696 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
+static const double NEWTON_FACE_SOFT = 1e-4;   /* the weight of a soft face */
 
 /* how far a point is from the KKT conditions, each relative to its scale:
    the rows of the design and their constraints (bounds, slopes) to the
@@ -190,14 +191,15 @@ static void face_step(Newton_workspace *w, const int *col, double om, double re)
   w->muf += dmu;
 }
 
-/* the point of the face act, refined from the iterate until two steps in
-   a row halve none of its residuals; q: how far it is from the KKT
-   conditions; -1 if the Newton matrix of the face is not positive definite */
+/* the point of the face act at the weight om, refined from the iterate
+   until two steps in a row halve none of its residuals; q: how far it is
+   from the KKT conditions; -1 if the Newton matrix of the face is not
+   positive definite */
 static int face_point(Newton_workspace *w, const int *col, double bmax,
-                      double lscale, Newton_quality *q)
+                      double om, Newton_quality *q)
 {
   int p = w->p, nm = w->n + w->m, strikes = 0;
-  double om = face_weight(w, lscale, bmax), re, sc[2];
+  double re, sc[2];
   double best[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   for (int j = 0; j < p; j++)               /* off the face: a contact's proximal weight */
     w->W[j] = w->act[j] ? om : j >= 2 * w->n + 2 * (w->n - 1) ? 1e-14 * om : 0;
@@ -219,7 +221,19 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
   }
   return 0;
 }
-
+#line 837 "paper/newton.nw"
+/* the point of the face act at the weight of face_weight and, if its
+   dual, primal or area residual stays above tol, once more at
+   NEWTON_FACE_SOFT times that weight; -1 as face_point */
+static int face_point_soft(Newton_workspace *w, const int *col, double bmax,
+                           double lscale, double tol, Newton_quality *q)
+{
+  double om = face_weight(w, lscale, bmax);
+  if (face_point(w, col, bmax, om, q)) return -1;
+  if (!q->finite || fmax(fmax(q->dual, q->primal), q->area) <= tol) return 0;
+  return face_point(w, col, bmax, NEWTON_FACE_SOFT * om, q);
+}
+#line 851 "paper/newton.nw"
 /* 1 if the point of the face passes; else the face takes the constraints
    its point violates and gives up those of negative multipliers, up to
    NEWTON_FACE_ROUNDS times, while that changes it; *singular counts the
@@ -229,7 +243,7 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
 {
   double lscale = fmax(q->scale[0], q->scale[1]);   /* the interior point's */
   for (int r = 0; r < NEWTON_FACE_ROUNDS; r++) {
-    if (face_point(w, col, bmax, lscale, q)) return ++*singular, 0;
+    if (face_point_soft(w, col, bmax, lscale, tol, q)) return ++*singular, 0;
     if (!q->finite || !(fmax(fmax(q->dual, q->primal), q->area) <= tol)) return 0;
     if (q->outside <= tol && q->negative <= tol) return 1;
     int changed = 0;
@@ -242,26 +256,34 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 878 "paper/newton.nw"
+#line 934 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
 
 /* m(0) - m(d) = -(g'd + d'Rd/2) - (T'dv + dv'S dv/2), dv = v - v0 and
-   T = S v0 - f: from the step, so that its rounding is the step's */
-static double model_decrease(const Newton_model *mdl, const double *d, const double *v)
+   T = S v0 - f: from the step, so that its rounding is the step's;
+   *round = eps times the sum of the magnitudes of its terms and of T's */
+static double model_decrease(const Newton_model *mdl, const double *d, const double *v,
+                             double *round)
 {
   int m = mdl->m;
-  double dec = 0;
-  for (int i = 0; i < mdl->n; i++) dec -= (mdl->g[i] + 0.5 * mdl->r[i] * d[i]) * d[i];
+  double dec = 0, sum = 0;
+  for (int i = 0; i < mdl->n; i++) {
+    dec -= (mdl->g[i] + 0.5 * mdl->r[i] * d[i]) * d[i];
+    sum += (fabs(mdl->g[i]) + 0.5 * mdl->r[i] * fabs(d[i])) * fabs(d[i]);
+  }
   for (int c = 0; c < m; c++) {
-    double T = -mdl->f[c], sdv = 0;
+    double T = -mdl->f[c], sdv = 0, Tabs = fabs(mdl->f[c]), sabs = 0;
     for (int e = 0; e < m; e++) {
-      T += mdl->S[(size_t) c * m + e] * mdl->v0[e];
-      sdv += mdl->S[(size_t) c * m + e] * (v[e] - mdl->v0[e]);
+      double t = mdl->S[(size_t) c * m + e] * mdl->v0[e];
+      double u = mdl->S[(size_t) c * m + e] * (v[e] - mdl->v0[e]);
+      T += t, sdv += u, Tabs += fabs(t), sabs += fabs(u);
     }
     dec -= (T + 0.5 * sdv) * (v[c] - mdl->v0[c]);
+    sum += (Tabs + 0.5 * sabs) * fabs(v[c] - mdl->v0[c]);
   }
+  *round = DBL_EPSILON * sum;
   return dec;
 }
 
@@ -318,7 +340,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 980 "paper/newton.nw"
+#line 1044 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -333,9 +355,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 953 "paper/newton.nw"
+#line 1017 "paper/newton.nw"
     
-#line 970 "paper/newton.nw"
+#line 1034 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -343,7 +365,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 954 "paper/newton.nw"
+#line 1018 "paper/newton.nw"
     if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -352,7 +374,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 999 "paper/newton.nw"
+#line 1063 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -364,9 +386,9 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 962 "paper/newton.nw"
+#line 1026 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
-  if (rep) rep->pred = model_decrease(mdl, d, v);
+  if (rep) rep->pred = model_decrease(mdl, d, v, &rep->rounding);
   return STATUS_OK;
 }

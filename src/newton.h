@@ -20,6 +20,7 @@ typedef struct {
 #line 117 "paper/newton.nw"
 typedef struct {
   double pred;         /* m(0) - m(d) >= 0, J/m */
+  double rounding;     /* of pred: eps times the magnitudes of its terms, J/m */
   int iterations;      /* of the interior point */
   double residual;     /* its largest relative residual at the end */
 } Newton_report;

@@ -1,4 +1,4 @@
-#line 179 "paper/newton.nw"
+#line 180 "paper/newton.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,7 +6,7 @@
 #include <gsl/gsl_linalg.h>
 #include "newton_private.h"
 
-#line 412 "paper/newton.nw"
+#line 413 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -84,7 +84,7 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 497 "paper/newton.nw"
+#line 498 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -113,7 +113,7 @@ void newton_bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 541 "paper/newton.nw"
+#line 542 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {

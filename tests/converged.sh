@@ -12,7 +12,8 @@
 # says why in one line.  The scenes: Example 5.1, Example 5.1 with E = 210
 # Pa (GPa meant: the command line warns; the mesh terms of the gradient
 # outweigh the contact stiffness by fifteen orders of magnitude) and with
-# E = 1e-6 Pa (where the Newton method's model fails), the
+# E = 1e-6 Pa (where the Newton method's model needs the second weight
+# of its faces, paper/newton.nw), the
 # flat start of Example 5.2 in plane strain, and four scenes of the
 # robustness suite on which SLSQP or Algorithm 4.1 does not converge in
 # its 200 iterations.

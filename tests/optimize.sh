@@ -124,17 +124,26 @@ unconverged "newton without progress" no_progress -s solver.state=cgssor -s solv
 check "newton without progress: said within 20 iterations, the trust region's step below the design's rounding ($(value iterations $TMP/uc) it)" \
   holds 'it <= 20 && ok' it="$(value iterations $TMP/uc)" \
     ok=$(grep -q "below the rounding of the design" $TMP/err && echo 1 || echo 0)
-# a model problem that fails at every iteration: Example 5.1 with E = 1e-6
-# Pa, where the model's interior point ends with a stationarity of 6e-12
-# of its scale against its tolerance 1e-12 (the command line warns of the
-# displacement); the Newton method
-# says so after three such iterations (paper/opt.nw, "The end without
-# progress")
+# a model problem that fails at every iteration: Example 5.1 with E =
+# 1e-12 Pa, where the model's interior point ends with a stationarity
+# above its tolerance 1e-12 of its scale at both weights of its faces (the
+# command line warns of the displacement); the Newton method says so after
+# three such iterations (paper/opt.nw, "The end without progress")
 rm -rf $TMP/uc
-$BIN optimize data/example-5.1.scene -o $TMP/uc -s material.E=1e-6 >/dev/null 2>$TMP/err; rc=$?
-check "newton, its model failing (E = 1e-6 Pa): exit $rc, no_progress after $(value iterations $TMP/uc) iterations, the model's failure named ($(grep -v warning $TMP/err | cut -c1-160)...)" \
+$BIN optimize data/example-5.1.scene -o $TMP/uc -s material.E=1e-12 >/dev/null 2>$TMP/err; rc=$?
+check "newton, its model failing (E = 1e-12 Pa): exit $rc, no_progress after $(value iterations $TMP/uc) iterations, the model's failure named ($(grep -v warning $TMP/err | cut -c1-160)...)" \
   holds 'rc == 3 && it <= 5 && ok' rc=$rc it="$(value iterations $TMP/uc)" \
     ok=$([ "$(value stop_reason $TMP/uc)" = no_progress ] && grep -q "the model problem failed in 3 iterations in a row; the last: newton: " $TMP/err && echo 1 || echo 0)
+# with E = 1e-6 Pa the model is solved at the second weight of its face
+# (paper/newton.nw, "A soft face"): the Newton method converges to the
+# energy of Algorithm 4.1 (to 1e-12: both reach pi near rounding)
+for m in newton projgrad; do
+  rm -rf $TMP/e6-$m
+  $BIN optimize data/example-5.1.scene -o $TMP/e6-$m -s material.E=1e-6 -s optimizer.method=$m >/dev/null 2>$TMP/err
+done
+check "newton with E = 1e-6 Pa: $(value stop_reason $TMP/e6-newton) after $(value iterations $TMP/e6-newton) iterations, E* = $(value energy $TMP/e6-newton) J/m, that of projgrad ($(value energy $TMP/e6-projgrad), rel. $(rel "$(value energy $TMP/e6-newton)" "$(value energy $TMP/e6-projgrad)"))" \
+  holds 'c == 1 && abs(a - b) <= 1e-12 * abs(b)' c="$([ "$(value stop_reason $TMP/e6-newton)" = converged ] && echo 1 || echo 0)" \
+    a="$(value energy $TMP/e6-newton)" b="$(value energy $TMP/e6-projgrad)"
 # a tolerance below what the rounding of E allows (pi reaches about 2e-14
 # under the Newton method, 1e-9 to 2e-8 under SLSQP, 4e-8 to 1.4e-7 under
 # Algorithm 4.1, depending on the kernel): each optimiser stops no_progress

@@ -7,7 +7,9 @@
    (3) NLopt's SLSQP on problems of 13 design nodes; (4) the scale of the
    data (E times 1e7 and 1e-7) does not change the step; (5) hundreds of
    random problems, down to a curvature of 1e-10 of the contact's, all
-   solved; (6) every documented error provoked once.  No comparison reads
+   solved; (6) every documented error provoked once; (7) models of a
+   strip that bends, whose forces are far below the stiffness's terms,
+   all solved.  No comparison reads
    the result of a solve that failed. */
 #include <math.h>
 #include <stdint.h>
@@ -264,6 +266,7 @@ static void test_endgame(void)
 {
   int found = 1, solved = 0, trials = 24;
   double worst = 0, worst_rel = 0, smallest = HUGE_VAL, worst_pred = 0;
+  double worst_round = 0, noisiest = 0;
   char msg[MSG] = "";
   for (int t = 0; t < trials; t++) {
     int n = 4, m = 1 + t % 3;
@@ -278,6 +281,8 @@ static void test_endgame(void)
     double dist = distance(&k, z, d, v), pred = (double) decrease_long(&k, d, v);
     worst = fmax(worst, dist), solved++;
     worst_pred = fmax(worst_pred, fabs(rep.pred - pred) / pred);
+    worst_round = fmax(worst_round, fabs(rep.pred - pred) / rep.rounding);
+    noisiest = fmax(noisiest, rep.rounding / pred);
     if (step > 0) worst_rel = fmax(worst_rel, dist / step), smallest = fmin(smallest, step);
   }
   check(found, "the end game (n = 4 on a bound and a slope, tiny gradients): one active set meets the KKT conditions");
@@ -287,6 +292,9 @@ static void test_endgame(void)
         smallest, worst_rel);
   check(solved > 0 && worst_pred <= 1e-6, "their predicted decreases, down to 1e-20, are those "
         "of the steps (in long double) to %.1e <= 1e-6 of themselves", worst_pred);
+  check(solved > 0 && worst_round <= 1 && noisiest <= 1e-4, "their reported rounding bounds "
+        "that difference (%.2f of it at most) and shrinks with the step (at most %.1e of the "
+        "decrease <= 1e-4)", worst_round, noisiest);
 }
 
 /* ---- (2) an interior solution in closed form ----------------------------- */
@@ -575,6 +583,69 @@ static void test_errors(void)
         "one design node: STATUS_INPUT \"%s\"", st.msg);
 }
 
+/* ---- (7) a strip that bends (paper/newton.nw, "A soft face") ----------- */
+
+/* n design nodes, C0 = 1, a contact unknown at each inner node, all of
+   them touching: S the fourth difference of a beam clamped at both ends
+   over 6 (diagonal 1, softest mode about (pi / n)^4), forces T of `load`
+   to 1.5 load, the design's curvature rho and gradient within +-load:
+   the forces are those of S v's terms less by the factor load, as on a
+   thin strip in contact (its design rows that much below its contact
+   rows) */
+static int bending_solve(int n, double rho, double load, Newton_report *rep, char *msg)
+{
+  int m = n - 2, rc = STATUS_MEMORY;
+  int *col = malloc(m * sizeof *col);
+  double *a = malloc(((size_t) 4 * n + 3 * m + (size_t) m * m) * sizeof *a);
+  Newton_workspace *w = newton_alloc(n, m, NULL);
+  if (!col || !a || !w) {
+    if (!*msg) snprintf(msg, MSG, "out of memory");
+    goto done;
+  }
+  double *X = a, *g = X + n, *r = g + n, *d = r + n, *f = d + n, *v0 = f + m, *v = v0 + m, *S = v + m;
+  Design_set B = { n - 1, 1.0 / (n - 1), 1.0, 1.0 / (n - 1), 0 };
+  double phase = 6.28 * uniform();
+  for (int i = 0; i < n; i++) X[i] = 0.5 + 0.2 * sin(M_PI * i / (n - 1) + phase);
+  for (int i = 0; i + 1 < n; i++) B.area += B.h * (X[i] + X[i + 1]) / 2;
+  memset(S, 0, (size_t) m * m * sizeof *S);
+  for (int c = 0; c < m; c++) {
+    const double st[5] = { 1, -4, 6, -4, 1 };
+    for (int k = -2; k <= 2; k++)
+      if (c + k >= 0 && c + k < m) S[(size_t) c * m + c + k] = st[k + 2] / 6;
+    col[c] = c + 1, v0[c] = -X[c + 1];
+  }
+  for (int c = 0; c < m; c++) {            /* f = S v0 - T */
+    double sv = 0;
+    for (int e = 0; e < m; e++) sv += S[(size_t) c * m + e] * v0[e];
+    f[c] = sv - load * (1 + 0.5 * uniform());
+  }
+  for (int i = 0; i < n; i++) g[i] = load * (2 * uniform() - 1), r[i] = rho;
+  for (int c = 0; c < m; c++) g[col[c]] += load;
+  Newton_model mdl = { n, m, col, X, &B, g, r, S, f, v0 };
+  Status st = { STATUS_OK, "" };
+  rc = newton_solve(w, &mdl, d, v, rep, &st);
+  if (rc && !*msg) snprintf(msg, MSG, "%s", st.msg);
+done:
+  newton_free(w), free(col), free(a);
+  return rc;
+}
+
+static void test_bending(void)
+{
+  int solved = 0, trials = 20;
+  double worst = 0;
+  char msg[MSG] = "";
+  for (int t = 0; t < trials; t++) {
+    Newton_report rep;
+    if (bending_solve(201, 1e-9, 1e-9, &rep, msg)) continue;
+    solved++, worst = fmin(worst, rep.pred + rep.rounding);
+  }
+  check(solved == trials, "a strip that bends (n = 201, 199 contact unknowns, forces 1e-9 of "
+        "the stiffness, rho = 1e-9): all %d models solved (%d) %s", trials, solved, msg);
+  check(solved > 0 && worst >= 0, "their predicted decreases are not negative beyond their "
+        "rounding (%.1e)", worst);
+}
+
 int main(void)
 {
   gsl_set_error_handler_off();
@@ -585,5 +656,6 @@ int main(void)
   test_scale();
   test_robust();
   test_errors();
+  test_bending();
   return check_done();
 }
