@@ -270,7 +270,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1577 "paper/opt.nw"
+#line 1580 "paper/opt.nw"
 Objective_kind kind = ev->o->objective.kind;
 if (r > 0 && (kind == OBJECTIVE_ENERGY || kind == OBJECTIVE_COMPLIANCE))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
