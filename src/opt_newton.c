@@ -5,7 +5,7 @@
 #include <string.h>
 #include "opt_private.h"
 #include "newton.h"
-#line 1620 "paper/opt.nw"
+#line 1663 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   Newton_workspace *solver; /* the model problem's solver */
@@ -24,7 +24,7 @@ typedef struct {
   int sick;               /* iterations in a row whose model failed */
   char failure[400];      /* what the last model that failed measured */
 } Newton_run;
-#line 1646 "paper/opt.nw"
+#line 1689 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Evaluator *ev = nr->ev;
@@ -46,14 +46,14 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   nr->Ek = ev->J, nr->noisek = ev->noise;
   
-#line 1824 "paper/opt.nw"
+#line 1867 "paper/opt.nw"
 double G2 = 0, rmin = HUGE_VAL;
 for (int i = 0; i < n; i++) G2 += ev->G[i] * ev->G[i], rmin = fmin(rmin, nr->r[i]);
 nr->rho_max = 2 * sqrt(G2) / (DBL_EPSILON * ev->B->C0 * rmin);
-#line 1667 "paper/opt.nw"
+#line 1710 "paper/opt.nw"
   return STATUS_OK;
 }
-#line 1733 "paper/opt.nw"
+#line 1776 "paper/opt.nw"
 /* eps times the sum of the magnitudes of the terms of m(0, v0) and m(d, v),
    with the curvature rho r the model was solved with */
 static double model_rounding(const Newton_run *nr)
@@ -72,7 +72,7 @@ static double model_rounding(const Newton_run *nr)
   }
   return DBL_EPSILON * sum;
 }
-#line 1675 "paper/opt.nw"
+#line 1718 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Evaluator *ev = nr->ev;
@@ -101,7 +101,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (ratio > 0.75 && ared > Enoise) nr->rho = fmax(nr->rho / 8, 1e-15);
   return STATUS_OK;
 }
-#line 1855 "paper/opt.nw"
+#line 1898 "paper/opt.nw"
 static void newton_why(const Newton_run *nr)
 {
   char *s = nr->ev->rep->stop_detail;
@@ -118,7 +118,7 @@ static void newton_why(const Newton_run *nr)
     snprintf(s, z, "the model problem failed in %d iterations in a row; "
              "the last: %s", nr->sick, nr->failure);
 }
-#line 1833 "paper/opt.nw"
+#line 1876 "paper/opt.nw"
 /* 1 when the run ends at this trial, its stop reason in the report */
 static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
 {
@@ -138,7 +138,7 @@ static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
   if (!strcmp(why, "no_progress")) newton_why(nr);
   return 1;
 }
-#line 1878 "paper/opt.nw"
+#line 1921 "paper/opt.nw"
 int opt_newton(Evaluator *ev, double *X)
 {
   int n = ev->n, m = model_contact_count(ev->md), rc = STATUS_OK, k = 0, accepted = 1;
@@ -156,7 +156,7 @@ int opt_newton(Evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 1916 "paper/opt.nw"
+#line 1959 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.solver), free(nr.S);
   return rc;
@@ -164,7 +164,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 1895 "paper/opt.nw"
+#line 1938 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
