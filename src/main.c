@@ -358,12 +358,96 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   return STATUS_OK;
 }
 #line 881 "paper/main.nw"
+/* the value of the run's objective at the model's state */
+static double optimize_value(Run *r, Status *st)
+{
+  const Objective *J = &r->s.optimizer.objective;
+  double v = r->md->energy;
+  if (J->kind != OBJECTIVE_ENERGY && objective_value(r->md, J, &v, st)) v = NAN;
+  return v;
+}
+
+/* one start k of the K: X its design on entry, its optimum on return;
+   *v its value (NaN where it failed, with a line saying why) */
+static int optimize_one_start(Run *r, const Design_set *B, int k, double *X,
+                              Opt_report *rk, double *v, Status *st)
+{
+  const Opt_options *o = &r->s.optimizer;
+  int rc = k > 0 ? opt_start_design(B, k, X, st) : STATUS_OK;
+  if (!rc) rc = opt_minimize(r->md, B, o, X, coarse_monitor, NULL, rk, st);
+  *v = rc ? NAN : optimize_value(r, st);
+  if (rc == STATUS_NUMERIC || (!rc && isnan(*v))) {
+    printf("%s: start %d of %d failed: %s\n", r->s.path, k + 1, o->starts, st->msg);
+    *st = (Status) { STATUS_OK, "" };
+    return STATUS_OK;
+  }
+  if (!rc)
+    printf("%s: start %d of %d: %s = %.12g%s (%s after %d iterations)\n", r->s.path,
+           k + 1, o->starts, objective_symbol(o->objective.kind), *v,
+           objective_unit(o->objective.kind), rk->stop_reason, rk->iterations);
+  return rc;
+}
+#line 913 "paper/main.nw"
+/* X = the lowest optimum of the K starts (X the first on entry); sr
+   their report (starts 1 and no cost when K = 1) */
+static int optimize_starts(Run *r, const Design_set *B, double *X,
+                           Opt_report *sr, Status *st)
+{
+  int K = r->s.optimizer.starts, n = B->N + 1, rc = STATUS_OK;
+  memset(sr, 0, sizeof *sr);
+  sr->starts = 1, sr->starts_min = sr->starts_max = NAN;
+  if (K < 2) return STATUS_OK;
+  double *Y = malloc(2 * n * sizeof *Y), *X0 = Y + n, t0 = resources_clock();
+  if (!Y) return status_set(st, STATUS_MEMORY, "optimize: out of memory");
+  memcpy(X0, X, n * sizeof *X);
+  for (int k = 0; k < K && !rc; k++) {
+    Opt_report rk;
+    double v;
+    memcpy(Y, X0, n * sizeof *Y);
+    if ((rc = optimize_one_start(r, B, k, Y, &rk, &v, st))) break;
+    sr->starts_evaluations += rk.evaluations;
+    
+#line 943 "paper/main.nw"
+if (!isnan(v) && (isnan(sr->starts_min) || v < sr->starts_min))
+  sr->starts_min = v, sr->starts_best = k + 1, memcpy(X, Y, n * sizeof *X);
+if (!isnan(v) && (isnan(sr->starts_max) || v > sr->starts_max)) sr->starts_max = v;
+#line 932 "paper/main.nw"
+    if (!strcmp(rk.stop_reason, "interrupted")) break;
+  }
+  sr->starts = K;
+  sr->starts_seconds = resources_clock() - t0;
+  
+#line 949 "paper/main.nw"
+if (!rc && sr->starts_best)
+  printf("%s: %d starts: %s from %.12g to %.12g%s (spread %.2e relative); the "
+         "run goes on from start %d\n", r->s.path, K,
+         objective_symbol(r->s.optimizer.objective.kind), sr->starts_min,
+         sr->starts_max, objective_unit(r->s.optimizer.objective.kind),
+         sr->starts_min ? (sr->starts_max - sr->starts_min) / fabs(sr->starts_min) : 0,
+         sr->starts_best);
+else if (!rc)
+  printf("%s: %d starts: none ended; the run goes on from the first\n", r->s.path, K);
+#line 937 "paper/main.nw"
+  free(Y);
+  return rc;
+}
+#line 962 "paper/main.nw"
+static int optimize_report_starts(Opt_report *rep, const Opt_report *sr)
+{
+  rep->starts = sr->starts, rep->starts_best = sr->starts_best;
+  rep->starts_min = sr->starts_min, rep->starts_max = sr->starts_max;
+  rep->starts_evaluations = sr->starts_evaluations;
+  rep->starts_seconds = sr->starts_seconds;
+  rep->seconds += sr->starts_seconds;
+  return STATUS_OK;
+}
+#line 982 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
   Output o;
   Output_start start;
-  Opt_report rep, coarse;
+  Opt_report rep, coarse, starts;
   int n = r->s.problem.N + 1, rc;
   double *X = malloc(2 * n * sizeof *X), *G = X ? X + n : NULL, moved;
   Output_history *h = output_history_new(n, st);
@@ -386,8 +470,10 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = output_start(&o, r->md, X, moved,
                                               r->s.optimizer.objective.q, &start, st))
         && !(rc = optimize_coarse(r, X, &coarse, st))
+        && !(rc = optimize_starts(r, &B, X, &starts, st))
         && !(rc = opt_minimize(r->md, &B, &r->s.optimizer, X, monitor, h, &rep, st))
         && !(rc = optimize_report_coarse(&rep, &coarse))
+        && !(rc = optimize_report_starts(&rep, &starts))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
         && !(rc = J->kind == OBJECTIVE_ENERGY ? grad_energy(r->md, G, st)
@@ -422,7 +508,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 955 "paper/main.nw"
+#line 1058 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -441,7 +527,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 985 "paper/main.nw"
+#line 1088 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -457,7 +543,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1013 "paper/main.nw"
+#line 1116 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

@@ -22,9 +22,11 @@ typedef struct {
                              energy only */
   int levels;             /* meshes of the coarse-to-fine start
                              (sec:levels): 1 none, 0 chosen by N */
+  int starts;             /* runs from K starts, the best kept
+                             (sec:starts): 1 the scene's only */
 } Opt_options;
 
-#line 203 "paper/opt.nw"
+#line 205 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double value;           /* the objective at the iterate, E by default */
@@ -38,7 +40,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 219 "paper/opt.nw"
+#line 221 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -53,12 +55,20 @@ typedef struct {
   double model_seconds;   /* of it, building and solving Newton's models */
   double state_seconds;   /* of it, state solves and gradients */
   double monitor_seconds; /* of it, in the caller's monitor (its output) */
+  double subproblem_seconds; /* of it, inside NLopt (SLSQP, MMA) between
+                             its calls of the objective and constraints:
+                             its subproblems and updates */
   int levels;             /* meshes of a coarse-to-fine start, 1 without */
   int coarse_evaluations; /* evaluations on the coarse meshes */
   double coarse_seconds;  /* their wall time, part of seconds */
+  int starts;             /* starts of a multistart run, 1 without */
+  int starts_best;        /* the start whose optimum the run went on from */
+  double starts_min, starts_max; /* the lowest and highest J they ended at */
+  int starts_evaluations; /* their evaluations, apart from evaluations */
+  double starts_seconds;  /* their wall time, part of seconds */
 } Opt_report;
 
-#line 240 "paper/opt.nw"
+#line 250 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 (the scene raises it for objectives other than the energy) */
 Opt_options opt_options_default(Opt_method method);
@@ -82,6 +92,8 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
                      const Opt_options *o, int levels, double *X, Model *fine,
                      Opt_monitor stop, cholmod_common *cm, Opt_report *coarse,
                      Status *st);
+/* X (N + 1) = the k-th of the spread starts in B (sec:starts), k >= 1 */
+int opt_start_design(const Design_set *B, int k, double *X, Status *st);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);

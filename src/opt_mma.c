@@ -1,4 +1,4 @@
-#line 344 "paper/opt.nw"
+#line 356 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,7 +6,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1160 "paper/opt.nw"
+#line 1199 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -21,14 +21,18 @@ typedef struct {
   char *fixed, *faces;    /* 4n - 2 each: the faces fixed at the start, at
                              the last iterate (1 each, in opt_constraints' order) */
   double *X, *w;          /* n each: work */
+  int *rows, nrows;       /* 4n - 2: the inequalities that vary with y, as
+                             many as nrows, passed to NLopt (below) */
+  double *c;              /* 4n - 2: work, all inequalities */
   double best, best_noise;  /* the lowest J of an iterate, its rounding */
   double *bestX;          /* n: the last accepted iterate */
   int k;                  /* accepted iterates so far */
   int stalled;            /* evaluations since the last accepted one */
   int fresh;              /* iterates accepted since MMA (re)started */
+  double outside;         /* seconds in this file's callbacks, this start */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1184 "paper/opt.nw"
+#line 1227 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -49,28 +53,40 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
   for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1208 "paper/opt.nw"
+#line 1253 "paper/opt.nw"
+/* g (ny) = d c_k / d y for the inequality k of opt_constraints; its
+   largest entry */
+static double mma_row(const Mma *q, int k, double *g)
+{
+  int n = q->n, ny = q->ny, i = k < 2 * n ? k / 2 : (k - 2 * n) / 2;
+  double sign = k % 2 ? 1 : -1, top = 0;
+  const double *Ri = q->R + (size_t) i * ny, *Rj = Ri + ny;
+  for (int j = 0; j < ny; j++) {
+    g[j] = k < 2 * n ? sign * Ri[j] : -sign * (Rj[j] - Ri[j]);
+    top = fmax(top, fabs(g[j]));
+  }
+  return top;
+}
+
 static void mma_constraints(unsigned m, double *c, unsigned ny,
                             const double *y, double *grad, void *data)
 {
   Mma *q = data;
-  const Design_set *B = q->ev->B;
-  const double *R = q->R;
-  unsigned n = q->n;
-  double *X = q->w;
+  double *X = q->w, start = resources_clock();
   mma_design(q, y, X);
-  opt_constraints(B, X, n, c);
-  if (grad) opt_constraints_gradient(R, n, ny, grad);
-  for (unsigned i = 0; i < m; i++)
-    if (q->fixed[i]) c[i] = -1;       /* met by every y; its gradient is 0 */
+  opt_constraints(q->ev->B, X, q->n, q->c);
+  for (unsigned r = 0; r < m; r++) {
+    c[r] = q->c[q->rows[r]];
+    if (grad) mma_row(q, q->rows[r], grad + (size_t) r * ny);
+  }
+  q->outside += resources_clock() - start;
 }
-#line 1234 "paper/opt.nw"
+#line 1292 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static int mma_faces(Mma *q, const double *X, char *face);
-static double mma_objective(unsigned ny, const double *y, double *grad,
-                            void *data)
+/* J(X(y)) / sigma, and its gradient in y */
+static double mma_value(Mma *q, const double *y, double *grad)
 {
-  Mma *q = data;
   Evaluator *ev = q->ev;
   mma_design(q, y, q->X);
   if (design_violation(ev->B, q->X) > 0
@@ -83,10 +99,19 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   if (ev->J <= q->best + q->best_noise + ev->noise
       && (q->k == 0 || memcmp(ev->X, q->bestX, q->n * sizeof *ev->X))) mma_accept(q);
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
-  (void) ny;
   return ev->J / q->scale;
 }
-#line 1258 "paper/opt.nw"
+#line 1316 "paper/opt.nw"
+static double mma_objective(unsigned ny, const double *y, double *grad,
+                            void *data)
+{
+  Mma *q = data;
+  double start = resources_clock(), J = mma_value(q, y, grad);
+  q->outside += resources_clock() - start;
+  (void) ny;
+  return J;
+}
+#line 1328 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -106,7 +131,7 @@ static void mma_accept(Mma *q)
   else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1282 "paper/opt.nw"
+#line 1352 "paper/opt.nw"
 /* face[c] = 1 for each inequality c of opt_constraints on which X lies,
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
@@ -128,7 +153,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1312 "paper/opt.nw"
+#line 1382 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -161,9 +186,10 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1347 "paper/opt.nw"
+#line 1417 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
+static void mma_varying(Mma *q);
 /* the faces, Z, R and sigma at X, the evaluator's design */
 static int mma_setup(Mma *q, const double *X)
 {
@@ -171,13 +197,16 @@ static int mma_setup(Mma *q, const double *X)
   double Gmax = 0;
   memcpy(q->X0, X, n * sizeof *X);
   if ((rc = mma_faces(q, X, q->fixed)) || (rc = mma_basis(q)) || q->ny == 0) return rc;
-  if (q->ev->o->metric == OPT_METRIC_SCHUR) return mma_schur(q);
-  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(q->ev->G[i]));
-  memcpy(q->R, q->Z, (size_t) n * q->ny * sizeof *q->R);
-  q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
-  return STATUS_OK;
+  if (q->ev->o->metric == OPT_METRIC_SCHUR) rc = mma_schur(q);
+  else {
+    for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(q->ev->G[i]));
+    memcpy(q->R, q->Z, (size_t) n * q->ny * sizeof *q->R);
+    q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
+  }
+  if (!rc) mma_varying(q);
+  return rc;
 }
-#line 1368 "paper/opt.nw"
+#line 1442 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
@@ -193,7 +222,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1392 "paper/opt.nw"
+#line 1466 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -207,43 +236,45 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1383 "paper/opt.nw"
+#line 1457 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1412 "paper/opt.nw"
+#line 1486 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
   int n = ev->n, rc = STATUS_OK;
   size_t nn = (size_t) n * n;
-  double *work = malloc((3 * nn + 8 * (size_t) n + 2) * sizeof *work);
+  double *work = malloc((3 * nn + 12 * (size_t) n + 2) * sizeof *work);
   Mma q = { .ev = ev, .n = n, .best = HUGE_VAL, .bestX = X,
             .fixed = malloc(8 * (size_t) n), .A = gsl_matrix_alloc(n, 2 * n),
-            .mult = design_multipliers_new(ev->B, ev->st) };
-  if (!work || !q.fixed || !q.A || !q.mult)
+            .mult = design_multipliers_new(ev->B, ev->st),
+            .rows = malloc(4 * (size_t) n * sizeof(int)) };
+  if (!work || !q.fixed || !q.A || !q.mult || !q.rows)
     rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (int more = !rc; more && !rc; ) {
     q.S = work, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
     q.X = q.X0 + n, q.w = q.X + n, q.faces = q.fixed + 4 * n;
     double *y = q.w + n, *tol = y + n;          /* n - 1 and 4n - 2 */
+    q.c = tol + 4 * n;                          /* 4n - 2 */
     if ((rc = opt_evaluate(ev, X)) || (rc = mma_setup(&q, X))) break;
     rc = mma_run(&q, y, tol, &more);
   }
-  free(work), free(q.fixed), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
+  free(work), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1437 "paper/opt.nw"
+#line 1513 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
-  int n = q->n, m = 2 * n + 2 * (n - 1), rc = STATUS_OK;
+  int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1460 "paper/opt.nw"
+#line 1540 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -251,7 +282,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1443 "paper/opt.nw"
+#line 1519 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -259,10 +290,19 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   nlopt_result r = nlopt_add_inequality_mconstraint(q->opt, m, mma_constraints, q, tol);
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
+  
+#line 1623 "paper/opt.nw"
+Objective_kind kind = ev->o->objective.kind;
+if (r > 0 && (kind == OBJECTIVE_ENERGY || kind == OBJECTIVE_COMPLIANCE))
+  r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
+#line 1527 "paper/opt.nw"
+  double start = resources_clock();
+  q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
+  ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1472 "paper/opt.nw"
+#line 1552 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -278,6 +318,17 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1453 "paper/opt.nw"
+#line 1533 "paper/opt.nw"
   return rc;
+}
+#line 1610 "paper/opt.nw"
+/* rows: the inequalities whose gradient in y is not zero (to rounding) */
+static void mma_varying(Mma *q)
+{
+  int m = 4 * q->n - 2;
+  double top = 0, *g = q->X;         /* ny <= n: the row, in work */
+  for (int k = 0; k < m; k++) top = fmax(top, mma_row(q, k, g));
+  q->nrows = 0;
+  for (int k = 0; k < m; k++)
+    if (!q->fixed[k] && mma_row(q, k, g) > 1e-12 * top) q->rows[q->nrows++] = k;
 }

@@ -1,9 +1,9 @@
-#line 290 "paper/opt.nw"
+#line 302 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_PRIVATE_H
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 408 "paper/opt.nw"
+#line 420 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -25,12 +25,14 @@ typedef struct {
   double last_J, last_noise; /* J and its rounding at the last accepted iterate */
   double pg_best;         /* the smallest pi of the accepted iterates */
   int idle;               /* accepted iterates in a row without measured progress */
+  double idle_J;          /* J before those iterates */
+  double pg_last;         /* pi at the last accepted iterate */
   double *Xacc;           /* n: the last accepted iterate */
   int accepted;           /* iterates reported so far */
   int lifted;             /* the last evaluation failed: the body lifts off */
 } Evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
-#line 295 "paper/opt.nw"
+#line 307 "paper/opt.nw"
 /* solve the state at X, then E and grad E, unless X was the last design */
 int opt_evaluate(Evaluator *ev, const double *X);
 /* report the accepted iterate at the evaluator's design; 1 if the

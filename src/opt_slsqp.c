@@ -1,4 +1,4 @@
-#line 331 "paper/opt.nw"
+#line 343 "paper/opt.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,14 +6,14 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 735 "paper/opt.nw"
+#line 759 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 885 "paper/opt.nw"
+#line 911 "paper/opt.nw"
 typedef struct {
   Evaluator *ev;
   nlopt_opt opt;
@@ -24,10 +24,11 @@ typedef struct {
   int k;                  /* accepted iterates so far */
   int stalled;            /* evaluations since the last accepted one */
   int fresh;              /* iterates accepted since SLSQP (re)started */
+  double outside;         /* seconds in this file's callbacks, this start */
 } Slsqp;
 enum { STALL = 10 };
 static const double OPT_IN_B = 1e-12;   /* a violation of B that is rounding */
-#line 744 "paper/opt.nw"
+#line 768 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -39,26 +40,27 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 759 "paper/opt.nw"
+#line 783 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
-  const Slsqp *q = data;
+  Slsqp *q = data;
   const Design_set *B = q->ev->B;
   const double *R = q->metric.R;
-  double X[n];
+  double X[n], start = resources_clock();
   metric_design(&q->metric, B->C0, y, X);
   opt_constraints(B, X, n, c);
   if (grad) opt_constraints_gradient(R, n, n, grad);
+  q->outside += resources_clock() - start;
   (void) m;
 }
-#line 814 "paper/opt.nw"
+#line 839 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
-  const Slsqp *q = data;
+  Slsqp *q = data;
   const Design_set *B = q->ev->B;
-  double L = B->h * B->N, X[n], sum = 0;
+  double L = B->h * B->N, X[n], sum = 0, start = resources_clock();
   metric_design(&q->metric, B->C0, y, X);
   for (unsigned i = 0; i < n; i++) sum += (i == 0 || i + 1 == n ? 0.5 : 1.0) * X[i];
   if (grad)
@@ -68,15 +70,16 @@ static double area_constraint(unsigned n, const double *y, double *grad,
         g += (i == 0 || i + 1 == n ? 0.5 : 1.0) * q->metric.R[i * n + j];
       grad[j] = g * B->h / L;
     }
+  q->outside += resources_clock() - start;
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 902 "paper/opt.nw"
+#line 929 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 911 "paper/opt.nw"
+#line 938 "paper/opt.nw"
 /* delta E + C0 v |grad E|_1 at the evaluator's design, v its violation of B */
 static double slsqp_band(const Evaluator *ev, double v)
 {
@@ -86,10 +89,9 @@ static double slsqp_band(const Evaluator *ev, double v)
 }
 
 static void slsqp_accept(Slsqp *q, double band);
-static double slsqp_objective(unsigned n, const double *y, double *grad,
-                              void *data)
+/* E(X(y)) / sigma, and its gradient in y */
+static double slsqp_value(Slsqp *q, unsigned n, const double *y, double *grad)
 {
-  Slsqp *q = data;
   Evaluator *ev = q->ev;
   const double *R = q->metric.R;
   double X[n], C0 = ev->B->C0;
@@ -98,20 +100,30 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   if ((ev->failed = opt_evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 942 "paper/opt.nw"
+#line 978 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 932 "paper/opt.nw"
+#line 958 "paper/opt.nw"
   double v = design_violation(ev->B, X), band = slsqp_band(ev, v);
   if (ev->J <= q->best + q->best_band + band && v <= OPT_IN_B
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q, band);
   else if (++q->stalled >= STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->J / q->metric.scale;
 }
-#line 952 "paper/opt.nw"
+
+/* NLopt's objective: the value, timed as the callbacks' */
+static double slsqp_objective(unsigned n, const double *y, double *grad,
+                              void *data)
+{
+  Slsqp *q = data;
+  double start = resources_clock(), J = slsqp_value(q, n, y, grad);
+  q->outside += resources_clock() - start;
+  return J;
+}
+#line 988 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q, double band)
 {
   Evaluator *ev = q->ev;
@@ -123,7 +135,7 @@ static void slsqp_accept(Slsqp *q, double band)
   if (why) slsqp_stop(q, why);
   q->k++;
 }
-#line 969 "paper/opt.nw"
+#line 1005 "paper/opt.nw"
 static int metric_setup(Evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -138,7 +150,7 @@ static int metric_setup(Evaluator *ev, Metric *mt)
   double start = resources_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 989 "paper/opt.nw"
+#line 1025 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -160,16 +172,16 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 983 "paper/opt.nw"
+#line 1019 "paper/opt.nw"
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1019 "paper/opt.nw"
+#line 1055 "paper/opt.nw"
 int opt_slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
   double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
-  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, 0, X, 0, 0, 0 };
+  Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, 0, X, 0, 0, 0, 0 };
   if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
   double *y = q.metric.X0 + n, *tol = y + n, f;
@@ -181,16 +193,19 @@ int opt_slsqp(Evaluator *ev, double *X)
       break;
     }
     
-#line 1042 "paper/opt.nw"
+#line 1078 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
 if (r > 0) r = nlopt_add_equality_constraint(q.opt, area_constraint, &q, 1e-14);
 if (r > 0) r = nlopt_set_min_objective(q.opt, slsqp_objective, &q);
 if (r > 0) r = nlopt_set_maxeval(q.opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
+double start = resources_clock();
+q.outside = 0;
 if (r > 0) r = nlopt_optimize(q.opt, y, &f);
+ev->rep->subproblem_seconds += resources_clock() - start - q.outside;
 nlopt_destroy(q.opt);
-#line 1059 "paper/opt.nw"
+#line 1098 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 more = !rc && !ev->rep->stop_reason[0]
@@ -199,19 +214,19 @@ if (!rc && !more && !ev->rep->stop_reason[0]) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
   
-#line 1076 "paper/opt.nw"
+#line 1115 "paper/opt.nw"
 if (r != NLOPT_MAXEVAL_REACHED)
   snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "SLSQP, %s, found no "
            "new iterate: %s%s", ev->rep->iterations ? "restarted from its last iterate"
            : "from the start", r == NLOPT_FORCED_STOP ? "its line search found no design "
-           "in B with a lower energy" : "NLopt ended it as ",
+           "in B with a lower value of the objective" : "NLopt ended it as ",
            r == NLOPT_FORCED_STOP ? "" : nlopt_result_to_string(r));
-#line 1067 "paper/opt.nw"
+#line 1106 "paper/opt.nw"
 }
 if (!rc) rc = opt_evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 1035 "paper/opt.nw"
+#line 1071 "paper/opt.nw"
   }
   free(work);
   return rc;

@@ -186,6 +186,18 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "seconds %.6f\nmetric_seconds %.6f\nstate_seconds %.6f\n",
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
+  
+#line 1882 "paper/output.nw"
+if (p && (!strcmp(run->optimizer, "slsqp") || !strcmp(run->optimizer, "mma")))
+  fprintf(f, "subproblem_seconds %.6f\n", r->subproblem_seconds);
+#line 1862 "paper/output.nw"
+  
+#line 1890 "paper/output.nw"
+if (r->starts > 1)
+  fprintf(f, "starts %d\nstarts_best %d\nstarts_min %.15g\nstarts_max %.15g\n"
+          "starts_evaluations %d\nstarts_seconds %.6f\n", r->starts, r->starts_best,
+          r->starts_min, r->starts_max, r->starts_evaluations, r->starts_seconds);
+#line 1863 "paper/output.nw"
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   if (r->levels > 1)
     fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",

@@ -206,7 +206,7 @@ kkt_point() { _lr=$(kkt "$2/multipliers.dat" $3 $4 $5); _lrc=$?
 # how the run computed (its thread counts, the machine's load), which differ by design
 strip_times() {
   awk 'NR == 1 && /^#/ { for (i = 2; i <= NF; i++) if ($i == "seconds") col = i - 1 }
-       ($1 == "seconds" || $1 ~ /^(metric|state|model|monitor)_seconds$/) && NF == 2 { next }
+       ($1 == "seconds" || $1 ~ /^(metric|state|model|monitor|subproblem|starts)_seconds$/) && NF == 2 { next }
        $1 ~ /^(blas_threads|blas_threads_by_size|threads_chosen_by|openmp_threads|load_average)$/ && NF == 2 { next }
        col && !/^#/ { $col = ""; print; next }
        { print }' "$1"

@@ -4,7 +4,8 @@
 # the C2 of its arc) are made twice, into two fresh folders, and every data
 # file of the first is compared with its twin by cmp.  Wall-clock times
 # differ by nature and are stripped first: the lines "seconds",
-# "metric_seconds", "state_seconds", "model_seconds" and "monitor_seconds" of
+# "metric_seconds", "state_seconds", "model_seconds", "monitor_seconds",
+# "subproblem_seconds" and "starts_seconds" of
 # summary.dat and the column "seconds" of history.dat (found by the name in
 # the header of any .dat file).  So are the lines of summary.dat that say
 # how the run computed, which differ between the two sets by design: the

@@ -158,7 +158,7 @@ int main(void)
     else if (strchr(f[2], '(')) same_defaults(f[0], f[2]);
     else same_default(f[0], f[2], NULL);
   }
-  check(n == 54, "contactopt keys prints %d keys", n);
+  check(n == 55, "contactopt keys prints %d keys", n);
   fclose(fp);
   unlink(shape + 12);
   return check_done();
