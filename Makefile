@@ -24,8 +24,8 @@ SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
            src/objectives.sh src/fig-objectives.gp \
-           src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/fig-accuracy.gp \
-           src/man.sh src/completion.sh
+           src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/accuracy-numbers.sh src/fig-accuracy.gp \
+           src/huge.sh src/man.sh src/completion.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
@@ -307,7 +307,8 @@ ACC.opttol-128      := $(call acc_points,128,pdas,1e-10,newton,1e-3 1e-4 1e-5 1e
 ACC_FAMILIES := $(foreach f,mesh pdas-64 cgssor-64 pdas-128 cgssor-128 projgrad \
                   slsqp-schur slsqp-euclidean opttol-64 opttol-128,$(if $(ACC.$(f)),$(f)))
 ACC_RUNS := $(patsubst %,out/accuracy/%/summary.dat,$(sort $(foreach f,$(ACC_FAMILIES),$(ACC.$(f)))))
-ACCURACY_FIGS := figures/accuracy-time.pdf figures/accuracy-time.png figures/accuracy.tex
+ACCURACY_FIGS := figures/accuracy-time.pdf figures/accuracy-time.png figures/accuracy.tex figures/accuracy-numbers.tex \
+                 figures/huge.tex
 
 accuracy: $(ACCURACY_FIGS)
 	@awk '$$2 == "nmax" { n = $$3 } $$2 == "E_inf" { e = $$3 } $$2 == "p" { p = $$3 } \
@@ -333,6 +334,13 @@ out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS) $(ACC_
 figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat > $@.partial && mv $@.partial $@
+# Example 5.1 on N = 1024 (paper/stability.nw): timed, so rebuilt, not tracked
+figures/huge.tex: src/huge.sh bin/contactopt data/example-5.1.scene
+	@mkdir -p figures
+	sh $< out/huge > $@.partial && mv $@.partial $@
+figures/accuracy-numbers.tex: src/accuracy-numbers.sh out/accuracy/sweep.dat paper/bench-state.tex
+	@mkdir -p figures
+	sh $< out/accuracy/sweep.dat paper/bench-state.tex > $@.partial && mv $@.partial $@
 figures/accuracy-time.pdf figures/accuracy-time.png &: src/fig-accuracy.gp out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
 	gnuplot -e "sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; out='figures/accuracy-time'" $<

@@ -17,7 +17,7 @@ v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
 # next to each other (a,b;c,d)
 zones() { awk 'function close_() { if (on) z = z (z == "" ? "" : ";") a (b == a ? "" : "," b); on = 0 }
                /^#/ { next }
-               $5 > 0 { if (!on) a = $1; b = $1; on = 1; n++; sT += $5; sw += $5 / $6
+               $4 == 0 { if (!on) a = $1; b = $1; on = 1; n++; sT += $5; sw += $5 / $6
                         if ($7 != 0) slip++; else if ($8 != 0) stick++; next }
                { close_() }
                END { close_(); printf "%d %d %d %.6e %s", n, stick, slip, sT / sw, z }' "$1/contact.dat"; }

@@ -48,7 +48,7 @@ do for [fmt in "pdf png"] {
   eval place(2)
   set ylabel "{/:Italic T}_t [10^6 N/m]"; set title "(c) tangential nodal force"
   plot for [F in Fs] runs."/N64-F".F."/final/contact.dat" \
-         using 1:($5 > 0 ? $8/1e6 : NaN) with lines lw 1.5 title "F = ".F
+         using 1:($4 == 0 ? $8/1e6 : NaN) with lines lw 1.5 title "F = ".F
   unset multiplot
   set output
 }

@@ -1,11 +1,11 @@
-#line 353 "paper/friction.nw"
+#line 345 "paper/friction.nw"
 #ifndef CONTACTOPT_FRICTION_H
 #define CONTACTOPT_FRICTION_H
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-#line 366 "paper/friction.nw"
+#line 358 "paper/friction.nw"
 /* given friction: slip[k] = g omega_i, omega_i the tributary length of
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
@@ -20,7 +20,7 @@ double friction_work(const Dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 387 "paper/friction.nw"
+#line 379 "paper/friction.nw"
 /* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
    side holds both, a roller on the left or the right u1, on the top u2 */
 int friction_side_holds(const Problem *p, int component);
@@ -40,5 +40,5 @@ Friction_hold friction_hold(const Problem *p);
    sum omega, W minus the u2 components of b */
 void friction_coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
                             const double *b, double *slip);
-#line 360 "paper/friction.nw"
+#line 352 "paper/friction.nw"
 #endif

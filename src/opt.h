@@ -1,4 +1,4 @@
-#line 152 "paper/opt.nw"
+#line 153 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_H
 #define CONTACTOPT_OPT_H
 #include "status.h"
@@ -6,7 +6,7 @@
 #include "design.h"
 #include "objective.h"
 
-#line 171 "paper/opt.nw"
+#line 172 "paper/opt.nw"
 typedef enum { OPT_SLSQP, OPT_PROJGRAD, OPT_NEWTON, OPT_MMA } Opt_method;
 typedef enum { OPT_METRIC_SCHUR, OPT_METRIC_EUCLIDEAN } Opt_metric;
 extern const char *const opt_method_names[]; /* slsqp, projgrad, newton, mma */
@@ -26,7 +26,7 @@ typedef struct {
                              (sec:starts): 1 the scene's only */
 } Opt_options;
 
-#line 205 "paper/opt.nw"
+#line 206 "paper/opt.nw"
 typedef struct {
   int iteration;          /* 0 is the start */
   double value;           /* the objective at the iterate, E by default */
@@ -40,7 +40,7 @@ typedef struct {
 /* called at each accepted iterate; nonzero stops the run there */
 typedef int (*Opt_monitor)(const Opt_progress *p, const double *X, void *data);
 
-#line 221 "paper/opt.nw"
+#line 222 "paper/opt.nw"
 typedef struct {
   int iterations;         /* accepted iterates after the start */
   int evaluations;        /* evaluations of E and its gradient */
@@ -68,7 +68,7 @@ typedef struct {
   double starts_seconds;  /* their wall time, part of seconds */
 } Opt_report;
 
-#line 250 "paper/opt.nw"
+#line 251 "paper/opt.nw"
 /* the defaults: schur for slsqp, euclidean for projgrad, tol 1e-6,
    max_iter 200 (the scene raises it for objectives other than the energy) */
 Opt_options opt_options_default(Opt_method method);
@@ -97,5 +97,5 @@ int opt_start_design(const Design_set *B, int k, double *X, Status *st);
 /* pi(X) for the gradient G, with the step tau */
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st);
-#line 166 "paper/opt.nw"
+#line 167 "paper/opt.nw"
 #endif

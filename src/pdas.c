@@ -138,7 +138,7 @@ for (int a = 0; a < m; a++) {
   for (int a = 0; a < m; a++) cd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
-#line 500 "paper/pdas.nw"
+#line 499 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -157,7 +157,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 522 "paper/pdas.nw"
+#line 521 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -178,7 +178,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 481 "paper/pdas.nw"
+#line 480 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -193,7 +193,7 @@ static int hold_stopping(Qp_workspace *w)
   }
   return held > 0;
 }
-#line 552 "paper/pdas.nw"
+#line 551 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -229,20 +229,20 @@ static int guide_start(Qp_workspace *w)
       ip->s[c] = slide, ip->t[c] = w->flo[c];
     } else {
       
-#line 601 "paper/pdas.nw"
+#line 600 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 587 "paper/pdas.nw"
+#line 586 "paper/pdas.nw"
     }
   }
   memcpy(ip->pred, cd->act, (size_t) nk);   /* its first prediction */
   ip->state = GUIDE_ON;
   return 1;
 }
-#line 647 "paper/pdas.nw"
+#line 646 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -375,7 +375,7 @@ static int guide_step(Qp_workspace *w)
   }
   return !inside;
 }
-#line 788 "paper/pdas.nw"
+#line 787 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
