@@ -11,7 +11,7 @@ dpcm = 1600.0 / printcm
 left = 1.4; gap = 2.0; top = 1.5; panelh = 4.6   # cm
 Wcm = printcm
 panelw = (Wcm - left - gap - 0.45)/2
-Hcm = top + panelh + 2.0                  # one key under the two panels
+Hcm = top + panelh + 2.2                  # one key under the two panels
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 x0(c) = left + c*(panelw + gap)           # the left edge of panel c, cm
@@ -50,8 +50,8 @@ do for [fmt in "pdf png"] {
     stats runs."/N64-".word(kinds, i)."/final/contact.dat" \
           using 1:($4 == 0 ? $6/1e6 : 0) nooutput
     if (STATS_max_y > pclip) {
-      set label i sprintf("↑ %.0f MPa", STATS_max_y) at STATS_pos_max_y, pclip \
-          center offset 0, 0.6 tc lt i font sprintf(",%g", fsz)
+      set label i sprintf("%.0f MPa ↑", STATS_max_y) at STATS_pos_max_y, pclip \
+          right offset -0.5, -0.8 tc lt i font sprintf(",%g", fsz)
     }
   }
   set yrange [0:pclip]

@@ -355,8 +355,9 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1895 "paper/figures.nw"
+#line 1898 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
+#define KEYFONT "1.15" /* of the text: the keys of the graphs, 8.3 pt printed */
 /* the objective in a title, its symbol on an axis */
 static void objective_words(const Objective *o, char *title, char *symbol, size_t size)
 {
@@ -383,9 +384,9 @@ static void objective_graph(FILE *f, const Plot *pl)
   fprintf(f, "  set xrange [*:*]; set autoscale xfix; set yrange [*:*]; set autoscale yfix\n"
           "  set offsets 0.5, 0.5, graph %s, graph 0.05   # a band for the key above the points\n"
           "  set xtics 0, %s out nomirror; set ytics autofreq out nomirror\n"
-          "  set key top right spacing 1.2 samplen 2\n"
+          "  keyfont = sprintf(',%%g', %s*fsz); set key top right spacing 1.2 samplen 2 font keyfont\n"
           "  plot opt.'/history.dat' using 1:($2/10.0**ee) with linespoints pt 7 ps 0.6 lw 1.5 \\\n"
-          "           pi %d lc '#1f4e99' title '%s'", KEYBAND, plot_num(step),
+          "           pi %d lc '#1f4e99' title '%s'", KEYBAND, plot_num(step), KEYFONT,
           (int) ceil((pl->iterations + 1.0) / MARKS), pl->projected ?
           "iterates from {/:Italic P_B}({/:Italic α}^0)" : "iterates");
   if (!isnan(pl->start_value))
@@ -394,7 +395,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1946 "paper/figures.nw"
+#line 1950 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -412,7 +413,9 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
   else fprintf(f, "set yrange [*:*]; if (%cm == 0) { set yrange [-1:1] }\n", e[0]);
   plot_tics(f, "x", p->a, p->b, 4, 0);
   if (q->row < 3) fprintf(f, "  set ytics %s_step out nomirror\n", e);
-  fprintf(f, q->kind == PRESSURE ? "  set key top left\n" : "  unset key\n");
+  if (q->kind == PRESSURE)
+    fprintf(f, "  keyfont = sprintf(',%%g', %s*fsz); set key top left font keyfont\n", KEYFONT);
+  else fprintf(f, "  unset key\n");
   fprintf(f, "  plot s0.'/contact.dat' using 1:($%d/10.0**%s) with "
           "linespoints pt '▷' ps 1.3 lw 1.2 pi %d \\\n           lc '#b00000' %s", c, e,
           L->marks, pl->optimize ? "title 'initial {/:Italic α}^0'" : "notitle");
@@ -422,7 +425,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 1978 "paper/figures.nw"
+#line 1984 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
