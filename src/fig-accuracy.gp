@@ -21,11 +21,13 @@ do for [f in families] {
   if (f eq "mesh" || f eq "projgrad" || f[1:6] eq "slsqp-") { varN = varN." ".f } \
   else { oneN = oneN." ".f }
 }
-left = 2.8; panelw = 9.6; gap = 3.0; top = 1.9; panelh = 7.4   # cm
-keytop = top + panelh + 2.0; keyh = 3.2
-Wcm = left + 2*panelw + gap + 0.6
+printcm = 16.4; fontpt = 9                # the article's \textwidth, cm; text, pt
+dpcm = 1600.0 / printcm
+left = 1.7; gap = 1.9; top = 1.5; panelh = 5.0   # cm
+Wcm = printcm
+panelw = (Wcm - left - gap - 0.6)/2
+keytop = top + panelh + 1.3; keyh = 2.8   # the keys under the panels
 Hcm = keytop + keyh
-dpcm = 1600.0 / Wcm; fontpt = 12
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 fam_rest(f) = f[strstrt(f, "-") + 1:]
@@ -64,28 +66,27 @@ do for [fmt in "pdf png"] {
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
   set xtics out nomirror; set ytics out nomirror; set border 3
   set xlabel "time of the optimisation [s]" offset 0, 0.3
+  keyfont = sprintf(",%g", fsz)
+  set key at screen sx(left + c*(panelw + gap) - 1.2), sy(keytop) left top vertical \
+      spacing 1.1 samplen 2 Left reverse font keyfont
   set ylabel sprintf("|{/:Italic E}^* − {/:Italic E}_%s| / |{/:Italic E}_%s|", inf, inf)
   set title "(a) error against the limit"
-  keyfont = sprintf(",%g", 0.9*fsz)
-  set key at screen sx(0.6), sy(keytop) left top vertical maxrows 4 \
-      width -4 spacing 1.2 samplen 2 Left reverse font keyfont
+  set xtics 100
   plot for [f in varN] sweep using (strcol(1) eq f ? $13 : NaN):9 \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
-       for [f in oneN] sweep using (strcol(1) eq f ? $13 : NaN):9 \
-         with points pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
        sweep using (strcol(1) eq "mesh" ? $16 : NaN):9:($13 - $16):(0) \
          with vectors nohead dt 3 lw 1 lc rgb "gray50" notitle, \
        sweep using (strcol(1) eq "mesh" ? $16 : NaN):9 \
          with points pt 6 ps 0.9 lc rgb "gray30" title "one factorisation of its mesh", \
        sweep using (strcol(1) eq "mesh" ? $13 : NaN):9:(sprintf("%d", $3)) \
-         with labels offset 0, 0.8 font sprintf(",%g", 0.8*fsz) notitle, \
+         with labels offset 0, 0.8 font sprintf(",%g", 0.9*fsz) notitle, \
        once using 8:(abs($2 - Einf) / abs(Einf)):($5 - $8):(0) \
          with vectors nohead dt 3 lw 1 lc rgb "gray50" notitle, \
        once using 8:(abs($2 - Einf) / abs(Einf)) with points pt 6 ps 0.9 lc rgb "gray30" notitle, \
        once using 5:(abs($2 - Einf) / abs(Einf)) with points pt 6 ps 0.9 lc rgb "black" \
          title sprintf("mesh, {/:Italic N} = %s, once", onceN), \
        once using 5:(abs($2 - Einf) / abs(Einf)):(sprintf("%d", $1)) \
-         with labels offset 0, 0.8 font sprintf(",%g", 0.8*fsz) notitle
+         with labels offset 0, 0.8 font sprintf(",%g", 0.9*fsz) notitle
   c = 1; eps = 1e-15
   set lmargin at screen sx(left + c*(panelw + gap))
   set rmargin at screen sx(left + c*(panelw + gap) + panelw)
@@ -93,17 +94,27 @@ do for [fmt in "pdf png"] {
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
   set xtics out nomirror; set ytics out nomirror; set border 3
   set xlabel "time of the optimisation [s]" offset 0, 0.3
+  keyfont = sprintf(",%g", fsz)
+  set key at screen sx(left + c*(panelw + gap) - 1.2), sy(keytop) left top vertical \
+      spacing 1.1 samplen 2 Left reverse font keyfont
   set ylabel sprintf("|{/:Italic E}^* − {/:Italic E}^*_{(a)}| / |{/:Italic E}_%s|", inf)
   set title "(b) error against (a) on the same mesh"
+  set xtics autofreq; set yrange [eps/10:*]   # room for the word under the rounding line
   set arrow 1 from graph 0, first eps to graph 1, first eps nohead dt 2 lc "gray50"
-  set label 1 "rounding" at graph 0.98, first 2*eps right tc "gray40" font sprintf(",%g", 0.8*fsz)
+  set label 1 "rounding" at graph 0.02, first 0.3*eps left tc "gray40" font sprintf(",%g", fsz)
   fam_exp(f) = floor(log10(f[1:7] eq "opttol-" ? $7 : $5) + 0.5)
+  kinds = "pdas cgssor opttol"
+  kind_title(k) = k eq "opttol" ? "optimizer.tol" : k." solver.tol"
   plot for [f in varN." ".oneN] sweep \
          using (strcol(1) eq f && f ne "mesh" ? $13 : NaN):($10 > eps ? $10 : eps) \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) notitle, \
        for [f in oneN] sweep \
          using (strcol(1) eq f ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
-         with labels offset 1.3, 0 font sprintf(",%g", 0.75*fsz) tc rgb fam_color(f) notitle
+         with labels offset 0, 0.75 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
+       for [k in kinds] NaN with linespoints lw 1.5 pt 7 ps 0.9 lc rgb fam_color(k."-64") \
+         title kind_title(k), \
+       NaN with points pt 7 ps 0.9 lc "black" title "{/:Italic N} = 64", \
+       NaN with points pt 6 ps 0.9 lc "black" title "{/:Italic N} = 128"
   unset arrow 1; unset label 1
   unset multiplot
   set output

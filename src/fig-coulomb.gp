@@ -6,10 +6,12 @@
 if (!exists("runs") || !exists("out")) {
   exit error "the variables runs and out are required"
 }
-left = 2.6; panelw = 7.2; gap = 2.9; top = 1.9; panelh = 6.6   # cm
-Wcm = left + 3*panelw + 2*gap + 1.0
-Hcm = top + panelh + 2.2
-dpcm = 1600.0 / Wcm; fontpt = 12
+printcm = 16.4; fontpt = 9                # the article's \textwidth, cm; text, pt
+dpcm = 1600.0 / printcm
+left = 1.4; gap = 1.75; top = 1.5; panelh = 4.2   # cm
+Wcm = printcm
+panelw = (Wcm - left - 2*gap - 0.45)/3
+Hcm = top + panelh + 2.0                  # one key under the three panels
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 x0(c) = left + c*(panelw + gap)           # the left edge of panel c, cm
@@ -17,6 +19,8 @@ place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; " \
                    ."set tmargin at screen %g; set bmargin at screen %g", \
                    sx(x0(c)), sx(x0(c) + panelw), sy(top), sy(top + panelh))
 Fs = "0 0.1 0.2 0.3"
+keys = words(Fs); keyy = top + panelh + 1.25
+keytitle(i) = "{/:Italic F} = ".word(Fs, i)
 do for [fmt in "pdf png"] {
   set encoding utf8; set minussign
   dpi = dpcm * 2.54
@@ -33,22 +37,30 @@ do for [fmt in "pdf png"] {
   set output out.".".fmt
   unset xlabel; unset ylabel; unset title   # left over from the other format
   set multiplot title "Example 5.1 with Coulomb friction, optimised by SLSQP (N = 64)"
-  keyfont = sprintf(",%g", 0.85*fsz)
-  set key inside bottom right Left reverse samplen 2 font keyfont
-  set xlabel "{/:Italic x}_1 [m]"
+  set xlabel "{/:Italic x}_1 [m]"; set xtics 1
   eval place(0)
+  unset key
   set ylabel "α* [mm]"; set title "(a) optimal contact surface"
   plot for [F in Fs] runs."/N64-F".F."/final/shape.dat" \
-         using 1:($2*1000) with lines lw 1.5 title "F = ".F
+         using 1:($2*1000) with lines lw 1.5 notitle
   eval place(1)
-  set key inside top left
-  set ylabel "{/:Italic T} [10^7 N/m]"; set title "(b) normal nodal force"
+  set autoscale yfixmin                   # the forces from the least one, not a tick below
+  set ylabel "{/:Italic T} [10^7 N/m]"; set title "(b) normal force"; set ytics 1
   plot for [F in Fs] runs."/N64-F".F."/final/contact.dat" \
-         using 1:($5/1e7) with lines lw 1.5 title "F = ".F
+         using 1:($5/1e7) with lines lw 1.5 notitle
   eval place(2)
-  set ylabel "{/:Italic T}_t [10^6 N/m]"; set title "(c) tangential nodal force"
+  set ylabel "{/:Italic T}_t [10^6 N/m]"; set title "(c) tangential force"; set ytics autofreq
   plot for [F in Fs] runs."/N64-F".F."/final/contact.dat" \
-         using 1:($4 == 0 ? $8/1e6 : NaN) with lines lw 1.5 title "F = ".F
+         using 1:($4 == 0 ? $8/1e6 : NaN) with lines lw 1.5 notitle
+  set autoscale y; set ytics autofreq
+  set lmargin at screen sx(left); set rmargin at screen sx(Wcm - 0.45)
+  unset border; unset tics; unset xlabel; unset ylabel; unset title
+  set xrange [0:1]; set yrange [0:1]
+  keyfont = sprintf(",%g", fsz)
+  set key at screen 0.5, sy(keyy) center top horizontal maxrows 1 \
+      Left reverse samplen 2 width 1 font keyfont
+  plot for [i = 1:keys] NaN with lines lw 1.5 title keytitle(i)
+  set border; set tics; set autoscale xy; unset key
   unset multiplot
   set output
 }

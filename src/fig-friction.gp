@@ -6,13 +6,17 @@
 if (!exists("runs") || !exists("out")) {
   exit error "the variables runs and out are required"
 }
-left = 2.6; panelw = 7.2; gap = 2.9; top = 1.9; panelh = 6.6   # cm
-Wcm = left + 3*panelw + 2*gap + 2.6
-Hcm = top + panelh + 3.6
-dpcm = 1600.0 / Wcm; fontpt = 12
+printcm = 16.4; fontpt = 9                # the article's \textwidth, cm; text, pt
+dpcm = 1600.0 / printcm
+left = 1.4; gap = 1.9; top = 1.5; panelh = 4.2   # cm
+Wcm = printcm                             # 1.9 cm on the right for (c)'s slip axis
+panelw = (Wcm - left - 2*gap - 1.9)/3
+Hcm = top + panelh + 3.3                  # the keys under (a) and (c)
 sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 x0(c) = left + c*(panelw + gap)           # the left edge of panel c, cm
+keyat(c) = sprintf("set key at screen %g, %g left top vertical maxrows 4 Left reverse " \
+                   ."samplen 2 spacing 1.1 font ',%g'", sx(x0(c) - 1.0), sy(top + panelh + 1.35), fsz)
 place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; " \
                    ."set tmargin at screen %g; set bmargin at screen %g", \
                    sx(x0(c)), sx(x0(c) + panelw), sy(top), sy(top + panelh))
@@ -36,21 +40,19 @@ do for [fmt in "pdf png"] {
   unset y2tics; unset y2label; set ytics mirror   # left over from panel (c)
   set xlabel "{/:Italic x}_1 [m]"; set ylabel "α* [mm]"
   set title "(a) optimal contact surface"
-  keyfont = sprintf(",%g", 0.85*fsz)
-  set key inside bottom right Left reverse samplen 2 font keyfont
+  set xtics 1; eval keyat(0)                # the key under the panel, off the curves
   plot for [g in "0 1e8 5e8 1e9"] runs."/g".g."/final/shape.dat" \
          using 1:($2*1000) with linespoints pt 7 ps 0.5 lw 1.5 title "g = ".g." Pa"
   eval place(1)
-  set key inside top left
+  set xtics autofreq
   set xlabel "g [10^8 Pa]"; set ylabel "E* [10^7 J/m]"
   set title "(b) optimal energy"
   plot runs."/energy.dat" using ($1/1e8):($2/1e7) with linespoints pt 7 ps 0.7 lw 1.5 notitle
   eval place(2)
   set xlabel "{/:Italic x}_1 [m]"; set ylabel "force [10^7 N/m]"
   set y2label "slip {/:Italic u}_1 [mm]"; set y2tics; set ytics nomirror
-  set title "(c) g = 5·10^8 Pa at the optimum"
-  set key at screen sx(x0(2)), sy(top + panelh + 1.6) left top \
-      horizontal maxcols 2 Left reverse samplen 2 font keyfont
+  set title "(c) optimum for g = 5·10^8 Pa"
+  set xtics 1; eval keyat(2)
   c = runs."/g5e8/final/contact.dat"
   plot c using 1:($5/1e7) with linespoints pt 7 ps 0.5 lw 1.5 title "normal {/:Italic T}", \
        c using 1:($8/1e7) with linespoints pt 5 ps 0.5 lw 1.5 title "tangential {/:Italic T}_t", \

@@ -254,6 +254,21 @@ script $TMP/example-5.1-opt --results --start $TMP/example-5.1 --title 'my_run ^
 check "--start: the initial state is the solve folder's, E(alpha0) its summary's energy" sh -c \
   "grep -q \"^s0 = '$TMP/example-5.1' \" $TMP/script.gp && grep -q \"^start = '$TMP/example-5.1'\" $TMP/script.gp"
 check "--title: the marks of enhanced text are escaped (my_run ^1)" grep -q "^title = 'my\\\\_run \\\\^1'$" $TMP/script.gp
+# issue 35.7: the body panels' axes labelled with units; (d)'s iterations
+# ticked one by one (Example 5.1 stops after a few), its key in a band
+# above the points, fitted to them, that no point reaches
+check "the six body panels label x1 and x2 in metres" sh -c \
+  "[ \$(grep -c \"set xlabel '{/:Italic x}_1 \\[m\\]'\" $TMP/script.gp) -ge 6 ] &&
+   [ \$(grep -c \"set ylabel '{/:Italic x}_2 \\[m\\]'\" $TMP/script.gp) -eq 6 ]"
+its=$(awk '$1 == "iterations" { print $2 }' $TMP/example-5.1-opt/summary.dat)
+check "(d): a tick at every iteration ($its of them)" sh -c \
+  "[ $its -le 6 ] && grep -q '^  set xtics 0, 1 out nomirror' $TMP/script.gp"
+check "(d): the objective's range fitted to its points, the key in a band of half of it above them" sh -c \
+  "grep -q 'set autoscale yfix' $TMP/script.gp &&
+   grep -q '^  set offsets 0.5, 0.5, graph 0.5, graph 0.05 ' $TMP/script.gp &&
+   grep -q '; set key top right ' $TMP/script.gp"
+check "(d) and (h): keys 1.15 times the text (the page of 27 cm prints at 16.4 cm: 8.3 pt)" \
+  [ "$(grep -c "keyfont = sprintf(',%g', 1.15\*fsz); set key top [a-z]* .*font keyfont" $TMP/script.gp)" -eq 2 ]
 script $TMP/example-5.1-opt --body
 check "optimize: the body is the start (initial/), the final shape dashed in the strip" sh -c \
   "grep -q \"^shape = '$TMP/example-5.1-opt/initial/shape.dat'; final = '$TMP/example-5.1-opt/final/shape.dat'\" $TMP/script.gp"
