@@ -6,9 +6,9 @@
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 308 "paper/pdas.nw"
+#line 309 "paper/pdas.nw"
 #define SINGULAR (-1)    /* a Newton matrix is singular (not a Status_code) */
-#line 313 "paper/pdas.nw"
+#line 314 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
 #line 214 "paper/pdas.nw"
 static int pdas_newton_step(Qp_workspace *w);
@@ -22,7 +22,7 @@ void pdas_set(Qp_workspace *w, int warm)
   Condense *cd = w->cond;
   pd->warm = warm, cd->condensed = 0, cd->stepped = 1;
   pd->ip.state = GUIDE_OFF, pd->ip.guided = 0;
-  for (int c = 0; c < w->nk; c++) cd->act[c] = CONDENSE_HELD;
+  for (int c = 0; c < w->nk; c++) cd->act[c] = CONDENSE_HELD, pd->moved[c] = 0;
 }
 
 /* the size of the active set */
@@ -52,31 +52,55 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   Pdas_workspace *pd = &w->pdas;
   size_t nc = (size_t) w->nk + 1;
   pd->fr = malloc(nc * sizeof *pd->fr), pd->r = malloc(nc * sizeof *pd->r);
-  if (!pd->fr || !pd->r || alloc_guide(&pd->ip, nc))
+  pd->prev = malloc(nc), pd->moved = malloc(nc);
+  if (!pd->fr || !pd->r || !pd->prev || !pd->moved || alloc_guide(&pd->ip, nc))
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
                       "nc = %d)", w->nk);
   return STATUS_OK;
 }
-#line 287 "paper/pdas.nw"
+#line 288 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
-  free(pd->fr), free(pd->r);
+  free(pd->fr), free(pd->r), free(pd->prev), free(pd->moved);
   free(pd->ip.s), free(pd->ip.t), free(pd->ip.ds), free(pd->ip.dt);
   free(pd->ip.as), free(pd->ip.at), free(pd->ip.h), free(pd->ip.pred), free(pd->ip.own);
   free(pd->ip.b), free(pd->ip.db), free(pd->ip.ab);
 }
-#line 317 "paper/pdas.nw"
+#line 318 "paper/pdas.nw"
+/* 1 if a step past kkt <= tol is to be taken to the set that the state
+   calls for (below): room for it, a change called for by more than the
+   rounding rho_f of a force, none changed back, none tangential */
+static int settle(Qp_workspace *w)
+{
+  Pdas_workspace *pd = &w->pdas;
+  const Condense *cd = w->cond;
+  const char *act = cd->act;
+  double yy = 0, bb = cd->bu2, beyond = 0;
+  if (w->iter + 2 >= w->opt.max_iter) return 0;
+  for (int c = 0; c < w->nk; c++) {
+    double bc = w->qp->b[w->ik[c]];
+    yy += cd->y[c] * cd->y[c], bb += bc * bc;
+    if (act[c] == pd->prev[c]) continue;
+    if (pd->moved[c] || c >= w->nc) return 0;
+    double z = w->T[c] + w->d[w->ik[c]] * (w->pos[c] - cd->y[c]);
+    beyond = fmax(beyond, fmin(fabs(z - w->flo[c]), fabs(z - w->fhi[c])));
+  }
+  if (!(beyond > w->gamma * (w->normA * sqrt(yy) + sqrt(bb)))) return 0;
+  for (int c = 0; c < w->nk; c++) pd->moved[c] |= act[c] != pd->prev[c];
+  return 1;
+}
+
 int pdas_iterate(Qp_workspace *w, Status *st)
 {
   Pdas_workspace *pd = &w->pdas;
   int code;
   if (!w->cond->condensed) {
     
-#line 345 "paper/pdas.nw"
+#line 369 "paper/pdas.nw"
 if ((code = condense_factor(w, st))) return code;
 if (pd->warm) condense_states_at_x(w);
-#line 323 "paper/pdas.nw"
+#line 347 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
@@ -95,8 +119,13 @@ if (pd->warm) condense_states_at_x(w);
   condense_forces(w);
   w->kkt = condense_kkt(w);
   
-#line 365 "paper/pdas.nw"
+#line 416 "paper/pdas.nw"
+memcpy(pd->prev, w->cond->act, (size_t) w->nk);
 int same = condense_predict(w), solved = w->kkt <= w->opt.tol;
+if (solved && !same && settle(w)) {
+  w->iter++;                           /* a step more, to the forces' set */
+  return pdas_iterate(w, st);
+}
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
 if ((code = condense_expand(w, st))) return code;
 if (w->kkt > w->opt.tol && (same || solved) && (code = condense_refine(w, st)))
@@ -105,9 +134,9 @@ if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 341 "paper/pdas.nw"
+#line 365 "paper/pdas.nw"
 }
-#line 394 "paper/pdas.nw"
+#line 450 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the Newton system off it */
 static int pdas_newton_step(Qp_workspace *w)
 {
@@ -116,7 +145,7 @@ static int pdas_newton_step(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 418 "paper/pdas.nw"
+#line 474 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (cd->act[c] == CONDENSE_HELD) cd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -128,7 +157,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) cd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 402 "paper/pdas.nw"
+#line 458 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -138,7 +167,7 @@ for (int a = 0; a < m; a++) {
   for (int a = 0; a < m; a++) cd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
-#line 499 "paper/pdas.nw"
+#line 555 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -157,7 +186,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 521 "paper/pdas.nw"
+#line 577 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -178,7 +207,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 480 "paper/pdas.nw"
+#line 536 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -193,7 +222,7 @@ static int hold_stopping(Qp_workspace *w)
   }
   return held > 0;
 }
-#line 551 "paper/pdas.nw"
+#line 607 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -229,20 +258,20 @@ static int guide_start(Qp_workspace *w)
       ip->s[c] = slide, ip->t[c] = w->flo[c];
     } else {
       
-#line 600 "paper/pdas.nw"
+#line 656 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 586 "paper/pdas.nw"
+#line 642 "paper/pdas.nw"
     }
   }
   memcpy(ip->pred, cd->act, (size_t) nk);   /* its first prediction */
   ip->state = GUIDE_ON;
   return 1;
 }
-#line 646 "paper/pdas.nw"
+#line 702 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -375,7 +404,7 @@ static int guide_step(Qp_workspace *w)
   }
   return !inside;
 }
-#line 787 "paper/pdas.nw"
+#line 843 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;

@@ -1,18 +1,18 @@
-#line 382 "paper/qp.nw"
+#line 385 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 373 "paper/qp.nw"
+#line 376 "paper/qp.nw"
 static double qp_norm_bound(const cholmod_sparse *A);
 static int check_options(const Qp_options *opt, Status *st);
 static int check_problem(const Qp *qp, const Qp_options *opt, cholmod_common *cm, Status *st);
 static int alloc_common(Qp_workspace *w, Status *st);
 static int check_pattern(Qp_workspace *w, Status *st);
 static int not_converged(const Qp_workspace *w, Status *st);
-#line 572 "paper/qp.nw"
+#line 575 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -30,39 +30,39 @@ double qp_kkt_eval(const Qp *qp, double normA, const double *x,
     xx += x[j] * x[j];
     if (c < qp->nc && qp->ic[c] == j) {
       
-#line 601 "paper/qp.nw"
+#line 604 "paper/qp.nw"
 double gap = x[j] - qp->lo[c];
 if (r < 0) tn += r * r;          /* a pulling contact force */
 if (gap < 0) inf += gap * gap;   /* a penetration */
 comp += fabs(r) * fabs(gap);     /* a force without contact */
 ll += qp->lo[c] * qp->lo[c];
 if (T) T[c] = r;
-#line 589 "paper/qp.nw"
+#line 592 "paper/qp.nw"
       c++;
     } else if (k < qp->nt && qp->it[k] == j) {
       
-#line 614 "paper/qp.nw"
+#line 617 "paper/qp.nw"
 qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
 if (T) T[qp->nc + k] = r;
-#line 592 "paper/qp.nw"
+#line 595 "paper/qp.nw"
       k++;
     } else
       rf += r * r;
   }
   
-#line 622 "paper/qp.nw"
+#line 625 "paper/qp.nw"
 double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
 double gm = qp_gamma(m + 2);             /* m + 1 terms, and x rounded */
 double rho = gm * (normA * sqrt(xx) + sqrt(bb));
 return qp_kkt_combine(sqrt(rf), sqrt(tn), sqrt(inf), comp, sf, su, rho, gm);
-#line 597 "paper/qp.nw"
+#line 600 "paper/qp.nw"
 }
-#line 629 "paper/qp.nw"
+#line 632 "paper/qp.nw"
 double qp_kkt(const Qp *qp, const double *x, double *T)
 {
   return qp_kkt_eval(qp, qp_norm_bound(qp->A), x, NULL, T);
 }
-#line 637 "paper/qp.nw"
+#line 640 "paper/qp.nw"
 /* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
 static double qp_norm_bound(const cholmod_sparse *A)
 {
@@ -76,7 +76,7 @@ static double qp_norm_bound(const cholmod_sparse *A)
   }
   return m;
 }
-#line 698 "paper/qp.nw"
+#line 701 "paper/qp.nw"
 /* y = A x */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
 {
@@ -90,7 +90,7 @@ void qp_refresh(Qp_workspace *w)
   for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
   w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
 }
-#line 718 "paper/qp.nw"
+#line 721 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -109,7 +109,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 740 "paper/qp.nw"
+#line 743 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -132,7 +132,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 883 "paper/qp.nw"
+#line 886 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -144,15 +144,15 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 762 "paper/qp.nw"
+#line 765 "paper/qp.nw"
   return check_options(opt, st);
 }
-#line 767 "paper/qp.nw"
+#line 770 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
-#line 776 "paper/qp.nw"
+#line 779 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -167,7 +167,7 @@ static int check_options(const Qp_options *opt, Status *st)
                       opt->omega);
   return STATUS_OK;
 }
-#line 797 "paper/qp.nw"
+#line 800 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -197,7 +197,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 834 "paper/qp.nw"
+#line 837 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -216,7 +216,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
-#line 856 "paper/qp.nw"
+#line 859 "paper/qp.nw"
 void qp_release(Qp_workspace *w)
 {
   if (w) condense_release(w->cond);
@@ -233,7 +233,7 @@ void qp_free(Qp_workspace *w)
   free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
   free(w);
 }
-#line 905 "paper/qp.nw"
+#line 908 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -257,7 +257,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 935 "paper/qp.nw"
+#line 938 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -280,7 +280,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 960 "paper/qp.nw"
+#line 963 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 static int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -288,7 +288,7 @@ static int qp_read_values(Qp_workspace *w, Status *st)
   if (!code) code = read_vectors(w, st);
   return code;
 }
-#line 972 "paper/qp.nw"
+#line 975 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -302,7 +302,7 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   if (w->opt.method == QP_CGSSOR) mprgp_set(w);
   return STATUS_OK;
 }
-#line 993 "paper/qp.nw"
+#line 996 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -318,13 +318,13 @@ int qp_iterate(Qp_workspace *w, Status *st)
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 1011 "paper/qp.nw"
+#line 1014 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
 {
   return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
        : m == QP_CGSSOR ? "cgssor" : "?";
 }
-#line 1033 "paper/qp.nw"
+#line 1036 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -343,7 +343,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     code = mprgp_end(w, st);        /* for qp_schur; after the copies */
   return code;
 }
-#line 1064 "paper/qp.nw"
+#line 1067 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -351,7 +351,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     qp_method_name(w->opt.method), w->iter, w->iter == 1 ? "" : "s",
     w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
-#line 1074 "paper/qp.nw"
+#line 1077 "paper/qp.nw"
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w)
 {
@@ -359,7 +359,7 @@ int qp_count_active(const Qp_workspace *w)
   for (int c = 0; c < w->nc; c++) m += !qp_is_free(w, w->qp->ic[c]);
   return m;
 }
-#line 1089 "paper/qp.nw"
+#line 1092 "paper/qp.nw"
 /* (4.3) has no solution: why, with how many bounds active */
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active)
@@ -368,7 +368,7 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
     "of %d bounds active: %s, at iteration %d",
     qp_method_name(w->opt.method), active, w->nc, why, w->iter + 1);
 }
-#line 1121 "paper/qp.nw"
+#line 1124 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   return condense_schur(w, shift, S, st);

@@ -29,10 +29,13 @@ typedef struct {
   double *r;             /* nk: a right-hand side on the free set */
   int *fr;               /* nk: the free set, listed */
   int warm;              /* the first active set is to be guessed from x0 */
+  char *prev;            /* nk: the active set of the last step */
+  char *moved;           /* nk: 1 where a step past kkt <= tol changed the
+                            state (pdas.nw, the forces' set) */
   Pdas_guide ip;         /* the interior point that guides the steps */
 } Pdas_workspace;
 
-#line 306 "paper/qp.nw"
+#line 309 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -73,7 +76,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 508 "paper/qp.nw"
+#line 511 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -132,7 +135,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 660 "paper/qp.nw"
+#line 663 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -145,7 +148,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 680 "paper/qp.nw"
+#line 683 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -161,7 +164,7 @@ static inline int qp_factor_regular(const double *L, int m)
   return dmin >= QP_RCOND_MIN * dmax;
 }
 
-#line 323 "paper/qp.nw"
+#line 326 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -174,7 +177,7 @@ int qp_count_active(const Qp_workspace *w);
 int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
                 int active);
 
-#line 341 "paper/qp.nw"
+#line 344 "paper/qp.nw"
 /* pdas.c: the primal-dual active set method */
 int pdas_alloc(Qp_workspace *w, Status *st);
 void pdas_set(Qp_workspace *w, int warm);
