@@ -337,11 +337,12 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
   int found = 0, faces = 0, singular = 0;
   const char *why = "reached its iteration limit";
   for (k = 0; k < NEWTON_MAX_ITER; k++) {
-    double gap = newton_residuals(w, mdl->col, w->z, w->lam, w->s, w->mu, w->rd, w->rp, &re, scale);
+    double gap = newton_residuals(w, mdl->col, w->z, w->lam, w->s, w->mu, w->rd, w->rp, &re,
+                                  scale);
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 1045 "paper/newton.nw"
+#line 1046 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -356,9 +357,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 1018 "paper/newton.nw"
+#line 1019 "paper/newton.nw"
     
-#line 1035 "paper/newton.nw"
+#line 1036 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -366,7 +367,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 1019 "paper/newton.nw"
+#line 1020 "paper/newton.nw"
     if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -375,7 +376,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 1064 "paper/newton.nw"
+#line 1065 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -387,7 +388,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 1027 "paper/newton.nw"
+#line 1028 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v, &rep->rounding);
