@@ -54,7 +54,9 @@ END { print "\\bottomrule\\end{tabular}"
         printf " $E^* = %s$\\,J/m, $%s$ from $E_\\infty$,", num(f[2], 8), num(err < 0 ? -err : err, 1)
         printf " %d solves, %.0f\\,s", f[4], f[5]
         if (f[7] != "") printf ", a peak of %.1f\\,GiB", f[7]
-        if (f[8] != "") printf "; one CHOLMOD analysis, factorisation and solve of its stiffness %.0f\\,s and %.1f\\,GiB", f[8], f[9]
+        if (f[8] != "")
+          printf "; one CHOLMOD analysis, factorisation and solve of its stiffness " \
+                 "%.0f\\,s and %.1f\\,GiB", f[8], f[9]
         print "."
 
       } }' "$1"

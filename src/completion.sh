@@ -15,25 +15,34 @@ echo "_contactopt_options() {"
 echo "  case \$1 in"
 for c in $commands; do
   echo "    $c) echo '$(awk '/^  -/ { s = substr($0, 3); sub(/  .*/, "", s); gsub(/,/, "", s)
-      n = split(s, w, " "); for (i = 1; i <= n; i++) if (w[i] ~ /^-/) printf "%s ", w[i] }' "$tmp/$c" | sed 's/ $//')' ;;"
+      n = split(s, w, " ")
+      for (i = 1; i <= n; i++) if (w[i] ~ /^-/) printf "%s ", w[i] }' "$tmp/$c" |
+    sed 's/ $//')' ;;"
 done
 echo "  esac; }"
 echo "_contactopt_argument() {"
 echo "  case \$1 in"
 for c in $commands; do
-  awk -v c=$c 'function kind(a) { return a ~ /^(DIR|SOLVEDIR)$/ ? "folder" : a ~ /^(FILE|NAME)$/ ? "file" : a ~ /=/ ? "key" : a == "SCENE" ? "scene" : "none" }
+  awk -v c=$c 'function kind(a) {
+      return a ~ /^(DIR|SOLVEDIR)$/ ? "folder" : a ~ /^(FILE|NAME)$/ ? "file" :
+             a ~ /=/ ? "key" : a == "SCENE" ? "scene" : "none" }
     NR == 1 && NF > 3 && $4 !~ /^\[/ { printf "    %s:) echo %s ;;\n", c, kind($4) }
     /^  -/ && match($0, /^  (-[^ ]+,? )*-[^ ]+( [A-Z]+| [^ ]*=[^ ]*)?( |$)/) {
       s = substr($0, 3, RLENGTH - 2); gsub(/,/, "", s); n = split(s, w, " ")
-      if (n > 1 && w[n] !~ /^-/) for (i = 1; i < n; i++) if (w[i] ~ /^-/) printf "    %s:%s) echo %s ;;\n", c, w[i], kind(w[n]) }' "$tmp/$c"
+      if (n > 1 && w[n] !~ /^-/)
+        for (i = 1; i < n; i++)
+          if (w[i] ~ /^-/) printf "    %s:%s) echo %s ;;\n", c, w[i], kind(w[n]) }' "$tmp/$c"
 done
 echo "    *) echo none ;;"
 echo "  esac; }"
-echo "_contactopt_keys='$(awk -F '  +' 'NR > 1 { printf "%s%s", (NR > 2 ? " " : ""), $1 }' "$tmp/keytable")'"
+echo "_contactopt_keys='$(awk -F '  +' 'NR > 1 { printf "%s%s", (NR > 2 ? " " : ""), $1 }' \
+                         "$tmp/keytable")'"
 echo "_contactopt_values() {"
 echo "  case \$1 in"
-awk -F '  +' 'NR > 1 && $4 ~ /^[a-z_0-9]+(, [a-z_0-9]+)+$/ { v[$4] = v[$4] (v[$4] == "" ? "" : "|") $1 }
-  END { for (a in v) { w = a; gsub(/,/, "", w); printf "    %s) echo %s ;;\n", v[a], w } }' "$tmp/keytable" | sort
+awk -F '  +' 'NR > 1 && $4 ~ /^[a-z_0-9]+(, [a-z_0-9]+)+$/ {
+    v[$4] = v[$4] (v[$4] == "" ? "" : "|") $1 }
+  END { for (a in v) { w = a; gsub(/,/, "", w); printf "    %s) echo %s ;;\n", v[a], w } }' \
+  "$tmp/keytable" | sort
 echo "  esac; }"
 cat << 'EOF'
 _contactopt() {
@@ -60,7 +69,8 @@ _contactopt() {
     scene) COMPREPLY=($(compgen -d -- "$cur") $(compgen -f -X '!*.scene' -- "$cur")) ;;
     key)
       if [[ $cur == *=* ]]; then
-        COMPREPLY=($(compgen -P "${cur%%=*}=" -W "$(_contactopt_values "${cur%%=*}")" -- "${cur#*=}"))
+        COMPREPLY=($(compgen -P "${cur%%=*}=" -W "$(_contactopt_values "${cur%%=*}")" \
+                             -- "${cur#*=}"))
       else
         COMPREPLY=($(compgen -S = -W "$_contactopt_keys" -- "$cur"))
         compopt -o nospace 2> /dev/null

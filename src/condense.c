@@ -292,7 +292,8 @@ int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st)
   int ok;
   if (!back) {
     for (int q = 0; q < cd->n; q++) s[q] = x[P[q]];
-    ok = cholmod_l_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E, cm);
+    ok = cholmod_l_solve2(CHOLMOD_L, cd->L, cd->sol, NULL, v, NULL, &cd->solve_Y, &cd->solve_E,
+                          cm);
   } else if ((ok = cholmod_l_solve2(CHOLMOD_Lt, cd->L, *v, NULL, &cd->sol, NULL,
                                     &cd->solve_Y, &cd->solve_E, cm))) {
     s = cd->sol->x, x = (*v)->x;
@@ -301,7 +302,7 @@ int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st)
   return ok ? STATUS_OK
             : cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
 }
-#line 666 "paper/condense.nw"
+#line 667 "paper/condense.nw"
 void condense_forces(Qp_workspace *w)
 {
   const Condense *cd = w->cond;
@@ -312,13 +313,13 @@ void condense_forces(Qp_workspace *w)
     w->T[c] = s;
   }
 }
-#line 680 "paper/condense.nw"
+#line 681 "paper/condense.nw"
 double condense_kkt(const Qp_workspace *w)
 {
   const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 692 "paper/condense.nw"
+#line 693 "paper/condense.nw"
 for (int c = 0; c < w->nk; c++) {
   double T = w->T[c], bc = w->qp->b[w->ik[c]];
   if (c < w->nc) {
@@ -332,12 +333,12 @@ for (int c = 0; c < w->nk; c++) {
   bb += bc * bc, axax += (bc + T) * (bc + T);
   yy += cd->y[c] * cd->y[c];
 }
-#line 685 "paper/condense.nw"
+#line 686 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
   double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
   return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
 }
-#line 712 "paper/condense.nw"
+#line 713 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
    interval of width 0 (no friction) always gives its one force; after a
@@ -379,7 +380,7 @@ void condense_states_at_x(Qp_workspace *w)
   condense_predict(w);
   cd->stepped = 1;
 }
-#line 774 "paper/condense.nw"
+#line 775 "paper/condense.nw"
 int condense_expand(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -397,7 +398,7 @@ int condense_expand(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 799 "paper/condense.nw"
+#line 800 "paper/condense.nw"
 int condense_refine(Qp_workspace *w, Status *st)
 {
   Condense *cd = w->cond;
@@ -412,7 +413,7 @@ int condense_refine(Qp_workspace *w, Status *st)
   qp_refresh(w);
   return STATUS_OK;
 }
-#line 824 "paper/condense.nw"
+#line 825 "paper/condense.nw"
 /* the states that (y, T) call for, then x from y by back substitution,
    refined once if kkt > tol; kkt and T recomputed at x */
 int condense_end(Qp_workspace *w, Status *st)
@@ -424,7 +425,7 @@ int condense_end(Qp_workspace *w, Status *st)
   if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
   return code;
 }
-#line 846 "paper/condense.nw"
+#line 847 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -433,7 +434,7 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 866 "paper/condense.nw"
+#line 867 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
 static int schur_friction(const Qp_workspace *w, double shift, double *S,
@@ -447,7 +448,7 @@ static int schur_friction(const Qp_workspace *w, double shift, double *S,
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 886 "paper/condense.nw"
+#line 887 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -470,11 +471,11 @@ if (!code && m > 0) {
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
 for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 879 "paper/condense.nw"
+#line 880 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 915 "paper/condense.nw"
+#line 916 "paper/condense.nw"
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
 {
   Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
@@ -498,7 +499,7 @@ static int schur_apart(const Qp_workspace *w, double shift, double *S,
   condense_free(cd);
   return STATUS_OK;
 }
-#line 952 "paper/condense.nw"
+#line 953 "paper/condense.nw"
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st)
 {

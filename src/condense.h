@@ -87,7 +87,7 @@ int condense_end(Qp_workspace *w, Status *st);
 int condense_schur(const Qp_workspace *w, double shift, double *S,
                    Status *st);
 
-#line 943 "paper/condense.nw"
+#line 944 "paper/condense.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st);

@@ -1,10 +1,10 @@
-#line 989 "paper/condense.nw"
+#line 990 "paper/condense.nw"
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
 #include "condense.h"
-#line 998 "paper/condense.nw"
+#line 999 "paper/condense.nw"
 /* held[k] = 1 where condensed unknown k is held: a bound touched, or
    (friction) sticking */
 static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
@@ -13,7 +13,7 @@ static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
     held[k] = k < w->nc ? !qp_is_free(w, w->ik[k])
                         : cd->act[k] == CONDENSE_HELD;
 }
-#line 1011 "paper/condense.nw"
+#line 1012 "paper/condense.nw"
 /* z = L \ P g in cd->rhs; r (nk, ik order) = L_cc z_c */
 static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
 {
@@ -27,7 +27,7 @@ static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
   }
   return STATUS_OK;
 }
-#line 1029 "paper/condense.nw"
+#line 1030 "paper/condense.nw"
 /* y (nk) = 0 on the held, S_FF \ r_F on the others */
 static int adjoint_condensed(const Condense *cd, const char *held,
                              const double *r, double *y, Status *st)
@@ -57,7 +57,7 @@ static int adjoint_condensed(const Condense *cd, const char *held,
   free(fr), free(SFF);
   return code;
 }
-#line 1061 "paper/condense.nw"
+#line 1062 "paper/condense.nw"
 int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
                char *held, Status *st)
 {

@@ -15,12 +15,14 @@ v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
 # zones DIR: the contact nodes, stick, slip, the mean pressure sum T /
 # sum omega over them, and the contact zone as its intervals of nodes
 # next to each other (a,b;c,d)
-zones() { awk 'function close_() { if (on) z = z (z == "" ? "" : ";") a (b == a ? "" : "," b); on = 0 }
+zones() { awk 'function close_() {
+                 if (on) z = z (z == "" ? "" : ";") a (b == a ? "" : "," b); on = 0 }
                /^#/ { next }
                $4 == 0 { if (!on) a = $1; b = $1; on = 1; n++; sT += $5; sw += $5 / $6
                         if ($7 != 0) slip++; else if ($8 != 0) stick++; next }
                { close_() }
-               END { close_(); printf "%d %d %d %.6e %s", n, stick, slip, sT / sw, z }' "$1/contact.dat"; }
+               END { close_(); printf "%d %d %d %.6e %s", n, stick, slip, sT / sw, z }' \
+           "$1/contact.dat"; }
 echo "# N F J_F*[J/m] contact stick slip p_mean[Pa] zone[m]" \
      "fixed_point_iterations iterations evaluations" > "$out/optima.dat"
 for r in 1 4; do
@@ -57,7 +59,8 @@ for r in 1 4; do
          "$(zones $t/final | cut -d' ' -f2,3)" >> "$out/tresca.dat"
   done
 done
-awk 'function sci(x,  e) { if (x == 0) return "0"; e = int(log(x < 0 ? -x : x) / log(10) + 100) - 100
+awk 'function sci(x,  e) { if (x == 0) return "0"
+                          e = int(log(x < 0 ? -x : x) / log(10) + 100) - 100
                           return sprintf("%.1f\\cdot10^{%d}", x / 10^e, e) }
   BEGIN { nl = "\\\\" }
   FILENAME ~ /initial/ && !/^#/ { e = $3 > e ? $3 : e
@@ -66,13 +69,15 @@ awk 'function sci(x,  e) { if (x == 0) return "0"; e = int(log(x < 0 ? -x : x) /
   END { printf "\\gdef\\coulombgraderr{%s}\\gdef\\coulombfplo{%d}" \
                "\\gdef\\coulombfphi{%d}\n", sci(e), lo, hi
         print "\\begin{tabular}{@{}rrrrr@{}}\\toprule"
-        print "$\\mathcal F$ & $J_{\\mathcal F}$ [J/m] & gradient error & \\multicolumn{2}{c}{fixed-point its}" nl
+        print "$\\mathcal F$ & $J_{\\mathcal F}$ [J/m] & gradient error" \
+              " & \\multicolumn{2}{c}{fixed-point its}" nl
         print "& & & to $10^{-10}$ & to rounding" nl "\\midrule"
         for (i = 1; i <= n; i++) print row[i]
         print "\\bottomrule\\end{tabular}" }' "$out/initial.dat"
 echo '\par\medskip'
 awk 'BEGIN { nl = "\\\\"; print "\\begin{tabular}{@{}rrrcrrrr@{}}\\toprule"
-             print "$N$ & $\\mathcal F$ & $J_{\\mathcal F}^*$ [J/m] & contact zone [m] & stick & slip" \
+             print "$N$ & $\\mathcal F$ & $J_{\\mathcal F}^*$ [J/m] & contact zone [m]" \
+                   " & stick & slip" \
                    " & fixed-point its & SLSQP its/solves" nl "\\midrule" }
   !/^#/ { if (N && $1 != N) print "\\midrule"; N = $1
           z = $8; gsub(/,/, ", ", z); gsub(/;/, "], [", z)

@@ -7,7 +7,8 @@
 #        measured once)
 # writes out.pdf and out.png
 if (!exists("sweep") || !exists("once") || !exists("out")) {
-  print "usage: gnuplot -e \"sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; out='NAME'\" SCRIPT"
+  print "usage: gnuplot -e \"sweep='out/accuracy/sweep.dat'; once='data/accuracy-once.dat'; " . \
+        "out='NAME'\" SCRIPT"
   exit error "the variables sweep, once and out are required"
 }
 families = system("awk '!/^#/ && NF && !seen[$1]++ { printf \"%s \", $1 }' ".sweep)

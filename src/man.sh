@@ -98,7 +98,8 @@ for c in $commands; do
   awk -v c=$c '/^Exit status:/ { on = 1; sub(/^Exit status: */, "") }
     NF == 0 { on = 0 } on { s = s (s == "" ? "" : " ") $0 }
     END { if (s == "") exit; sub(/\.$/, "", s)
-      while (match(s, /, [0-9]+ /)) { print c, substr(s, 1, RSTART - 1); s = substr(s, RSTART + 2) }
+      while (match(s, /, [0-9]+ /)) {
+        print c, substr(s, 1, RSTART - 1); s = substr(s, RSTART + 2) }
       print c, s }' "$tmp/$c"
 done | awk "$roff"'
   { code = $2; c = $1; sub(/^[^ ]+ +[^ ]+ +/, "")

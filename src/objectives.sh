@@ -11,13 +11,15 @@ mkdir -p "$out"
 v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
 # zone DIR: the pressed nodes, the spread (sd/mean) and the peak of their
 # pressure, and the zone as intervals of neighbouring nodes (a,b;c,d)
-zone() { awk 'function close_() { if (on) z = z (z == "" ? "" : ";") a (b == a ? "" : "," b); on = 0 }
+zone() { awk 'function close_() {
+                if (on) z = z (z == "" ? "" : ";") a (b == a ? "" : "," b); on = 0 }
               /^#/ { next }
               $4 == 0 { if (!on) a = $1; b = $1; on = 1; n++; s += $6; s2 += $6 * $6
                         if ($6 > m) m = $6; next }
               { close_() }
               END { close_(); mu = s / n; sd = s2 / n - mu * mu
-                    printf "%d %.3e %.6e %s", n, sqrt(sd > 0 ? sd : 0) / mu, m, z }' "$1/contact.dat"; }
+                    printf "%d %.3e %.6e %s", n, sqrt(sd > 0 ? sd : 0) / mu, m, z }' \
+          "$1/contact.dat"; }
 echo "# N kind stop_reason iterations E[J/m] compliance[J/m] pressure_spread" \
      "pressure_peak nodes pressure_cv peak_pressure[Pa] zone[m]" > "$out/optima.dat"
 for r in 1 4; do
@@ -39,9 +41,11 @@ awk 'BEGIN { nl = "\\\\"; split("energy compliance spread peak", nm, " ")
   !/^#/ { if (N && $1 != N) print "\\midrule"; N = $1
           z = $12; gsub(/,/, ", ", z); gsub(/;/, "], [", z)
           k = $2; gsub(/_/, "\\_", k); st = $3; gsub(/_/, "\\_", st)
-          printf "%d & %s & $%.10g$ & $%.10g$ & $%.8g$ & $%.8g$ & %d & $[%s]$ & %.1e & %.1f & %s (%d)" nl "\n",
+          printf "%d & %s & $%.10g$ & $%.10g$ & $%.8g$ & $%.8g$ & %d & $[%s]$ & %.1e & %.1f" \
+                 " & %s (%d)" nl "\n",
                  $1, k, $5, $6, $7, $8, $9, z, $10, $11 / 1e6, st, $4
           i = $2 == "energy" ? 1 : $2 == "compliance" ? 2 : $2 == "pressure_spread" ? 3 : 4
           n = $1 == 16 ? "sixteen" : "sixtyfour"
-          mac = mac sprintf("\\gdef\\objopt%s%s{%.8g}\\gdef\\objstop%s%s{%s}", n, nm[i], $(4 + i), n, nm[i], st) }
+          mac = mac sprintf("\\gdef\\objopt%s%s{%.8g}\\gdef\\objstop%s%s{%s}",
+                            n, nm[i], $(4 + i), n, nm[i], st) }
   END { print "\\bottomrule\\end{tabular}"; print mac }' "$out/optima.dat"

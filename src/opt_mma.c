@@ -182,11 +182,12 @@ static int mma_basis(Mma *q)
   while (rank < r && fabs(gsl_matrix_get(Rf, rank, rank)) > 1e-12 * top) rank++;
   q->ny = n - rank;
   for (int i = 0; i < n; i++)
-    for (int j = 0; j < q->ny; j++) q->Z[(size_t) i * q->ny + j] = gsl_matrix_get(&Q.matrix, i, rank + j);
+    for (int j = 0; j < q->ny; j++)
+      q->Z[(size_t) i * q->ny + j] = gsl_matrix_get(&Q.matrix, i, rank + j);
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1444 "paper/opt.nw"
+#line 1445 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 static void mma_varying(Mma *q);
@@ -206,7 +207,7 @@ static int mma_setup(Mma *q, const double *X)
   if (!rc) mma_varying(q);
   return rc;
 }
-#line 1469 "paper/opt.nw"
+#line 1470 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Evaluator *ev = q->ev;
@@ -222,7 +223,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1493 "paper/opt.nw"
+#line 1494 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -236,14 +237,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1484 "paper/opt.nw"
+#line 1485 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1513 "paper/opt.nw"
+#line 1514 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Evaluator *ev, double *X)
 {
@@ -267,14 +268,14 @@ int opt_mma(Evaluator *ev, double *X)
   free(work), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1540 "paper/opt.nw"
+#line 1541 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1567 "paper/opt.nw"
+#line 1568 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -282,7 +283,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1546 "paper/opt.nw"
+#line 1547 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -291,18 +292,18 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1650 "paper/opt.nw"
+#line 1651 "paper/opt.nw"
 Objective_kind kind = ev->o->objective.kind;
 if (r > 0 && (kind == OBJECTIVE_ENERGY || kind == OBJECTIVE_COMPLIANCE))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
-#line 1554 "paper/opt.nw"
+#line 1555 "paper/opt.nw"
   double start = resources_clock();
   q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1579 "paper/opt.nw"
+#line 1580 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 *more = !rc && !ev->rep->stop_reason[0] && r != NLOPT_MAXEVAL_REACHED && q->fresh > 0;
@@ -318,10 +319,10 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1560 "paper/opt.nw"
+#line 1561 "paper/opt.nw"
   return rc;
 }
-#line 1637 "paper/opt.nw"
+#line 1638 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {

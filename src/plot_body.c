@@ -361,7 +361,8 @@ void plot_body_figure(FILE *f, const Plot *pl, const char *out)
   if (pl->optimize) fprintf(f, "; final = "), plot_quote(f, path, 0);
   fprintf(f, "\na_left = %s; a_right = %s          # alpha0 at a and at b\n"
           "x_gap = %s; a_max = %s           # the widest gap, and where\n",
-          plot_real(al[0], 0), plot_real(al[p->N], 0), plot_real(problem_node_x(p, g), 0), plot_real(al[g], 0));
+          plot_real(al[0], 0), plot_real(al[p->N], 0), plot_real(problem_node_x(p, g), 0),
+          plot_real(al[g], 0));
   fprintf(f, "ucm = %s; vex = %s                # cm per metre along x1; x2 exaggerated\n",
           plot_real(L.ucm, 6), plot_real(L.vex, 0));
   fprintf(f, "xlo = %s; xhi = %s; ylo = %s; yhi = %s    # the upper panel\n",

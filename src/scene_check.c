@@ -107,8 +107,10 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
                    "mesh.refine = %d the mesh has 2 N (M + R) = %.0f triangles, "
                    "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
-                   "entries a triangle, counted in C ints", s->problem.N, s->problem.M, s->problem.R, k,
-                   2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R), INT_MAX / 36);
+                   "entries a triangle, counted in C ints",
+                   s->problem.N, s->problem.M, s->problem.R, k,
+                   2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R),
+                   INT_MAX / 36);
 #line 1687 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
@@ -122,7 +124,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1742 "paper/scene.nw"
+#line 1744 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -135,7 +137,7 @@ static int check_admissible(Loader *L, Scene *s)
                    "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2110 "paper/scene.nw"
+#line 2112 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -152,7 +154,7 @@ static int read_material(Loader *L, Scene *s)
   if (!(s->problem.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
   return scene_get(L, s, "material", "model");
 }
-#line 2136 "paper/scene.nw"
+#line 2138 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -161,7 +163,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2158 "paper/scene.nw"
+#line 2160 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -177,7 +179,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2144 "paper/scene.nw"
+#line 2146 "paper/scene.nw"
   if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = scene_get(L, s, sec, "P2"))
@@ -188,7 +190,7 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2177 "paper/scene.nw"
+#line 2179 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -200,7 +202,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return rc;
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2204 "paper/scene.nw"
+#line 2206 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Loader *L, Scene *s)
 {
@@ -215,17 +217,17 @@ static int check_held(Loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2227 "paper/scene.nw"
+#line 2229 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2218 "paper/scene.nw"
+#line 2220 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2236 "paper/scene.nw"
+#line 2238 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
   return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
                     "onto the foundation (the load that presses it down is %g N/m), "
@@ -241,9 +243,9 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2220 "paper/scene.nw"
+#line 2222 "paper/scene.nw"
 }
-#line 2255 "paper/scene.nw"
+#line 2257 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -252,7 +254,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return 0;
 }
-#line 2280 "paper/scene.nw"
+#line 2282 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -267,7 +269,7 @@ static int read_loads(Loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2298 "paper/scene.nw"
+#line 2300 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -291,7 +293,7 @@ static int read_contact(Loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2330 "paper/scene.nw"
+#line 2332 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -303,7 +305,7 @@ static int read_solver(Loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2358 "paper/scene.nw"
+#line 2360 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -314,7 +316,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2341 "paper/scene.nw"
+#line 2343 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -325,7 +327,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2395 "paper/scene.nw"
+#line 2397 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies */
 static Opt_method default_method(const Scene *s)
@@ -367,7 +369,7 @@ static int read_optimizer(Loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2443 "paper/scene.nw"
+#line 2445 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Loader *L, Scene *s)
 {
@@ -384,7 +386,7 @@ static int read_objective(Loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2469 "paper/scene.nw"
+#line 2471 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {

@@ -123,7 +123,7 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1783 "paper/scene.nw"
+#line 1785 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Loader *L, Scene *s);
 #line 1544 "paper/scene.nw"

@@ -1,4 +1,4 @@
-#line 75 "paper/status.nw"
+#line 76 "paper/status.nw"
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +16,7 @@ int status_set(Status *st, Status_code code, const char *fmt, ...)
   }
   return code;
 }
-#line 98 "paper/status.nw"
+#line 99 "paper/status.nw"
 const char *status_digits(double x, int digits, char *buf)
 {
   char *e;

@@ -74,7 +74,9 @@ awk -v date="$(date -u +%Y-%m-%d)" -v cores="$(nproc)" '
         k, v[i, 13], k, v[i, 14], k, v[i, 15], k, v[i, 16], k, v[i, 5] - v[i, 12] }
     print "\\begin{center}\\small\\setlength{\\tabcolsep}{4pt}"
     print "\\begin{tabular}{@{}rrrrrrrrrrrr@{}}\\toprule"
-    print "$N$ & limit [s] & solve [s] & ratio & levels & fine solves & coarse solves & optimize [s] & ratio & peak [GiB] & limit peak [GiB] & ratio\\\\\\midrule"
+    # the header on two lines, so that the twelve columns fit the page
+    print "& limit & solve & & & fine & coarse & optimize & & peak & limit peak &\\\\"
+    print "$N$ & [s] & [s] & ratio & levels & solves & solves & [s] & ratio & [GiB] & [GiB] & ratio\\\\\\midrule"
     for (i = 1; i <= n; i++)
       printf "%d & %.3g & %.3g & %.2f & %d & %d & %d & %.3g & %.1f & %.2g & %.2g & %.2f%s\\\\\n", v[i, 1], v[i, 7], v[i, 11],
         v[i, 11] / v[i, 7], v[i, 2], v[i, 3], v[i, 4],
