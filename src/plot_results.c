@@ -244,8 +244,8 @@ static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, con
   plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor(L->pw / 2))), 0);
   plot_tics(f, "y", 0, p->gamma, 2, 0);
   fprintf(f, "  set border 3\n  set xlabel '{/:Italic x}_1 [m]' offset 0, %s\n"
-          "  set ylabel '{/:Italic x}_2 [m]' offset 0.6, 0\n", q->kind == DEFORMED && L->below[q->state]
-          ? "-0.6" : "0.4");
+          "  set ylabel '{/:Italic x}_2 [m]' offset 0.6, 0\n",
+          q->kind == DEFORMED && L->below[q->state] ? "-0.6" : "0.4");
 }
 
 /* the end of a body panel's title: the exaggeration of x2, if any */
