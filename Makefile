@@ -372,8 +372,8 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 # stayed in the index as often as parts use it. The awk after it keeps the
 # first of each entry. The build fails where the pages do not set: an
 # overfull box over 20 pt, a float too large, an undefined reference, an
-# index entry twice (paper/program-log.sh reads the log and the index).
-paper/contactopt.pdf: $(WOVEN) paper/program-log.sh $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
+# index entry twice (paper/latex-log.sh reads the log and the index).
+paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex \
                        paper/cholmod-long.tex paper/bench-levels.tex paper/bench-orderings.tex | deps
@@ -383,7 +383,7 @@ paper/contactopt.pdf: $(WOVEN) paper/program-log.sh $(FIGURES) $(ACCURACY_FIGS) 
 	  noindex contactopt && awk '!seen[$$0]++' contactopt.nwi > contactopt.nwi.new \
 	    && mv contactopt.nwi.new contactopt.nwi; \
 	  [ $$i -gt 1 ] && ! grep -q 'Rerun' contactopt.log && break; done; true
-	sh paper/program-log.sh build/paper/contactopt.log
+	sh paper/latex-log.sh program 20 build/paper/contactopt.log
 	cp build/paper/contactopt.pdf $@
 
 # ---- the article -------------------------------------------------------------------
@@ -396,7 +396,7 @@ paper/contactopt.pdf: $(WOVEN) paper/program-log.sh $(FIGURES) $(ACCURACY_FIGS) 
 # paper/article-kkt.gp; it cites the program's sections through the
 # woven document's .aux (xr), so it is built after it. The build fails on
 # an undefined reference or citation, an overfull box over 5 pt and a
-# float too large (paper/article-log.sh reads the log).
+# float too large (paper/latex-log.sh reads the log).
 ART_METHODS := slsqp projgrad
 ART_RUNS := $(foreach e,5.1 5.2,$(foreach m,$(ART_METHODS),out/example-$(e)-$(m)/summary.dat))
 out/example-%-slsqp/summary.dat: data/example-%.scene bin/contactopt
@@ -425,13 +425,13 @@ build/article/numbers.tex: paper/article-numbers.sh $(RUNS) $(ART_RUNS) figures/
 	@mkdir -p $(@D)
 	sh $< out $(@D) > $@.partial && mv $@.partial $@
 paper/article.pdf: paper/article.tex build/article/numbers.tex $(ART_FIGS) paper/contactopt.pdf \
-                   paper/article-log.sh data/example-5.1.scene $(FIGURES) $(ACCURACY_FIGS) | deps
+                   paper/latex-log.sh data/example-5.1.scene $(FIGURES) $(ACCURACY_FIGS) | deps
 	cp paper/article.tex build/article/article.tex
 	cd build/article && for i in 1 2 3 4; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error article.tex >/dev/null \
 	    || { tail -40 article.log; exit 1; }; \
 	  [ $$i -gt 1 ] && ! grep -q 'Rerun' article.log && break; done; true
-	sh paper/article-log.sh build/article/article.log
+	sh paper/latex-log.sh article 5 build/article/article.log
 	cp build/article/article.pdf $@
 
 # The table of the keys of a scene (the scene appendix): printed by the

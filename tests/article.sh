@@ -15,7 +15,7 @@
 # holds the reproduction's E* of the run, the bibliography with the
 # methods and libraries it relies on, and the section of limits and
 # missed targets; its LaTeX log has no overfull box over 5 pt, no float
-# too large and no undefined reference (paper/article-log.sh, which make
+# too large and no undefined reference (paper/latex-log.sh at 5 pt, which make
 # paper also runs).
 . tests/lib.sh
 
@@ -85,17 +85,17 @@ check "the article has its section of limits and missed targets, which says what
 check "the article states that the energy optimum is the most compliant shape" \
   grep -q 'most compliant' $TMP/text
 check "the article's LaTeX log: no overfull box over 5 pt, no float too large, no undefined reference" \
-  sh paper/article-log.sh "$log"
+  sh paper/latex-log.sh article 5 "$log"
 
 # the log check sees what it should: a planted overfull box of 6 pt, a
 # float too large and an undefined reference are each found, a box of
 # 4 pt is not
 printf '%s\n' 'Overfull \hbox (4.1pt too wide) in paragraph at lines 1--2' > $TMP/ok.log
-check "the log check lets a box of 4 pt pass" sh paper/article-log.sh $TMP/ok.log
+check "the log check lets a box of 4 pt pass" sh paper/latex-log.sh article 5 $TMP/ok.log
 for planted in 'Overfull \hbox (6.2pt too wide) in paragraph at lines 1--2' \
     'LaTeX Warning: Float too large for page by 6.17978pt on input line 482.' \
     "LaTeX Warning: Reference \`P-sec:x' on page 3 undefined on input line 12."; do
   printf '%s\n' "$planted" > $TMP/bad.log
-  check "the log check finds: $planted" sh -c "! sh paper/article-log.sh $TMP/bad.log > /dev/null"
+  check "the log check finds: $planted" sh -c "! sh paper/latex-log.sh article 5 $TMP/bad.log > /dev/null"
 done
 finish

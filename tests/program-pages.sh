@@ -4,7 +4,7 @@
 # make check does not run LaTeX), its LaTeX log has no overfull box over
 # 20 pt, no float too large, no undefined reference, and its index
 # (build/paper/contactopt.nwi) names each identifier once
-# (paper/program-log.sh, which make paper also runs); the contents print
+# (paper/latex-log.sh at 20 pt, which make paper also runs); the contents print
 # no section number run into its title. The check of the log is itself
 # checked on planted logs either way.
 . tests/lib.sh
@@ -12,7 +12,7 @@
 log=build/paper/contactopt.log
 if [ -f "$log" ]; then
   check "the program's LaTeX log: no overfull box over 20 pt, no float too large, no undefined reference; the index names each identifier once" \
-    sh paper/program-log.sh "$log"
+    sh paper/latex-log.sh program 20 "$log"
   # the contents as printed: no section number run into its title
   # (19.10What the cases show)
   if [ -f paper/contactopt.pdf ] && command -v pdftotext > /dev/null; then
@@ -32,16 +32,16 @@ printf '%s\n' 'Overfull \hbox (19.2pt too wide) in paragraph at lines 1--2' > $T
 printf '%s\n' '\nwixaddsx{i}{{\nwixident {Design{\_}set}}{Design:unset}}' \
   '\nwixaddsx{i}{{\nwixident {design{\_}set}}{design:unset}}' > $TMP/ok/p.nwi
 check "the log check lets a box of 19 pt and two identifiers that differ in case pass" \
-  sh paper/program-log.sh $TMP/ok/p.log
+  sh paper/latex-log.sh program 20 $TMP/ok/p.log
 for planted in 'Overfull \hbox (21.5pt too wide) in paragraph at lines 1--2' \
     'LaTeX Warning: Float too large for page by 118.84398pt on input line 117.' \
     "LaTeX Warning: Reference \`sec:x' on page 3 undefined on input line 12."; do
   printf '%s\n' "$planted" > $TMP/bad/p.log
-  check "the log check finds: $planted" sh -c "! sh paper/program-log.sh $TMP/bad/p.log > /dev/null"
+  check "the log check finds: $planted" sh -c "! sh paper/latex-log.sh program 20 $TMP/bad/p.log > /dev/null"
 done
 printf '%s\n' 'Overfull \hbox (1.2pt too wide) in paragraph at lines 1--2' > $TMP/bad/p.log
 printf '%s\n' '\nwixaddsx{i}{{\nwixident {Design{\_}set}}{Design:unset}}' \
   '\nwixaddsx{i}{{\nwixident {design{\_}set}}{design:unset}}' \
   '\nwixaddsx{i}{{\nwixident {Design{\_}set}}{Design:unset}}' > $TMP/bad/p.nwi
-check "the log check finds an index entry twice" sh -c "! sh paper/program-log.sh $TMP/bad/p.log > /dev/null"
+check "the log check finds an index entry twice" sh -c "! sh paper/latex-log.sh program 20 $TMP/bad/p.log > /dev/null"
 finish
