@@ -199,8 +199,11 @@ set -- $(sed -n 's/^gradcheck: 513 of 513 nodes, \([0-9]*\) state solves of abou
 check "gradcheck at N = 512 says first: 513 nodes, $1 state solves (between 10 and 15 a node, 2 more), about $3 s" \
   holds 'solves >= 10 * 513 + 2 && solves <= 15 * 513 + 2 && total >= 0.9 * solves * t' solves="$1" t="$2" total="$3"
 set -- $(sed -n 's/^contactopt: warning: .*example-5.1.scene: gradcheck of 513 nodes will take about \([0-9]*\) s ([0-9]* state solves of [0-9.e+-]* s); --components 0-512\/\([0-9]*\) checks \([0-9]*\) of them in about \([0-9]*\) s$/\1 \2 \3 \4/p' $TMP/err)
+# (under a minute unless the ends alone, the smallest spread, take longer:
+# a state solve measured while the machine is loaded, as make
+# check-kernels's sixteen threads on two cores load it, may take seconds)
 check "... and warns: about $1 s; --components 0-512/$2 checks $3 nodes in about $4 s" \
-  holds 'total > 60 && count == int(512 / step) + 1 && short <= 60 && lines == 1' \
+  holds 'total > 60 && count == int(512 / step) + 1 && (short <= 60 || count == 2) && lines == 1' \
     total="$1" step="$2" count="$3" short="$4" lines="$(wc -l < $TMP/err)"
 $BIN solve $ex -o $TMP/s128 -s mesh.refine=8 --matrix-market $TMP/s.mtx >/dev/null 2>&1
 check "gradcheck --matrix-market writes A at the design checked: the solve's matrix" cmp -s $TMP/gc.mtx $TMP/s.mtx
