@@ -16,7 +16,8 @@ sx(cm) = cm / Wcm
 sy(cm) = 1.0 - cm / Hcm
 x0(c) = left + c*(panelw + gap)           # the left edge of panel c, cm
 keyat(c) = sprintf("set key at screen %g, %g left top vertical maxrows 4 Left reverse " \
-                   ."samplen 2 spacing 1.1 font ',%g'", sx(x0(c) - 1.0), sy(top + panelh + 1.35), fsz)
+                   ."samplen 2 spacing 1.1 font ',%g'", \
+                   sx(x0(c) - 1.0), sy(top + panelh + 1.35), fsz)
 place(c) = sprintf("set lmargin at screen %g; set rmargin at screen %g; " \
                    ."set tmargin at screen %g; set bmargin at screen %g", \
                    sx(x0(c)), sx(x0(c) + panelw), sy(top), sy(top + panelh))
