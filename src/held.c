@@ -26,21 +26,26 @@ static double lift_work(const Mesh *m, const Dofs *d, const double *b,
   }
   return L2;
 }
-#line 836 "paper/model.nw"
-static double tip_work(const Mesh *m, const Dofs *d, const double *b,
-                       double p, double y, double sigma, double *scale)
+#line 839 "paper/model.nw"
+typedef struct {
+  double W0, L1;        /* W(0), and the horizontal load: W(y) = W0 + sigma y L1 */
+  double scale0, scale1; /* the scale of W(y)'s terms: scale0 + |y| scale1 */
+} Tip;
+
+static Tip tip_work(const Mesh *m, const Dofs *d, const double *b, double p,
+                    double sigma)
 {
-  double W = 0, f[2];
-  *scale = 0;
+  Tip w = {0, 0, 0, 0};
+  double f[2];
   for (int k = 0; k < m->nnodes; k++) {
-    double dx = m->xy[2 * k] - p, dy = m->xy[2 * k + 1] - y;
+    double dx = m->xy[2 * k] - p, x2 = m->xy[2 * k + 1];
     node_load(d, b, k, f);
-    W += sigma * (dx * f[1] - dy * f[0]);
-    *scale += fabs(dx * f[1]) + fabs(dy * f[0]);
+    w.W0 += sigma * (dx * f[1] - x2 * f[0]), w.L1 += f[0];
+    w.scale0 += fabs(dx * f[1]) + fabs(x2 * f[0]), w.scale1 += fabs(f[0]);
   }
-  return W;
+  return w;
 }
-#line 855 "paper/model.nw"
+#line 863 "paper/model.nw"
 static double friction_on_tip(const Mesh *m, const Dofs *d,
                               const double *slip, double y)
 {
@@ -49,23 +54,24 @@ static double friction_on_tip(const Mesh *m, const Dofs *d,
     w += slip[t] * fabs(y - m->xy[2 * d->tangent_col[t] + 1]);
   return w;
 }
-#line 870 "paper/model.nw"
+#line 878 "paper/model.nw"
 static double tip_excess(const Mesh *m, const Dofs *d, const double *b,
                          const double *slip, int end, double *scale)
 {
   double p = end ? m->b : m->a, sigma = end ? -1 : 1;
   int pivot = end ? m->N : 0, heights = slip ? d->nt : 1;
   double worst = -INFINITY;
+  Tip w = tip_work(m, d, b, p, sigma);
   *scale = 0;
   for (int t = 0; t < heights; t++) {
-    double y = m->xy[2 * (slip ? d->tangent_col[t] : pivot) + 1], s;
+    double y = m->xy[2 * (slip ? d->tangent_col[t] : pivot) + 1];
     double fr = slip ? friction_on_tip(m, d, slip, y) : 0;
-    double excess = tip_work(m, d, b, p, y, sigma, &s) - fr;
-    if (excess > worst) worst = excess, *scale = s + fr;
+    double excess = w.W0 + sigma * y * w.L1 - fr;
+    if (excess > worst) worst = excess, *scale = w.scale0 + fabs(y) * w.scale1 + fr;
   }
   return worst;
 }
-#line 894 "paper/model.nw"
+#line 903 "paper/model.nw"
 #define HELD_ROUNDING 1e-12
 static int held(double work, double scale)
 {
@@ -84,22 +90,22 @@ int held_check(const Problem *p, const Mesh *m, const Dofs *d,
   if (!held_lift_free(p)) return 0;
   if (!held(w = lift_work(m, d, b, &scale), scale))
     
-#line 922 "paper/model.nw"
+#line 931 "paper/model.nw"
 return status_set(st, code, "the body is not held: the loads do not press "
                   "it onto the foundation (their vertical resultant is %.6g N/m, "
                   "not downward), and no side holds u2 (%s): nothing stops it "
                   "lifting off", w, sides);
-#line 912 "paper/model.nw"
+#line 921 "paper/model.nw"
   if (friction_side_holds(p, 0)) return 0;
   for (int end = 0; end < 2; end++)
     if (!held(w = tip_excess(m, d, b, slip, end, &scale), scale))
       
-#line 929 "paper/model.nw"
+#line 938 "paper/model.nw"
 return status_set(st, code, "the body is not held: the loads tip it about "
                   "the %s end of its contact (x1 = %g): their moment about it%s "
                   "turns the body off the foundation with %.6g N m/m, and no side "
                   "holds it (%s)", end ? "right" : "left", end ? m->b : m->a,
                   slip ? ", less what friction resists," : "", w, sides);
-#line 916 "paper/model.nw"
+#line 925 "paper/model.nw"
   return 0;
 }

@@ -63,6 +63,14 @@ for solver in pdas; do
     $BIN solve $ex $block -s top.P1=5.751e8 -s solver.state=$solver
 done
 
+# given friction on the flat block: every contact node is at height 0, so
+# a tip slides none of them and friction does no work on it: the same
+# thresholds (g = 1e9 Pa holds the slide, g (b - a) = 4e9 > 2 |P1|)
+tresca="-s contact.model=tresca -s contact.friction= -s contact.g=1e9"
+solved block-left-held-tresca $BIN solve $ex $block $tresca -s top.P1=-1.7249e9
+refused block-left-tips-tresca 2 "tip it about the left end of its contact \(x1 = 0\): their moment about it, less what friction resists, turns the body off the foundation with 200000 N m/m" \
+  $BIN solve $ex $block $tresca -s top.P1=-1.7251e9
+
 # held by the sides: the same loads are no trouble with a clamped side
 solved clamped-pulled $BIN solve $ex -s top.P2=5.75e8
 finish
