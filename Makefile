@@ -16,7 +16,8 @@ MODULES := status resources problem scene mesh fem qp condense friction held mod
 INNER   := pdas mprgp psor condense_adjoint objective_grad design_project newton_ip opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_state plot_body plot_results \
            scene_keys scene_ini scene_value scene_check scene_shape scene_write \
-           output_path output_state output_vtu output_solve output_optimize
+           output_path output_state output_vtu output_solve output_optimize \
+           design_set
 # A header of no module: the index type of CHOLMOD's arrays (paper/fem.nw).
 HEADERS := sparse
 PRIVATE := qp_private opt_private plot_private design_private newton_private scene_private output_private

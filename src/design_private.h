@@ -1,4 +1,4 @@
-#line 186 "paper/design.nw"
+#line 197 "paper/design.nw"
 #ifndef CONTACTOPT_DESIGN_PRIVATE_H
 #define CONTACTOPT_DESIGN_PRIVATE_H
 #include "design.h"

@@ -1,16 +1,16 @@
-#line 200 "paper/design.nw"
+#line 211 "paper/design.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "design_private.h"
-#line 497 "paper/design.nw"
+#line 545 "paper/design.nw"
 typedef struct {              /* points of a piecewise linear derivative */
   double *x, *d;              /* cap: stored (xi, eta) of each point */
   int bot, top, cap;          /* live: bot..top-1, top-1 nearest the zero */
   double s, c, e;             /* (xi, eta) is x = xi + s, d = eta + c xi + e */
 } Breakpoints;
-#line 505 "paper/design.nw"
+#line 553 "paper/design.nw"
 typedef struct {
   const Design_set *B;
   int n;                      /* N+1 */
@@ -27,7 +27,7 @@ typedef struct {
   double M;                   /* the largest term of a value read in the pass */
   double mu, g, slope;        /* the multiplier, g(mu), g' on its piece */
 } Projection;
-#line 307 "paper/design.nw"
+#line 355 "paper/design.nw"
 static void evaluate_g(Projection *w, double mu);
 
 static double area_rounding(const Projection *w)
@@ -50,7 +50,7 @@ static int find_multiplier(Projection *w, Status *st)
   if (B->area <= area_rounding(w)) { evaluate_g(w, hi); return STATUS_OK; }
   return newton_on_pieces(w, lo, hi, st);
 }
-#line 333 "paper/design.nw"
+#line 381 "paper/design.nw"
 static void chain_project(Projection *w);
 static double piece_slope(const Projection *w);
 
@@ -62,7 +62,7 @@ static void evaluate_g(Projection *w, double mu)
   w->g = design_area(w->B, w->X) - w->B->area;
   w->slope = piece_slope(w);
 }
-#line 349 "paper/design.nw"
+#line 397 "paper/design.nw"
 static double piece_slope(const Projection *w)
 {
   double slope = 0;
@@ -78,7 +78,7 @@ static double piece_slope(const Projection *w)
   }
   return slope;
 }
-#line 387 "paper/design.nw"
+#line 435 "paper/design.nw"
 static int same_piece(const Projection *w);
 static void keep_piece(Projection *w);
 
@@ -91,31 +91,31 @@ static int newton_on_pieces(Projection *w, double lo, double hi, Status *st)
   for (int it = 0; it < limit; it++) {
     evaluate_g(w, mu);
     
-#line 408 "paper/design.nw"
+#line 456 "paper/design.nw"
 if (fabs(w->g) <= area_rounding(w) || (newton && same_piece(w)))
   return STATUS_OK;
-#line 399 "paper/design.nw"
+#line 447 "paper/design.nw"
     
-#line 413 "paper/design.nw"
+#line 461 "paper/design.nw"
 if (w->g > 0) lo = mu; else hi = mu;
 int stalled = fabs(w->g) > 0.5 * g2;
 g2 = g1;
 g1 = fabs(w->g);
 keep_piece(w);
-#line 400 "paper/design.nw"
+#line 448 "paper/design.nw"
     
-#line 422 "paper/design.nw"
+#line 470 "paper/design.nw"
 double mid = lo + 0.5 * (hi - lo);
 if (!(lo < mid && mid < hi)) return STATUS_OK;
 double step = w->slope < 0 ? mu - w->g / w->slope : mid;
 newton = w->slope < 0 && !stalled && lo < step && step < hi;
 mu = newton ? step : mid;
-#line 401 "paper/design.nw"
+#line 449 "paper/design.nw"
   }
   return status_set(st, STATUS_NUMERIC, "design: the multiplier of the area "
                     "was not found in %d evaluations", limit);
 }
-#line 431 "paper/design.nw"
+#line 479 "paper/design.nw"
 static int same_piece(const Projection *w)
 {
   return !memcmp(w->edge, w->edge0, w->n) && !memcmp(w->box, w->box0, w->n);
@@ -126,7 +126,7 @@ static void keep_piece(Projection *w)
   memcpy(w->edge0, w->edge, w->n);
   memcpy(w->box0, w->box, w->n);
 }
-#line 524 "paper/design.nw"
+#line 572 "paper/design.nw"
 static double point_x(const Breakpoints *G, int k) { return G->x[k] + G->s; }
 static double point_d(const Breakpoints *G, int k)
 {
@@ -138,7 +138,7 @@ static void point_set(Breakpoints *G, int k, double x, double d)
   G->x[k] = x - G->s;
   G->d[k] = d - G->c * G->x[k] - G->e;
 }
-#line 539 "paper/design.nw"
+#line 587 "paper/design.nw"
 static void push(Breakpoints *G, double x, double d)
 {
   if (G->top == G->cap) {
@@ -156,7 +156,7 @@ static void move_top(Breakpoints *from, Breakpoints *to)
   int k = --from->top;
   push(to, point_x(from, k), point_d(from, k));
 }
-#line 560 "paper/design.nw"
+#line 608 "paper/design.nw"
 static void rebase(Breakpoints *G);
 
 static void add_linear(Breakpoints *G, double z, double C0)
@@ -165,7 +165,7 @@ static void add_linear(Breakpoints *G, double z, double C0)
   G->e += G->s - z;
   if (G->c > G->top - G->bot + 16 || fabs(G->s) > C0) rebase(G);
 }
-#line 574 "paper/design.nw"
+#line 622 "paper/design.nw"
 static double argmin_V(Projection *w);
 static void step_V(Projection *w, double xstar, double z);
 static void backtrack(Projection *w);
@@ -191,7 +191,7 @@ static void chain_project(Projection *w)
   mark_active(w);
   polish(w);
 }
-#line 608 "paper/design.nw"
+#line 656 "paper/design.nw"
 static void rebase(Breakpoints *G)
 {
   for (int k = G->bot; k < G->top; k++) {
@@ -201,7 +201,7 @@ static void rebase(Breakpoints *G)
   }
   G->s = G->c = G->e = 0;
 }
-#line 622 "paper/design.nw"
+#line 670 "paper/design.nw"
 static void cut(Breakpoints *G, const Breakpoints *other, double bound, double side);
 
 static void step_V(Projection *w, double xstar, double z)
@@ -216,7 +216,7 @@ static void step_V(Projection *w, double xstar, double z)
   cut(L, R, 0, -1);
   cut(R, L, w->B->C0, +1);
 }
-#line 645 "paper/design.nw"
+#line 693 "paper/design.nw"
 static void cut(Breakpoints *G, const Breakpoints *other, double bound, double side)
 {
   while (G->top > G->bot && side * (point_x(G, G->bot) - bound) > 0) {
@@ -231,7 +231,7 @@ static void cut(Breakpoints *G, const Breakpoints *other, double bound, double s
     return;
   }
 }
-#line 670 "paper/design.nw"
+#line 718 "paper/design.nw"
 static double point_terms(const Breakpoints *G, int k)
 {
   return fabs(G->d[k]) + fabs(G->c * G->x[k]) + fabs(G->e)
@@ -252,7 +252,7 @@ static double argmin_V(Projection *w)
   w->M = fmax(w->M, point_terms(L, L->top - 1) + point_terms(R, R->top - 1));
   return fmin(fmax(x, 0), w->B->C0);
 }
-#line 694 "paper/design.nw"
+#line 742 "paper/design.nw"
 static void backtrack(Projection *w)
 {
   double *X = w->X, delta = w->delta;
@@ -260,7 +260,7 @@ static void backtrack(Projection *w)
   for (int i = w->n - 1; i > 0; i--)
     X[i - 1] = fmin(fmax(w->xstar[i - 1], X[i] - delta), X[i] + delta);
 }
-#line 728 "paper/design.nw"
+#line 776 "paper/design.nw"
 static void mark_active(Projection *w)
 {
   double C0 = w->B->C0, delta = w->B->delta, *X = w->X;
@@ -274,7 +274,7 @@ static void mark_active(Projection *w)
   for (int i = 0; i < w->n; i++)
     w->box[i] = X[i] <= tau ? -1 : X[i] >= C0 - tau ? 1 : 0;
 }
-#line 752 "paper/design.nw"
+#line 800 "paper/design.nw"
 static void polish_block(Projection *w, int first, int last);
 
 static void polish(Projection *w)
@@ -284,7 +284,7 @@ static void polish(Projection *w)
     polish_block(w, first, last);
   }
 }
-#line 769 "paper/design.nw"
+#line 817 "paper/design.nw"
 static double block_mean(const Projection *w, int first, int last);
 
 static void polish_block(Projection *w, int first, int last)
@@ -313,7 +313,7 @@ static double block_mean(const Projection *w, int first, int last)
   for (int j = first; j <= last; j++) r += w->Z[j] - w->X[j] - t;
   return t + r / m;
 }
-#line 827 "paper/design.nw"
+#line 875 "paper/design.nw"
 static void range_of_beta(const Projection *w, int j, double *lo, double *hi)
 {
   *lo = w->box[j] < 0 ? -HUGE_VAL : 0;
@@ -326,7 +326,7 @@ static void range_of_nu(const Projection *w, int j, double *lo, double *hi)
   *lo = e == -1 || e == 2 ? -HUGE_VAL : 0;
   *hi = e == 1 || e == 2 ? HUGE_VAL : 0;
 }
-#line 843 "paper/design.nw"
+#line 891 "paper/design.nw"
 static void sweep_forward(Projection *w)
 {
   double lo = 0, hi = 0, blo, bhi, nlo, nhi;
@@ -341,7 +341,7 @@ static void sweep_forward(Projection *w)
     w->hi[j] = hi;
   }
 }
-#line 862 "paper/design.nw"
+#line 910 "paper/design.nw"
 static void sweep_backward(const Projection *w, Design_multipliers *m)
 {
   double nu = 0, blo, bhi;
@@ -360,7 +360,7 @@ static void sweep_backward(const Projection *w, Design_multipliers *m)
   }
   m->mu = w->mu;
 }
-#line 889 "paper/design.nw"
+#line 937 "paper/design.nw"
 static Projection *projection_new(const Design_set *B, Status *st);
 static void projection_free(Projection *w);
 
@@ -383,7 +383,7 @@ int design_project(const Design_set *B, const double *Y, double *X,
   projection_free(w);
   return rc;
 }
-#line 950 "paper/design.nw"
+#line 963 "paper/design.nw"
 static Projection *projection_new(const Design_set *B, Status *st)
 {
   Projection *w = calloc(1, sizeof *w);
@@ -403,7 +403,7 @@ static Projection *projection_new(const Design_set *B, Status *st)
     return NULL;
   }
   
-#line 982 "paper/design.nw"
+#line 995 "paper/design.nw"
 w->Z = w->Y + w->n;
 w->xstar = w->Z + w->n;
 w->X = w->xstar + w->n;
@@ -416,7 +416,7 @@ w->R.d = w->R.x + w->R.cap;
 w->box = w->edge + w->n;
 w->edge0 = w->box + w->n;
 w->box0 = w->edge0 + w->n;
-#line 969 "paper/design.nw"
+#line 982 "paper/design.nw"
   return w;
 }
 
