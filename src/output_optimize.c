@@ -1,13 +1,13 @@
-#line 1639 "paper/output.nw"
+#line 1644 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1651 "paper/output.nw"
+#line 1656 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1502 "paper/output.nw"
+#line 1507 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const double *J, const Output_start *start)
 {
@@ -19,7 +19,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1719 "paper/output.nw"
+#line 1724 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -40,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1658 "paper/output.nw"
+#line 1663 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -85,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1747 "paper/output.nw"
+#line 1752 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -119,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1785 "paper/output.nw"
+#line 1790 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -132,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1808 "paper/output.nw"
+#line 1813 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -151,7 +151,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1830 "paper/output.nw"
+#line 1835 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -162,7 +162,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return output_objectives(md, q, start->J, st);
 }
-#line 1849 "paper/output.nw"
+#line 1854 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
@@ -187,17 +187,17 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
   
-#line 1893 "paper/output.nw"
+#line 1898 "paper/output.nw"
 if (p && (!strcmp(run->optimizer, "slsqp") || !strcmp(run->optimizer, "mma")))
   fprintf(f, "subproblem_seconds %.6f\n", r->subproblem_seconds);
-#line 1873 "paper/output.nw"
+#line 1878 "paper/output.nw"
   
-#line 1901 "paper/output.nw"
+#line 1906 "paper/output.nw"
 if (r->starts > 1)
   fprintf(f, "starts %d\nstarts_best %d\nstarts_min %.15g\nstarts_max %.15g\n"
           "starts_evaluations %d\nstarts_seconds %.6f\n", r->starts, r->starts_best,
           r->starts_min, r->starts_max, r->starts_evaluations, r->starts_seconds);
-#line 1874 "paper/output.nw"
+#line 1879 "paper/output.nw"
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   if (r->levels > 1)
     fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",

@@ -1,10 +1,10 @@
-#line 1410 "paper/output.nw"
+#line 1415 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1439 "paper/output.nw"
+#line 1444 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -32,7 +32,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1482 "paper/output.nw"
+#line 1487 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
@@ -46,7 +46,7 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1520 "paper/output.nw"
+#line 1525 "paper/output.nw"
 int output_objectives(const Model *md, double q, double *J, Status *st)
 {
   for (int k = 0; k < OBJECTIVE_COUNT; k++) {
@@ -58,7 +58,7 @@ int output_objectives(const Model *md, double q, double *J, Status *st)
   }
   return STATUS_OK;
 }
-#line 1538 "paper/output.nw"
+#line 1543 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -73,7 +73,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1557 "paper/output.nw"
+#line 1562 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -96,7 +96,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1591 "paper/output.nw"
+#line 1596 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

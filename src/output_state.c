@@ -1,21 +1,7 @@
-#line 995 "paper/output.nw"
+#line 1016 "paper/output.nw"
 #include <stdio.h>
 #include "output_private.h"
-#line 1011 "paper/output.nw"
-double output_u(const Model *md, int node, int c)
-{
-  int k = md->dofs->unknown[2 * node + c];
-  return k < 0 ? 0.0 : md->Q[k];
-}
-#line 1020 "paper/output.nw"
-FILE *output_open_in(Output *o, const char *sub, const char *name,
-                     Status *st)
-{
-  char path[256];
-  snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
-  return output_open(o, path, st);
-}
-#line 1030 "paper/output.nw"
+#line 1022 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -26,7 +12,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 1043 "paper/output.nw"
+#line 1035 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -42,19 +28,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], md->T[c],
             model_pressure(md, c));
     
-#line 1067 "paper/output.nw"
+#line 1059 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
           here ? md->T[d->nc + k] : 0.0);
 }
-#line 1058 "paper/output.nw"
+#line 1050 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 1076 "paper/output.nw"
+#line 1068 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -68,7 +54,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 1092 "paper/output.nw"
+#line 1084 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -86,7 +72,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 1390 "paper/output.nw"
+#line 1395 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {

@@ -1,4 +1,4 @@
-#line 1117 "paper/output.nw"
+#line 1109 "paper/output.nw"
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 #include <string.h>
 #include "output_private.h"
 
-#line 1159 "paper/output.nw"
+#line 1154 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -30,7 +30,13 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 1218 "paper/output.nw"
+#line 1209 "paper/output.nw"
+double output_u(const Model *md, int node, int c)
+{
+  int k = md->dofs->unknown[2 * node + c];
+  return k < 0 ? 0.0 : md->Q[k];
+}
+#line 1223 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -72,13 +78,13 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
 }
-#line 1267 "paper/output.nw"
+#line 1272 "paper/output.nw"
 static void vtu_stress(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
   for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 1279 "paper/output.nw"
+#line 1284 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = s->md->mesh->xy;
@@ -103,7 +109,7 @@ static void vtu_types(const Vtu_state *s, int which, void *values)
   (void) which;
   memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
 }
-#line 1187 "paper/output.nw"
+#line 1182 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -126,7 +132,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 1308 "paper/output.nw"
+#line 1313 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -153,7 +159,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 1339 "paper/output.nw"
+#line 1344 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -165,7 +171,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1356 "paper/output.nw"
+#line 1361 "paper/output.nw"
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -184,7 +190,7 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1377 "paper/output.nw"
+#line 1382 "paper/output.nw"
 int output_vtu(Output *o, const char *sub, const Model *md,
                const double *X, Status *st)
 {
