@@ -15,7 +15,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 MODULES := status resources problem scene mesh fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
 INNER   := pdas mprgp psor condense_adjoint objective_grad design_project newton_ip opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_state plot_body plot_results \
-           scene_keys scene_ini scene_value scene_check scene_shape scene_write \
+           scene_keys scene_message scene_ini scene_value scene_check scene_shape scene_write \
            output_path output_state output_vtu output_solve output_optimize \
            design_set
 # A header of no module: the index type of CHOLMOD's arrays (paper/fem.nw).

@@ -1,13 +1,13 @@
-#line 341 "paper/scene.nw"
+#line 343 "paper/scene.nw"
 #include <stdio.h>
 #include <string.h>
 #include "scene_private.h"
-#line 390 "paper/scene.nw"
+#line 392 "paper/scene.nw"
 const char *const scene_side_names[] = {"left", "right", "top", NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
 const char *const scene_initial_names[] = {"arc", "line", "constant",
   "file", NULL};
-#line 397 "paper/scene.nw"
+#line 399 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w)
 {
@@ -16,7 +16,7 @@ int scene_name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 410 "paper/scene.nw"
+#line 412 "paper/scene.nw"
 /* append s to the string buf of size bytes, cut to fit */
 static void cat(char *buf, size_t size, const char *s)
 {
@@ -39,7 +39,7 @@ const char *scene_name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 448 "paper/scene.nw"
+#line 450 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -61,10 +61,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else status_number(d.tol, buf);
   return buf;
 }
-#line 665 "paper/scene.nw"
+#line 667 "paper/scene.nw"
 const Key scene_keys[] = {
   
-#line 512 "paper/scene.nw"
+#line 514 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -105,9 +105,9 @@ const Key scene_keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder (with -s too)"},
-#line 667 "paper/scene.nw"
+#line 669 "paper/scene.nw"
   
-#line 555 "paper/scene.nw"
+#line 557 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -123,9 +123,9 @@ const Key scene_keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 668 "paper/scene.nw"
+#line 670 "paper/scene.nw"
   
-#line 575 "paper/scene.nw"
+#line 577 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -149,9 +149,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 669 "paper/scene.nw"
+#line 671 "paper/scene.nw"
   
-#line 602 "paper/scene.nw"
+#line 604 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -170,9 +170,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 670 "paper/scene.nw"
+#line 672 "paper/scene.nw"
   
-#line 623 "paper/scene.nw"
+#line 625 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -203,19 +203,19 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "starts", KEY_INT, .at = AT(optimizer.starts), .unit = "-",
  .dflt = "1", .accepted = "1 <= starts <= 100",
  .meaning = "starts: the scene's and starts - 1 waves in B; the best kept"},
-#line 671 "paper/scene.nw"
+#line 673 "paper/scene.nw"
   
-#line 657 "paper/scene.nw"
+#line 659 "paper/scene.nw"
 {"objective", "kind", KEY_WORD, objective_names, AT(optimizer.objective.kind),
  "-", "energy", .meaning = "what the design minimises"},
 {"objective", "q", KEY_REAL, .at = AT(optimizer.objective.q), .unit = "1",
  .dflt = "8", .selector = "kind", .when = "pressure_peak",
  .accepted = "1 <= q <= 1000", .meaning = "the exponent of pressure_peak"},
-#line 672 "paper/scene.nw"
+#line 674 "paper/scene.nw"
 };
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
-#line 683 "paper/scene.nw"
+#line 685 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 const Key *scene_key_find(const char *sec, const char *key)
 {
@@ -234,7 +234,7 @@ int scene_section_known(const char *sec)
     if (strcmp(scene_keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 706 "paper/scene.nw"
+#line 708 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size)
 {
@@ -250,7 +250,7 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 725 "paper/scene.nw"
+#line 727 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Key *k, const char *w)
 {
@@ -262,7 +262,7 @@ int scene_key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 2528 "paper/scene.nw"
+#line 2538 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -291,7 +291,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2560 "paper/scene.nw"
+#line 2570 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -315,7 +315,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2588 "paper/scene.nw"
+#line 2598 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -328,7 +328,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2606 "paper/scene.nw"
+#line 2616 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -352,14 +352,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2635 "paper/scene.nw"
+#line 2645 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2629 "paper/scene.nw"
+#line 2639 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }

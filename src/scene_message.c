@@ -1,0 +1,60 @@
+#line 797 "paper/scene.nw"
+#include <stdio.h>
+#include "scene_private.h"
+#line 830 "paper/scene.nw"
+/* tell "fmt ..." as the failure of L, STATUS_INPUT */
+static PRINTF_LIKE(2, 0)
+int vfail(Loader *L, const char *fmt, va_list ap)
+{
+  char msg[sizeof ((Status *)0)->msg];
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  return L->failed = status_set(L->st, STATUS_INPUT, "%s", msg);
+}
+
+PRINTF_LIKE(2, 3)
+int scene_fail(Loader *L, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vfail(L, fmt, ap);
+  va_end(ap);
+  return L->failed;
+}
+#line 852 "paper/scene.nw"
+/* buf = the scene path, and the override if one set the value */
+void scene_origin(const Loader *L, const char *override, char *buf,
+                  size_t size)
+{
+  if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
+  else snprintf(buf, size, "%s", L->path);
+}
+#line 863 "paper/scene.nw"
+/* tell "ORIGIN: section.key = value: reason" about e */
+static PRINTF_LIKE(3, 0)
+int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
+{
+  char where[640], why[512];
+  scene_origin(L, e->override, where, sizeof where);
+  vsnprintf(why, sizeof why, fmt, ap);
+  return scene_fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
+}
+#line 876 "paper/scene.nw"
+PRINTF_LIKE(3, 4)
+int scene_bad(Loader *L, const Entry *e, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vbad(L, e, fmt, ap);
+  va_end(ap);
+  return L->failed;
+}
+
+PRINTF_LIKE(2, 3)
+int scene_blame(Loader *L, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vbad(L, &L->last, fmt, ap);
+  va_end(ap);
+  return L->failed;
+}
