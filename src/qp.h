@@ -76,7 +76,7 @@ double qp_kkt(const Qp *qp, const double *x, double *T);
    raised by shift A_ii (the Schur complement of A with those diagonals
    raised), at the values the last qp_set read; from PDAS's
    own S when it has one.  Needs GSL's error handler off
-   (gsl_set_error_handler_off), as PDAS does. */
+   (gsl_set_error_handler_off), as PDAS needs too. */
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
 
 /* lam (n) = the adjoint of the last state solved: A_FF lam_F = g_F and

@@ -1,4 +1,4 @@
-#line 215 "paper/qp.nw"
+#line 222 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_INLINE_H
 #define CONTACTOPT_QP_INLINE_H
 /* The state solver's inline helpers that need no workspace: its files
@@ -7,7 +7,7 @@
 #include <math.h>
 #include "sparse.h"
 
-#line 541 "paper/qp.nw"
+#line 548 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -66,7 +66,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 713 "paper/qp.nw"
+#line 720 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread
@@ -81,5 +81,5 @@ static inline int qp_factor_regular(const double *L, int m)
   }
   return dmin >= QP_RCOND_MIN * dmax;
 }
-#line 226 "paper/qp.nw"
+#line 233 "paper/qp.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 230 "paper/qp.nw"
+#line 237 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's workspace, and what qp_base.c gives the methods:
@@ -8,7 +8,7 @@
 #include "qp_inline.h"
 #include "condense.h"
 
-#line 295 "paper/qp.nw"
+#line 302 "paper/qp.nw"
 typedef struct {
   double *s, *t;         /* nk: its gaps y - lo and forces, both > 0;
                             with friction, the slide y - pos = s - b and
@@ -36,7 +36,7 @@ typedef struct {
   Pdas_guide gd;         /* the path-following guide of the steps */
 } Pdas_workspace;
 
-#line 327 "paper/qp.nw"
+#line 334 "paper/qp.nw"
 typedef struct {
   double *p;             /* n: the conjugate direction */
   double *q;             /* n: A p, or A beta in a proportioning step */
@@ -48,7 +48,7 @@ typedef struct {
                             values of the last qp_set */
 } Mprgp_workspace;
 
-#line 261 "paper/qp.nw"
+#line 268 "paper/qp.nw"
 struct Qp_workspace {
   const Qp *qp;          /* the problem: its pattern fixed, values may change */
   Qp_options opt;        /* a copy of the caller's options */
@@ -77,7 +77,7 @@ struct Qp_workspace {
   Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
 };
 
-#line 693 "paper/qp.nw"
+#line 700 "paper/qp.nw"
 /* unknown i is off its bound */
 static inline int qp_is_free(const Qp_workspace *w, int i)
 {
@@ -90,7 +90,7 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
   return y < w->lo[i] ? w->lo[i] : y;
 }
 
-#line 349 "paper/qp.nw"
+#line 356 "paper/qp.nw"
 /* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
@@ -109,5 +109,5 @@ int qp_condense(Qp_workspace *w, Status *st);
 int qp_expand(Qp_workspace *w, Status *st);
 /* x_u refined by one step with the factor (condense_refine); g, kkt, T */
 int qp_refine(Qp_workspace *w, Status *st);
-#line 248 "paper/qp.nw"
+#line 255 "paper/qp.nw"
 #endif
