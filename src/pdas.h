@@ -1,4 +1,4 @@
-#line 194 "paper/pdas.nw"
+#line 195 "paper/pdas.nw"
 #ifndef CONTACTOPT_PDAS_H
 #define CONTACTOPT_PDAS_H
 /* The primal-dual active set method (solver.state = pdas): what pdas.c
