@@ -1,14 +1,12 @@
-#line 250 "paper/condense.nw"
+#line 272 "paper/condense.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
-#include "qp_private.h"
+#include "qp_inline.h"
 #include "condense.h"
-#line 414 "paper/condense.nw"
-#define SINGULAR (-1)    /* K is singular (not a Status_code) */
-#line 240 "paper/condense.nw"
+#line 262 "paper/condense.nw"
 static int cholmod_failed(const cholmod_common *cm, const char *what, Status *st);
 static void fill_contact_matrix(Condense *cd, const double *d);
 static int pattern_symmetric(Condense *cd);
@@ -16,7 +14,7 @@ static int permute_pattern(Condense *cd);
 static void read_trailing_block(Condense *cd);
 static void schur_complement(Condense *cd, const double *d);
 static int condensed_load(Condense *cd, const double *b, Status *st);
-#line 270 "paper/condense.nw"
+#line 292 "paper/condense.nw"
 /* the arrays and at; nonzero when out of memory or A's pattern is not
    symmetric */
 static int alloc_arrays(Condense *cd, Status *st)
@@ -40,7 +38,7 @@ static int alloc_arrays(Condense *cd, Status *st)
   cd->first = cd->n - cd->nk;
   return STATUS_OK;
 }
-#line 301 "paper/condense.nw"
+#line 323 "paper/condense.nw"
 static int analyse_contact_last(Condense *cd, Status *st)
 {
   cholmod_common *cm = cd->cm;
@@ -60,7 +58,7 @@ static int analyse_contact_last(Condense *cd, Status *st)
   free(last);
   if (!ok) return cholmod_failed(cm, "qp_alloc: CHOLMOD failed to analyse A", st);
   
-#line 324 "paper/condense.nw"
+#line 346 "paper/condense.nw"
 if (!(cd->rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->sol = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm))
     || !(cd->Lb = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, cm)))
@@ -71,15 +69,18 @@ for (int t = 0; t < cd->nk; t++)
     return status_set(st, STATUS_SYSTEM, "qp_alloc: CAMD did not order "
                       "the bounded unknowns last");
 return STATUS_OK;
-#line 320 "paper/condense.nw"
+#line 342 "paper/condense.nw"
 }
-#line 337 "paper/condense.nw"
+#line 359 "paper/condense.nw"
 Condense *condense_alloc(const cholmod_sparse *A, int nk, const int *ik,
-                         cholmod_common *cm, Status *st)
+                         const Condense_contact *ct, cholmod_common *cm,
+                         Status *st)
 {
   Condense *cd = calloc(1, sizeof *cd);
   if (!cd) { status_set(st, STATUS_MEMORY, "qp_alloc: out of memory"); return NULL; }
   cd->A = A, cd->cm = cm, cd->n = (int) A->ncol, cd->nk = nk, cd->ik = ik;
+  if (ct) cd->nc = ct->nc, cd->b = ct->b, cd->d = ct->d, cd->pos = ct->pos,
+          cd->flo = ct->flo, cd->fhi = ct->fhi;
   if (alloc_arrays(cd, st) || analyse_contact_last(cd, st)) {
     condense_free(cd);
     return NULL;
@@ -107,7 +108,7 @@ void condense_free(Condense *cd)
   cholmod_l_free_dense(&cd->solve_Y, cd->cm), cholmod_l_free_dense(&cd->solve_E, cd->cm);
   free(cd);
 }
-#line 380 "paper/condense.nw"
+#line 405 "paper/condense.nw"
 /* the name of CHOLMOD's status s (cholmod_core.h) */
 static const char *cholmod_status_name(int s)
 {
@@ -138,11 +139,12 @@ static int cholmod_failed(const cholmod_common *cm, const char *what,
                       "CHOLMOD's integers (CHOLMOD status %d, %s)", what, s, name);
   return status_set(st, STATUS_SYSTEM, "%s (CHOLMOD status %d, %s)", what, s, name);
 }
-#line 435 "paper/condense.nw"
+#line 457 "paper/condense.nw"
 /* S, f and the factor of K = A + D_c at the current values of A and b,
-   d the diagonal of A; SINGULAR when K is */
-static int condense(Condense *cd, const double *b, const double *d, Status *st)
+   d the diagonal of A; CONDENSE_SINGULAR when K is */
+int condense_factor(Condense *cd, Status *st)
 {
+  const double *b = cd->b, *d = cd->d;
   cholmod_common *cm = cd->cm;
   int print = cm->print, final_ll = cm->final_ll, ok;
   fill_contact_matrix(cd, d);
@@ -152,7 +154,7 @@ static int condense(Condense *cd, const double *b, const double *d, Status *st)
   cm->print = print, cm->final_ll = final_ll;
   if (!ok || cd->L->minor < cd->L->n) {
     cholmod_l_free_factor(&cd->L, cm);     /* the next starts from Ls */
-    return ok ? SINGULAR
+    return ok ? CONDENSE_SINGULAR
               : cholmod_failed(cm, "condense: CHOLMOD failed to factorise K", st);
   }
   read_trailing_block(cd);
@@ -161,16 +163,7 @@ static int condense(Condense *cd, const double *b, const double *d, Status *st)
   cd->condensed = !code;
   return code;
 }
-
-/* S, f and the factor of K at the current values; a singular K is a
-   body that nothing holds */
-int condense_factor(Qp_workspace *w, Status *st)
-{
-  int code = condense(w->cond, w->qp->b, w->d, st);
-  return code != SINGULAR ? code : qp_not_held(w, st,
-    "A is singular even with every bound held", w->nc);
-}
-#line 494 "paper/condense.nw"
+#line 508 "paper/condense.nw"
 /* K = P (A + D_c) P' on the condensed unknowns, from the lower triangle
    of A; the values only */
 static void fill_contact_matrix(Condense *cd, const double *d)
@@ -223,7 +216,7 @@ static int pattern_symmetric(Condense *cd)
   free(next);
   return ok;
 }
-#line 554 "paper/condense.nw"
+#line 568 "paper/condense.nw"
 /* Lcc = the rows and columns first..n-1 of L, row-major, lower */
 static void read_trailing_block(Condense *cd)
 {
@@ -233,7 +226,7 @@ static void read_trailing_block(Condense *cd)
   memset(cd->Lcc, 0, (size_t) nc * nc * sizeof *cd->Lcc);
   if (L->is_super) {
     
-#line 573 "paper/condense.nw"
+#line 587 "paper/condense.nw"
 const Sparse_index *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
 for (size_t s = 0; s < L->nsuper; s++) {
   Sparse_index k1 = super[s], k2 = super[s + 1], nrow = pi[s + 1] - pi[s];
@@ -242,7 +235,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
       cd->Lcc[(size_t) (Ls[pi[s] + q] - first) * nc + (k - first)] =
         Lx[px[s] + q + (size_t) (k - k1) * nrow];
 }
-#line 563 "paper/condense.nw"
+#line 577 "paper/condense.nw"
   } else {
     const Sparse_index *Lp = L->p, *Li = L->i, *Lnz = L->nz;
     for (int k = first; k < cd->n; k++)
@@ -250,7 +243,7 @@ for (size_t s = 0; s < L->nsuper; s++) {
         cd->Lcc[(size_t) (Li[q] - first) * nc + (k - first)] = Lx[q];
   }
 }
-#line 586 "paper/condense.nw"
+#line 600 "paper/condense.nw"
 static void schur_complement(Condense *cd, const double *d)
 {
   int nc = cd->nk;
@@ -265,7 +258,7 @@ static void schur_complement(Condense *cd, const double *d)
       cd->S[(size_t) a * nc + b] = cd->S[(size_t) b * nc + a] = v;
     }
 }
-#line 605 "paper/condense.nw"
+#line 619 "paper/condense.nw"
 static int condensed_load(Condense *cd, const double *b, Status *st)
 {
   memcpy(cd->rhs->x, b, (size_t) cd->n * sizeof *b);
@@ -283,7 +276,7 @@ static int condensed_load(Condense *cd, const double *b, Status *st)
   }
   return STATUS_OK;
 }
-#line 630 "paper/condense.nw"
+#line 644 "paper/condense.nw"
 int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st)
 {
   cholmod_common *cm = cd->cm;
@@ -302,130 +295,110 @@ int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st)
   return ok ? STATUS_OK
             : cholmod_failed(cm, "condense: CHOLMOD failed to solve with the factor of K", st);
 }
-#line 667 "paper/condense.nw"
-void condense_forces(Qp_workspace *w)
+#line 681 "paper/condense.nw"
+void condense_forces(const Condense *cd, double *T)
 {
-  const Condense *cd = w->cond;
-  for (int c = 0; c < w->nk; c++) {
-    const double *Sc = cd->S + (size_t) c * w->nk;
+  for (int c = 0; c < cd->nk; c++) {
+    const double *Sc = cd->S + (size_t) c * cd->nk;
     double s = -cd->f[c];
-    for (int e = 0; e < w->nk; e++) s += Sc[e] * cd->y[e];
-    w->T[c] = s;
+    for (int e = 0; e < cd->nk; e++) s += Sc[e] * cd->y[e];
+    T[c] = s;
   }
 }
-#line 681 "paper/condense.nw"
-double condense_kkt(const Qp_workspace *w)
+#line 694 "paper/condense.nw"
+double condense_kkt(const Condense *cd, const double *T, double normA,
+                    double gamma)
 {
-  const Condense *cd = w->cond;
   double tn = 0, inf = 0, comp = 0, axax = cd->bu2, bb = cd->bu2, yy = 0, ll = 0;
   
-#line 693 "paper/condense.nw"
-for (int c = 0; c < w->nk; c++) {
-  double T = w->T[c], bc = w->qp->b[w->ik[c]];
-  if (c < w->nc) {
-    double gap = cd->y[c] - w->pos[c];
-    if (T < 0) tn += T * T;
+#line 706 "paper/condense.nw"
+for (int c = 0; c < cd->nk; c++) {
+  double Tc = T[c], bc = cd->b[cd->ik[c]];
+  if (c < cd->nc) {
+    double gap = cd->y[c] - cd->pos[c];
+    if (Tc < 0) tn += Tc * Tc;
     if (gap < 0) inf += gap * gap;
-    comp += fabs(T) * fabs(gap);
-    ll += w->pos[c] * w->pos[c];
+    comp += fabs(Tc) * fabs(gap);
+    ll += cd->pos[c] * cd->pos[c];
   } else
-    qp_slip_terms(w->fhi[c], T, cd->y[c], &tn, &comp);
-  bb += bc * bc, axax += (bc + T) * (bc + T);
+    qp_slip_terms(cd->fhi[c], Tc, cd->y[c], &tn, &comp);
+  bb += bc * bc, axax += (bc + Tc) * (bc + Tc);
   yy += cd->y[c] * cd->y[c];
 }
-#line 686 "paper/condense.nw"
+#line 699 "paper/condense.nw"
   double sf = sqrt(bb) + sqrt(axax), su = sqrt(yy) + sqrt(ll);
-  double rho = w->gamma * (w->normA * sqrt(yy) + sqrt(bb));
-  return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, w->gamma);
+  double rho = gamma * (normA * sqrt(yy) + sqrt(bb));
+  return qp_kkt_combine(0, sqrt(tn), sqrt(inf), comp, sf, su, rho, gamma);
 }
-#line 713 "paper/condense.nw"
+#line 726 "paper/condense.nw"
 /* the state of c that y and T call for: with z = T_c + A_ii (pos_c - y_c),
    held where flo_c < z <= fhi_c, at the force flo_c or fhi_c beyond; an
-   interval of width 0 (no friction) always gives its one force; after a
-   Newton step, a slide that crossed its place sticks first */
-static char predicted_state(const Qp_workspace *w, int c)
+   interval of width 0 (no friction) always gives its one force; after an
+   active-set step, a slide that crossed its place sticks first */
+static char predicted_state(const Condense *cd, const double *T, int c)
 {
-  const Condense *cd = w->cond;
-  if (cd->stepped && cd->act[c] != CONDENSE_HELD && w->fhi[c] < INFINITY
-      && w->flo[c] != w->fhi[c])
+  if (cd->stepped && cd->act[c] != CONDENSE_HELD && cd->fhi[c] < INFINITY
+      && cd->flo[c] != cd->fhi[c])
     return cd->act[c] == CONDENSE_LO
-           ? (cd->y[c] < w->pos[c] ? CONDENSE_HELD : CONDENSE_LO)
-           : (cd->y[c] > w->pos[c] ? CONDENSE_HELD : CONDENSE_HI);
-  double z = w->T[c] + w->d[w->ik[c]] * (w->pos[c] - cd->y[c]);
-  if (z <= w->flo[c] || w->flo[c] == w->fhi[c]) return CONDENSE_LO;
-  return z > w->fhi[c] ? CONDENSE_HI : CONDENSE_HELD;
+           ? (cd->y[c] < cd->pos[c] ? CONDENSE_HELD : CONDENSE_LO)
+           : (cd->y[c] > cd->pos[c] ? CONDENSE_HELD : CONDENSE_HI);
+  double z = T[c] + cd->d[cd->ik[c]] * (cd->pos[c] - cd->y[c]);
+  if (z <= cd->flo[c] || cd->flo[c] == cd->fhi[c]) return CONDENSE_LO;
+  return z > cd->fhi[c] ? CONDENSE_HI : CONDENSE_HELD;
 }
 
 /* act = the states that y and T call for; 1 if none changed */
-int condense_predict(Qp_workspace *w)
+int condense_predict(Condense *cd, const double *T)
 {
-  Condense *cd = w->cond;
   int same = 1;
-  for (int c = 0; c < w->nk; c++) {
-    char a = predicted_state(w, c);
+  for (int c = 0; c < cd->nk; c++) {
+    char a = predicted_state(cd, T, c);
     same &= a == cd->act[c];
     cd->act[c] = a;
   }
   return same;
 }
 
-/* y from x, T = S y - f, and the states they call for (no Newton step
-   behind them): the guess of a warm start */
-void condense_states_at_x(Qp_workspace *w)
+/* y from x, T = S y - f, and the states they call for (no active-set
+   step behind them): the guess of a warm start */
+void condense_states_at(Condense *cd, const double *x, double *T)
 {
-  Condense *cd = w->cond;
-  for (int c = 0; c < w->nk; c++) cd->y[c] = w->x[w->ik[c]];
-  condense_forces(w);
+  for (int c = 0; c < cd->nk; c++) cd->y[c] = x[cd->ik[c]];
+  condense_forces(cd, T);
   cd->stepped = 0;
-  condense_predict(w);
+  condense_predict(cd, T);
   cd->stepped = 1;
 }
-#line 775 "paper/condense.nw"
-int condense_expand(Qp_workspace *w, Status *st)
+#line 785 "paper/condense.nw"
+int condense_expand(Condense *cd, double *x, Status *st)
 {
-  Condense *cd = w->cond;
   double *v = cd->rhs->x;
-  memcpy(v, cd->Lb->x, (size_t) w->n * sizeof *v);
-  for (int t = 0; t < w->nk; t++) {
+  memcpy(v, cd->Lb->x, (size_t) cd->n * sizeof *v);
+  for (int t = 0; t < cd->nk; t++) {
     double s = 0;
-    for (int u = t; u < w->nk; u++)
-      s += cd->Lcc[(size_t) u * w->nk + t] * cd->y[cd->tc[u]];
+    for (int u = t; u < cd->nk; u++)
+      s += cd->Lcc[(size_t) u * cd->nk + t] * cd->y[cd->tc[u]];
     v[cd->first + t] = s;
   }
   if (condense_solve(cd, 1, &cd->rhs, st)) return st->code;
-  memcpy(w->x, cd->rhs->x, (size_t) w->n * sizeof *w->x);
-  for (int c = 0; c < w->nk; c++) w->x[w->ik[c]] = cd->y[c];
-  qp_refresh(w);
+  memcpy(x, cd->rhs->x, (size_t) cd->n * sizeof *x);
+  for (int c = 0; c < cd->nk; c++) x[cd->ik[c]] = cd->y[c];
   return STATUS_OK;
 }
-#line 800 "paper/condense.nw"
-int condense_refine(Qp_workspace *w, Status *st)
+#line 808 "paper/condense.nw"
+int condense_refine(Condense *cd, const double *g, double *x, Status *st)
 {
-  Condense *cd = w->cond;
   double *v = cd->rhs->x;
-  for (int i = 0; i < w->n; i++) v[i] = cd->at[i] < 0 ? -w->g[i] : 0;
+  for (int i = 0; i < cd->n; i++) v[i] = cd->at[i] < 0 ? -g[i] : 0;
   if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   v = cd->rhs->x;
-  memset(v + cd->first, 0, (size_t) w->nk * sizeof *v);
+  memset(v + cd->first, 0, (size_t) cd->nk * sizeof *v);
   if (condense_solve(cd, 1, &cd->rhs, st)) return st->code;
   v = cd->rhs->x;
-  for (int i = 0; i < w->n; i++) if (cd->at[i] < 0) w->x[i] += v[i];
-  qp_refresh(w);
+  for (int i = 0; i < cd->n; i++) if (cd->at[i] < 0) x[i] += v[i];
   return STATUS_OK;
 }
-#line 825 "paper/condense.nw"
-/* the states that (y, T) call for, then x from y by back substitution,
-   refined once if kkt > tol; kkt and T recomputed at x */
-int condense_end(Qp_workspace *w, Status *st)
-{
-  w->cond->stepped = 0;
-  condense_predict(w);
-  w->cond->stepped = 1;
-  int code = condense_expand(w, st);
-  if (!code && w->kkt > w->opt.tol) code = condense_refine(w, st);
-  return code;
-}
-#line 847 "paper/condense.nw"
+#line 831 "paper/condense.nw"
 /* S = the Schur complement of cd, its diagonal raised by shift d_i */
 static void schur_copy(const Condense *cd, const double *d, double shift,
                        double *S)
@@ -434,21 +407,20 @@ static void schur_copy(const Condense *cd, const double *d, double shift,
   memcpy(S, cd->S, (size_t) nc * nc * sizeof *S);
   for (int k = 0; k < nc; k++) S[(size_t) k * nc + k] += shift * d[cd->ik[k]];
 }
-#line 867 "paper/condense.nw"
+#line 851 "paper/condense.nw"
 /* S = the Schur complement of S onto the bounded unknowns, the sticking
    tangential ones held and the sliding ones eliminated */
-static int schur_friction(const Qp_workspace *w, double shift, double *S,
+static int schur_friction(const Condense *cd, double shift, double *S,
                           Status *st)
 {
-  const Condense *cd = w->cond;
-  int nc = w->nc, nk = w->nk, m = 0, code = STATUS_OK;
+  int nc = cd->nc, nk = cd->nk, m = 0, code = STATUS_OK;
   int *fr = malloc((size_t) (nk - nc + 1) * sizeof *fr);
   double *SFF = malloc((size_t) (nk - nc) * (nk - nc) * sizeof *SFF + 1);
   double *SFn = malloc((size_t) (nk - nc) * nc * sizeof *SFn + 1);
   if (!fr || !SFF || !SFn) code = status_set(st, STATUS_MEMORY, "qp_schur: out of memory");
   for (int k = nc; !code && k < nk; k++) if (cd->act[k] != CONDENSE_HELD) fr[m++] = k;
   
-#line 887 "paper/condense.nw"
+#line 870 "paper/condense.nw"
 for (int a = 0; !code && a < m; a++) {
   for (int b = 0; b < m; b++) SFF[(size_t) a * m + b] = cd->S[(size_t) fr[a] * nk + fr[b]];
   for (int c = 0; c < nc; c++) SFn[(size_t) a * nc + c] = cd->S[(size_t) fr[a] * nk + c];
@@ -470,41 +442,16 @@ if (!code && m > 0) {
 } else if (!code)
   for (int c = 0; c < nc; c++)
     memcpy(S + (size_t) c * nc, cd->S + (size_t) c * nk, (size_t) nc * sizeof *S);
-for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * w->d[w->ik[k]];
-#line 880 "paper/condense.nw"
+for (int k = 0; !code && k < nc; k++) S[(size_t) k * nc + k] += shift * cd->d[cd->ik[k]];
+#line 863 "paper/condense.nw"
   free(fr), free(SFF), free(SFn);
   return code;
 }
-#line 916 "paper/condense.nw"
-Condense *condense_apart(const Qp_workspace *w, const char *who, Status *st)
-{
-  Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, w->cm, st);
-  if (!cd) return NULL;
-  int code = condense(cd, w->qp->b, w->d, st);
-  if (code == SINGULAR)
-    status_set(st, STATUS_NUMERIC, "%s: A is singular even with every "
-               "bounded unknown held", who);
-  if (code) { condense_free(cd); return NULL; }
-  return cd;
-}
-
-/* S of w's problem without friction, condensed apart, its diagonal
-   raised by shift A_ii */
-static int schur_apart(const Qp_workspace *w, double shift, double *S,
-                       Status *st)
-{
-  Condense *cd = condense_apart(w, "qp_schur", st);
-  if (!cd) return st->code;
-  schur_copy(cd, w->d, shift, S);
-  condense_free(cd);
-  return STATUS_OK;
-}
-#line 953 "paper/condense.nw"
-int condense_schur(const Qp_workspace *w, double shift, double *S,
+#line 899 "paper/condense.nw"
+int condense_schur(const Condense *cd, double shift, double *S,
                    Status *st)
 {
-  if (!w->cond || !w->cond->condensed) return schur_apart(w, shift, S, st);
-  if (w->nk > w->nc) return schur_friction(w, shift, S, st);
-  schur_copy(w->cond, w->d, shift, S);
+  if (cd->nk > cd->nc) return schur_friction(cd, shift, S, st);
+  schur_copy(cd, cd->d, shift, S);
   return STATUS_OK;
 }

@@ -1,19 +1,19 @@
-#line 990 "paper/condense.nw"
+#line 935 "paper/condense.nw"
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
-#include "qp_private.h"
+#include "qp_inline.h"
 #include "condense.h"
-#line 999 "paper/condense.nw"
+#line 945 "paper/condense.nw"
 /* held[k] = 1 where condensed unknown k is held: a bound touched, or
    (friction) sticking */
-static void adjoint_held(const Qp_workspace *w, const Condense *cd, char *held)
+static void adjoint_held(const Condense *cd, const double *x, char *held)
 {
   for (int k = 0; k < cd->nk; k++)
-    held[k] = k < w->nc ? !qp_is_free(w, w->ik[k])
-                        : cd->act[k] == CONDENSE_HELD;
+    held[k] = k < cd->nc ? !(x[cd->ik[k]] > cd->pos[k])
+                         : cd->act[k] == CONDENSE_HELD;
 }
-#line 1012 "paper/condense.nw"
+#line 958 "paper/condense.nw"
 /* z = L \ P g in cd->rhs; r (nk, ik order) = L_cc z_c */
 static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
 {
@@ -27,7 +27,7 @@ static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
   }
   return STATUS_OK;
 }
-#line 1030 "paper/condense.nw"
+#line 976 "paper/condense.nw"
 /* y (nk) = 0 on the held, S_FF \ r_F on the others */
 static int adjoint_condensed(const Condense *cd, const char *held,
                              const double *r, double *y, Status *st)
@@ -57,20 +57,15 @@ static int adjoint_condensed(const Condense *cd, const char *held,
   free(fr), free(SFF);
   return code;
 }
-#line 1062 "paper/condense.nw"
-int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
-               char *held, Status *st)
+#line 1018 "paper/condense.nw"
+int condense_adjoint(Condense *cd, const double *x, const double *g,
+                     double *lam, char *held, Status *st)
 {
-  Condense *cd = w->cond && w->cond->condensed ? w->cond : NULL, *own = NULL;
-  if (!cd && w->nk > w->nc)
-    return status_set(st, STATUS_INPUT, "adjoint: no condensation of the "
-                      "friction state to solve with");
-  if (!cd && !(cd = own = condense_apart(w, "adjoint", st))) return st->code;
   int nk = cd->nk, code = STATUS_OK;
   char *h = malloc((size_t) nk + 1);
   double *r = malloc(2 * ((size_t) nk + 1) * sizeof *r), *y = r + nk + 1;
   if (!h || !r) code = status_set(st, STATUS_MEMORY, "adjoint: out of memory");
-  if (!code) adjoint_held(w, cd, h);
+  if (!code) adjoint_held(cd, x, h);
   if (!code) code = adjoint_forward(cd, g, r, st);
   if (!code) code = adjoint_condensed(cd, h, r, y, st);
   if (!code) {
@@ -83,11 +78,10 @@ int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
     code = condense_solve(cd, 1, &cd->rhs, st);
   }
   if (!code) {
-    memcpy(lam, cd->rhs->x, (size_t) w->n * sizeof *lam);
-    for (int k = 0; k < nk; k++) lam[w->ik[k]] = y[k];
+    memcpy(lam, cd->rhs->x, (size_t) cd->n * sizeof *lam);
+    for (int k = 0; k < nk; k++) lam[cd->ik[k]] = y[k];
     if (held) memcpy(held, h, (size_t) nk);
   }
   free(h), free(r);
-  condense_free(own);
   return code;
 }

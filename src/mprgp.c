@@ -1,4 +1,4 @@
-#line 113 "paper/mprgp.nw"
+#line 139 "paper/mprgp.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,13 +6,13 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
-#include "condense.h"
-#line 124 "paper/mprgp.nw"
+#include "mprgp.h"
+#line 150 "paper/mprgp.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 346 "paper/mprgp.nw"
+#line 372 "paper/mprgp.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-#line 103 "paper/mprgp.nw"
+#line 129 "paper/mprgp.nw"
 static int proportional(const Qp_workspace *w);
 static int proportioning_step(Qp_workspace *w, Status *st);
 static double feasible_step(const Qp_workspace *w);
@@ -20,14 +20,14 @@ static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int dual_iterate(Qp_workspace *w, Status *st);
-#line 130 "paper/mprgp.nw"
+#line 156 "paper/mprgp.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
   for (int i = 0; i < n; i++) s += u[i] * v[i];
   return s;
 }
-#line 141 "paper/mprgp.nw"
+#line 167 "paper/mprgp.nw"
 int mprgp_alloc(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -38,7 +38,7 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (cgssor)");
   return STATUS_OK;
 }
-#line 155 "paper/mprgp.nw"
+#line 181 "paper/mprgp.nw"
 void mprgp_set(Qp_workspace *w)
 {
   w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
@@ -50,7 +50,7 @@ void mprgp_free(Qp_workspace *w)
 {
   free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
 }
-#line 182 "paper/mprgp.nw"
+#line 208 "paper/mprgp.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
@@ -69,7 +69,7 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 211 "paper/mprgp.nw"
+#line 237 "paper/mprgp.nw"
 int mprgp_iterate(Qp_workspace *w, Status *st)
 {
   if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */
@@ -80,7 +80,7 @@ int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 224 "paper/mprgp.nw"
+#line 250 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -94,7 +94,7 @@ static int proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 245 "paper/mprgp.nw"
+#line 271 "paper/mprgp.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
@@ -112,7 +112,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   mp->restart = 1;
   return STATUS_OK;
 }
-#line 277 "paper/mprgp.nw"
+#line 303 "paper/mprgp.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -135,7 +135,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 302 "paper/mprgp.nw"
+#line 328 "paper/mprgp.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
@@ -145,7 +145,7 @@ static double feasible_step(const Qp_workspace *w)
       af = fmin(af, (w->x[i] - w->lo[i]) / w->mprgp.p[i]);
   return af;
 }
-#line 319 "paper/mprgp.nw"
+#line 345 "paper/mprgp.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
@@ -158,7 +158,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, mp->z, mp->q) / pap;
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
-#line 350 "paper/mprgp.nw"
+#line 376 "paper/mprgp.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
@@ -173,7 +173,7 @@ static void expansion_step(Qp_workspace *w, double af)
   qp_refresh(w);
   mp->restart = 1;
 }
-#line 486 "paper/mprgp.nw"
+#line 512 "paper/mprgp.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -200,7 +200,7 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
 {
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
-#line 516 "paper/mprgp.nw"
+#line 542 "paper/mprgp.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
@@ -218,11 +218,11 @@ static void dual_state(Qp_workspace *w)
   for (int k = 0; k < w->nk; k++) r[k] = w->cond->f[k] + w->T[k];
   dual_hessian(w, r, w->cond->y);
 }
-#line 480 "paper/mprgp.nw"
+#line 506 "paper/mprgp.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 538 "paper/mprgp.nw"
+#line 564 "paper/mprgp.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
@@ -255,10 +255,10 @@ static double norm_inverse(Qp_workspace *w)
   }
   return rho + res;
 }
-#line 574 "paper/mprgp.nw"
+#line 600 "paper/mprgp.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
-  int code = condense_factor(w, st);
+  int code = qp_condense(w, st);
   if (!code) code = factor_schur(w, st);
   if (code) return code;
   w->mprgp.abar = MPRGP_ABAR / norm_inverse(w);
@@ -267,7 +267,7 @@ static int dual_setup(Qp_workspace *w, Status *st)
   w->mprgp.restart = 1, w->mprgp.factored = 1;
   return STATUS_OK;
 }
-#line 589 "paper/mprgp.nw"
+#line 615 "paper/mprgp.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
@@ -281,7 +281,7 @@ static int dual_proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 605 "paper/mprgp.nw"
+#line 631 "paper/mprgp.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -291,7 +291,7 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
     else if (d[k] < 0) af = fmin(af, (w->T[k] - w->fhi[k]) / d[k]);
   return af;
 }
-#line 619 "paper/mprgp.nw"
+#line 645 "paper/mprgp.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
@@ -307,7 +307,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   }
   mp->restart = 1;
 }
-#line 639 "paper/mprgp.nw"
+#line 665 "paper/mprgp.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -322,7 +322,7 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 673 "paper/mprgp.nw"
+#line 699 "paper/mprgp.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
@@ -336,7 +336,7 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 691 "paper/mprgp.nw"
+#line 717 "paper/mprgp.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
@@ -353,7 +353,7 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 657 "paper/mprgp.nw"
+#line 683 "paper/mprgp.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
   Mprgp_workspace *mp = &w->mprgp;
@@ -367,7 +367,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   if (acg <= af) dual_cg_step(w, acg, php);
   else dual_expansion_step(w, af);
 }
-#line 715 "paper/mprgp.nw"
+#line 741 "paper/mprgp.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -391,40 +391,44 @@ static double dual_snapped_kkt(Qp_workspace *w)
   dual_snap(w);
   memcpy(w->T, cd->f, size);
   gsl_blas_dgemv(CblasNoTrans, 1.0, &S.matrix, &y.vector, -1.0, &T.vector);
-  double kkt = condense_kkt(w);
+  double kkt = condense_kkt(cd, w->T, w->normA, w->gamma);
   if (!(kkt <= w->opt.tol))
     memcpy(cd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
   return kkt;
 }
-#line 748 "paper/mprgp.nw"
+#line 779 "paper/mprgp.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
-  if ((code = condense_end(w, st)) || !met || w->kkt <= w->opt.tol) return code;
+  w->cond->stepped = 0;
+  condense_predict(w->cond, w->T);
+  w->cond->stepped = 1;
+  if (!(code = qp_expand(w, st)) && w->kkt > w->opt.tol) code = qp_refine(w, st);
+  if (code || !met || w->kkt <= w->opt.tol) return code;
   return status_set(st, STATUS_NUMERIC, "cgssor: the dual's pair met the "
     "tolerance at step %d, and the whole state formed from it, refined once, "
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
-#line 763 "paper/mprgp.nw"
+#line 798 "paper/mprgp.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
   if (!w->mprgp.factored && (code = dual_setup(w, st))) return code;
   if (dual_proportional(w)) dual_cg_or_expansion_step(w);
   else dual_proportioning_step(w);
-  w->kkt = condense_kkt(w);
-  if (w->kkt <= w->opt.tol) dual_state(w), w->kkt = condense_kkt(w);
+  w->kkt = condense_kkt(w->cond, w->T, w->normA, w->gamma);
+  if (w->kkt <= w->opt.tol)
+    dual_state(w), w->kkt = condense_kkt(w->cond, w->T, w->normA, w->gamma);
   if (w->kkt <= w->opt.tol) w->kkt = dual_snapped_kkt(w);
   if (w->kkt <= w->opt.tol || w->iter + 1 >= w->opt.max_iter)
     return dual_finish(w, st);
   return STATUS_OK;
 }
-#line 784 "paper/mprgp.nw"
-/* with friction, S, f and the states at x, if no step condensed them */
+#line 820 "paper/mprgp.nw"
 int mprgp_end(Qp_workspace *w, Status *st)
 {
   int code = STATUS_OK;
-  if (w->nk > w->nc && !w->cond->condensed && !(code = condense_factor(w, st)))
-    condense_states_at_x(w);
+  if (w->nk > w->nc && !w->cond->condensed && !(code = qp_condense(w, st)))
+    condense_states_at(w->cond, w->x, w->T);
   return code;
 }

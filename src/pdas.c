@@ -1,27 +1,27 @@
-#line 220 "paper/pdas.nw"
+#line 242 "paper/pdas.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
-#include "condense.h"
-#line 309 "paper/pdas.nw"
-#define SINGULAR (-1)    /* a Newton matrix is singular (not a Status_code) */
-#line 314 "paper/pdas.nw"
+#include "pdas.h"
+#line 331 "paper/pdas.nw"
+#define SINGULAR (-1)    /* a step matrix is singular (not a Status_code) */
+#line 336 "paper/pdas.nw"
 enum { GUIDE_OFF = 0, GUIDE_ON = 1, GUIDE_STOPPED = 2 };
-#line 214 "paper/pdas.nw"
-static int pdas_newton_step(Qp_workspace *w);
+#line 236 "paper/pdas.nw"
+static int pdas_step(Qp_workspace *w);
 static int hold_stopping(Qp_workspace *w);
 static void guide(Qp_workspace *w);
-#line 236 "paper/pdas.nw"
+#line 258 "paper/pdas.nw"
 /* the first active set: all of I; a warm start guesses after condensing */
 void pdas_set(Qp_workspace *w, int warm)
 {
   Pdas_workspace *pd = &w->pdas;
   Condense *cd = w->cond;
   pd->warm = warm, cd->condensed = 0, cd->stepped = 1;
-  pd->ip.state = GUIDE_OFF, pd->ip.guided = 0;
+  pd->gd.state = GUIDE_OFF, pd->gd.guided = 0;
   for (int c = 0; c < w->nk; c++) cd->act[c] = CONDENSE_HELD, pd->moved[c] = 0;
 }
 
@@ -32,19 +32,19 @@ static int count_act(const Qp_workspace *w)
   for (int c = 0; c < w->nk; c++) m += w->cond->act[c] == CONDENSE_HELD;
   return m;
 }
-#line 260 "paper/pdas.nw"
+#line 282 "paper/pdas.nw"
 /* the guide's vectors, nc each; nonzero when out of memory */
-static int alloc_guide(Pdas_guide *ip, size_t nc)
+static int alloc_guide(Pdas_guide *gd, size_t nc)
 {
-  ip->s = malloc(nc * sizeof *ip->s), ip->t = malloc(nc * sizeof *ip->t);
-  ip->ds = malloc(nc * sizeof *ip->ds), ip->dt = malloc(nc * sizeof *ip->dt);
-  ip->as = malloc(nc * sizeof *ip->as), ip->at = malloc(nc * sizeof *ip->at);
-  ip->b = malloc(nc * sizeof *ip->b), ip->db = malloc(nc * sizeof *ip->db);
-  ip->ab = malloc(nc * sizeof *ip->ab);
-  ip->h = malloc(nc * sizeof *ip->h);
-  ip->pred = malloc(nc), ip->own = malloc(nc);
-  return !ip->s || !ip->t || !ip->ds || !ip->dt || !ip->as || !ip->at
-         || !ip->b || !ip->db || !ip->ab || !ip->h || !ip->pred || !ip->own;
+  gd->s = malloc(nc * sizeof *gd->s), gd->t = malloc(nc * sizeof *gd->t);
+  gd->ds = malloc(nc * sizeof *gd->ds), gd->dt = malloc(nc * sizeof *gd->dt);
+  gd->as = malloc(nc * sizeof *gd->as), gd->at = malloc(nc * sizeof *gd->at);
+  gd->b = malloc(nc * sizeof *gd->b), gd->db = malloc(nc * sizeof *gd->db);
+  gd->ab = malloc(nc * sizeof *gd->ab);
+  gd->h = malloc(nc * sizeof *gd->h);
+  gd->pred = malloc(nc), gd->own = malloc(nc);
+  return !gd->s || !gd->t || !gd->ds || !gd->dt || !gd->as || !gd->at
+         || !gd->b || !gd->db || !gd->ab || !gd->h || !gd->pred || !gd->own;
 }
 
 int pdas_alloc(Qp_workspace *w, Status *st)
@@ -53,21 +53,21 @@ int pdas_alloc(Qp_workspace *w, Status *st)
   size_t nc = (size_t) w->nk + 1;
   pd->fr = malloc(nc * sizeof *pd->fr), pd->r = malloc(nc * sizeof *pd->r);
   pd->prev = malloc(nc), pd->moved = malloc(nc);
-  if (!pd->fr || !pd->r || !pd->prev || !pd->moved || alloc_guide(&pd->ip, nc))
+  if (!pd->fr || !pd->r || !pd->prev || !pd->moved || alloc_guide(&pd->gd, nc))
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (pdas, "
                       "nc = %d)", w->nk);
   return STATUS_OK;
 }
-#line 288 "paper/pdas.nw"
+#line 310 "paper/pdas.nw"
 void pdas_free(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   free(pd->fr), free(pd->r), free(pd->prev), free(pd->moved);
-  free(pd->ip.s), free(pd->ip.t), free(pd->ip.ds), free(pd->ip.dt);
-  free(pd->ip.as), free(pd->ip.at), free(pd->ip.h), free(pd->ip.pred), free(pd->ip.own);
-  free(pd->ip.b), free(pd->ip.db), free(pd->ip.ab);
+  free(pd->gd.s), free(pd->gd.t), free(pd->gd.ds), free(pd->gd.dt);
+  free(pd->gd.as), free(pd->gd.at), free(pd->gd.h), free(pd->gd.pred), free(pd->gd.own);
+  free(pd->gd.b), free(pd->gd.db), free(pd->gd.ab);
 }
-#line 318 "paper/pdas.nw"
+#line 340 "paper/pdas.nw"
 /* 1 if a step past kkt <= tol is to be taken to the set that the state
    calls for (below): room for it, a change called for by more than the
    rounding rho_f of a force, none changed back, none tangential */
@@ -97,55 +97,55 @@ int pdas_iterate(Qp_workspace *w, Status *st)
   int code;
   if (!w->cond->condensed) {
     
+#line 391 "paper/pdas.nw"
+if ((code = qp_condense(w, st))) return code;
+if (pd->warm) condense_states_at(w->cond, w->x, w->T);
 #line 369 "paper/pdas.nw"
-if ((code = condense_factor(w, st))) return code;
-if (pd->warm) condense_states_at_x(w);
-#line 347 "paper/pdas.nw"
   }
   if (w->qp->slides) hold_stopping(w);
   if (w->iter > 0) guide(w);
-  if (w->qp->slides && pd->ip.guided) hold_stopping(w);
-  if ((code = pdas_newton_step(w)) == SINGULAR && pd->ip.guided) {
-    memcpy(w->cond->act, pd->ip.own, (size_t) w->nk); /* the guide's set: retake */
-    pd->ip.guided = 0;
-    code = pdas_newton_step(w);
+  if (w->qp->slides && pd->gd.guided) hold_stopping(w);
+  if ((code = pdas_step(w)) == SINGULAR && pd->gd.guided) {
+    memcpy(w->cond->act, pd->gd.own, (size_t) w->nk); /* the guide's set: retake */
+    pd->gd.guided = 0;
+    code = pdas_step(w);
   }
   if (code == SINGULAR && w->iter == 0 && pd->warm) {
     pdas_set(w, 0), w->cond->condensed = 1; /* the guess holds nothing: cold */
-    code = pdas_newton_step(w);
+    code = pdas_step(w);
   }
   if (code == SINGULAR)
-    return qp_not_held(w, st, "the Newton matrix is singular", count_act(w));
-  condense_forces(w);
-  w->kkt = condense_kkt(w);
+    return qp_not_held(w, st, "the step matrix is singular", count_act(w));
+  condense_forces(w->cond, w->T);
+  w->kkt = condense_kkt(w->cond, w->T, w->normA, w->gamma);
   
-#line 416 "paper/pdas.nw"
+#line 438 "paper/pdas.nw"
 memcpy(pd->prev, w->cond->act, (size_t) w->nk);
-int same = condense_predict(w), solved = w->kkt <= w->opt.tol;
+int same = condense_predict(w->cond, w->T), solved = w->kkt <= w->opt.tol;
 if (solved && !same && settle(w)) {
   w->iter++;                           /* a step more, to the forces' set */
   return pdas_iterate(w, st);
 }
 if (!same && !solved && w->iter + 1 < w->opt.max_iter) return STATUS_OK;
-if ((code = condense_expand(w, st))) return code;
-if (w->kkt > w->opt.tol && (same || solved) && (code = condense_refine(w, st)))
+if ((code = qp_expand(w, st))) return code;
+if (w->kkt > w->opt.tol && (same || solved) && (code = qp_refine(w, st)))
   return code;
 if (!same || w->kkt <= w->opt.tol) return STATUS_OK;
 return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
-  "Newton step %d, and its state, refined once, has kkt = %.3g > tol = "
+  "active-set step %d, and its state, refined once, has kkt = %.3g > tol = "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
-#line 365 "paper/pdas.nw"
+#line 387 "paper/pdas.nw"
 }
-#line 450 "paper/pdas.nw"
-/* y = lo on the active set, the solution of the Newton system off it */
-static int pdas_newton_step(Qp_workspace *w)
+#line 472 "paper/pdas.nw"
+/* y = lo on the active set, the solution of the step system off it */
+static int pdas_step(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Condense *cd = w->cond;
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 474 "paper/pdas.nw"
+#line 496 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (cd->act[c] == CONDENSE_HELD) cd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -157,7 +157,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) cd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 458 "paper/pdas.nw"
+#line 480 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -167,7 +167,7 @@ for (int a = 0; a < m; a++) {
   for (int a = 0; a < m; a++) cd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
-#line 555 "paper/pdas.nw"
+#line 577 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -186,7 +186,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 577 "paper/pdas.nw"
+#line 599 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -207,7 +207,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 536 "paper/pdas.nw"
+#line 558 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -222,7 +222,7 @@ static int hold_stopping(Qp_workspace *w)
   }
   return held > 0;
 }
-#line 607 "paper/pdas.nw"
+#line 629 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -235,7 +235,7 @@ static int guide_start(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Condense *cd = w->cond;
-  Pdas_guide *ip = &pd->ip;
+  Pdas_guide *gd = &pd->gd;
   int nk = w->nk;
   double worst = 0;
   for (int c = 0; c < nk; c++) {
@@ -249,39 +249,39 @@ static int guide_start(Qp_workspace *w)
     const double *Sc = cd->S + (size_t) c * nk;
     double h = -cd->f[c], slide = cd->y[c] - w->pos[c];
     for (int e = 0; e < nk; e++) h += Sc[e] * w->pos[e];
-    ip->h[c] = h, ip->b[c] = 0;
+    gd->h[c] = h, gd->b[c] = 0;
     if (c < w->nc) {
-      ip->s[c] = slide + delta / w->d[w->ik[c]];
-      ip->t[c] = w->T[c] + delta;
-      if (!(ip->s[c] > 0 && ip->t[c] > 0)) return 0;
+      gd->s[c] = slide + delta / w->d[w->ik[c]];
+      gd->t[c] = w->T[c] + delta;
+      if (!(gd->s[c] > 0 && gd->t[c] > 0)) return 0;
     } else if (!slips(w, c)) {
-      ip->s[c] = slide, ip->t[c] = w->flo[c];
+      gd->s[c] = slide, gd->t[c] = w->flo[c];
     } else {
       
-#line 656 "paper/pdas.nw"
+#line 678 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
-ip->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
-ip->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
-ip->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
-if (!(ip->s[c] > 0 && ip->b[c] > 0 && isfinite(ip->t[c]))) return 0;
-#line 642 "paper/pdas.nw"
+gd->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
+gd->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
+gd->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
+if (!(gd->s[c] > 0 && gd->b[c] > 0 && isfinite(gd->t[c]))) return 0;
+#line 664 "paper/pdas.nw"
     }
   }
-  memcpy(ip->pred, cd->act, (size_t) nk);   /* its first prediction */
-  ip->state = GUIDE_ON;
+  memcpy(gd->pred, cd->act, (size_t) nk);   /* its first prediction */
+  gd->state = GUIDE_ON;
   return 1;
 }
-#line 702 "paper/pdas.nw"
+#line 724 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
                       double *eb, double *u, double *v, double *D)
 {
-  const Pdas_guide *ip = &w->pdas.ip;
-  *u = ip->t[c] - w->flo[c], *v = w->fhi[c] - ip->t[c];
-  *es = sm - ip->s[c] * *u - (cs ? cs[c] * ct[c] : 0);
-  *eb = sm - ip->b[c] * *v + (cs ? cb[c] * ct[c] : 0);
-  *D = 1 / (ip->s[c] / *u + ip->b[c] / *v);
+  const Pdas_guide *gd = &w->pdas.gd;
+  *u = gd->t[c] - w->flo[c], *v = w->fhi[c] - gd->t[c];
+  *es = sm - gd->s[c] * *u - (cs ? cs[c] * ct[c] : 0);
+  *eb = sm - gd->b[c] * *v + (cs ? cb[c] * ct[c] : 0);
+  *D = 1 / (gd->s[c] / *u + gd->b[c] / *v);
 }
 
 /* the largest alpha in (0, 1] that keeps the gaps and slides (primal)
@@ -289,18 +289,18 @@ static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
 static double guide_to_bound(const Qp_workspace *w, const double *ds,
                              const double *dt, const double *db, int dual)
 {
-  const Pdas_guide *ip = &w->pdas.ip;
+  const Pdas_guide *gd = &w->pdas.gd;
   double a = 1;
   for (int c = 0; c < w->nk; c++) {
     if (c >= w->nc && !slips(w, c)) continue;
     if (!dual) {
-      if (ds[c] < 0) a = fmin(a, -ip->s[c] / ds[c]);
-      if (c >= w->nc && db[c] < 0) a = fmin(a, -ip->b[c] / db[c]);
+      if (ds[c] < 0) a = fmin(a, -gd->s[c] / ds[c]);
+      if (c >= w->nc && db[c] < 0) a = fmin(a, -gd->b[c] / db[c]);
     } else if (c < w->nc) {
-      if (dt[c] < 0) a = fmin(a, -ip->t[c] / dt[c]);
+      if (dt[c] < 0) a = fmin(a, -gd->t[c] / dt[c]);
     } else {
-      if (dt[c] < 0) a = fmin(a, -(ip->t[c] - w->flo[c]) / dt[c]);
-      if (dt[c] > 0) a = fmin(a, (w->fhi[c] - ip->t[c]) / dt[c]);
+      if (dt[c] < 0) a = fmin(a, -(gd->t[c] - w->flo[c]) / dt[c]);
+      if (dt[c] > 0) a = fmin(a, (w->fhi[c] - gd->t[c]) / dt[c]);
     }
   }
   return a;
@@ -312,13 +312,13 @@ static void guide_direction(Qp_workspace *w, double sm, const double *cs,
                             const double *ct, const double *cb, double *ds,
                             double *dt, double *db)
 {
-  Pdas_guide *ip = &w->pdas.ip;
+  Pdas_guide *gd = &w->pdas.gd;
   int nk = w->nk;
   double es, eb, u, v, D;
   for (int c = 0; c < nk; c++) {
     if (c < w->nc) {
-      double e = (sm - (cs ? cs[c] * ct[c] : 0)) / ip->s[c];
-      ds[c] = -w->pdas.r[c] - ip->t[c] + e, dt[c] = e;
+      double e = (sm - (cs ? cs[c] * ct[c] : 0)) / gd->s[c];
+      ds[c] = -w->pdas.r[c] - gd->t[c] + e, dt[c] = e;
     } else if (!slips(w, c)) ds[c] = -w->pdas.r[c], dt[c] = 0;
     else {
       slip_pair(w, c, sm, cs, ct, cb, &es, &eb, &u, &v, &D);
@@ -331,11 +331,11 @@ static void guide_direction(Qp_workspace *w, double sm, const double *cs,
   gsl_linalg_cholesky_svx(&M.matrix, &x.vector);
   for (int c = 0; c < nk; c++) {
     db[c] = 0;
-    if (c < w->nc) dt[c] += -ip->t[c] - ip->t[c] / ip->s[c] * ds[c];
+    if (c < w->nc) dt[c] += -gd->t[c] - gd->t[c] / gd->s[c] * ds[c];
     else if (slips(w, c)) {
       slip_pair(w, c, sm, cs, ct, cb, &es, &eb, &u, &v, &D);
       dt[c] = D * (dt[c] - ds[c]);
-      ds[c] = (es - ip->s[c] * dt[c]) / u, db[c] = (eb + ip->b[c] * dt[c]) / v;
+      ds[c] = (es - gd->s[c] * dt[c]) / u, db[c] = (eb + gd->b[c] * dt[c]) / v;
     }
   }
 }
@@ -347,13 +347,13 @@ static double guide_products(const Qp_workspace *w, double ap, double ad,
                              const double *ds, const double *dt,
                              const double *db, int *pairs)
 {
-  const Pdas_guide *ip = &w->pdas.ip;
+  const Pdas_guide *gd = &w->pdas.gd;
   double sum = 0;
   *pairs = 0;
   for (int c = 0; c < w->nk; c++) {
-    double s = ds ? ip->s[c] + ap * ds[c] : ip->s[c];
-    double t = ds ? ip->t[c] + ad * dt[c] : ip->t[c];
-    double b = ds ? ip->b[c] + ap * db[c] : ip->b[c];
+    double s = ds ? gd->s[c] + ap * ds[c] : gd->s[c];
+    double t = ds ? gd->t[c] + ad * dt[c] : gd->t[c];
+    double b = ds ? gd->b[c] + ap * db[c] : gd->b[c];
     if (c < w->nc) sum += s * t, ++*pairs;
     else if (slips(w, c))
       sum += s * (t - w->flo[c]) + b * (w->fhi[c] - t),
@@ -368,16 +368,16 @@ static int guide_step(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Condense *cd = w->cond;
-  Pdas_guide *ip = &pd->ip;
+  Pdas_guide *gd = &pd->gd;
   int nk = w->nk, pairs;
   double es, eb, u, v, D;
   for (int c = 0; c < nk; c++) {
     const double *Sc = cd->S + (size_t) c * nk;
-    double r = ip->h[c] - ip->t[c];
-    for (int e = 0; e < nk; e++) r += Sc[e] * (ip->s[e] - ip->b[e]);
+    double r = gd->h[c] - gd->t[c];
+    for (int e = 0; e < nk; e++) r += Sc[e] * (gd->s[e] - gd->b[e]);
     pd->r[c] = r;
     memcpy(cd->M + (size_t) c * nk, Sc, (size_t) nk * sizeof *cd->M);
-    if (c < w->nc) cd->M[(size_t) c * nk + c] += ip->t[c] / ip->s[c];
+    if (c < w->nc) cd->M[(size_t) c * nk + c] += gd->t[c] / gd->s[c];
     else if (slips(w, c)) {
       slip_pair(w, c, 0, NULL, NULL, NULL, &es, &eb, &u, &v, &D);
       cd->M[(size_t) c * nk + c] += D;
@@ -386,46 +386,46 @@ static int guide_step(Qp_workspace *w)
   double mu = guide_products(w, 0, 0, NULL, NULL, NULL, &pairs) / pairs;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, nk, nk);
   if (gsl_linalg_cholesky_decomp1(&M.matrix)) return 1;
-  guide_direction(w, 0, NULL, NULL, NULL, ip->as, ip->at, ip->ab);
-  double ap = guide_to_bound(w, ip->as, ip->at, ip->ab, 0);
-  double ad = guide_to_bound(w, ip->as, ip->at, ip->ab, 1);
-  double mua = guide_products(w, ap, ad, ip->as, ip->at, ip->ab, &pairs);
+  guide_direction(w, 0, NULL, NULL, NULL, gd->as, gd->at, gd->ab);
+  double ap = guide_to_bound(w, gd->as, gd->at, gd->ab, 0);
+  double ad = guide_to_bound(w, gd->as, gd->at, gd->ab, 1);
+  double mua = guide_products(w, ap, ad, gd->as, gd->at, gd->ab, &pairs);
   double sigma = pow(mua / pairs / mu, 3);
-  guide_direction(w, sigma * mu, ip->as, ip->at, ip->ab, ip->ds, ip->dt, ip->db);
-  double a = fmin(1, 0.995 * fmin(guide_to_bound(w, ip->ds, ip->dt, ip->db, 0),
-                                  guide_to_bound(w, ip->ds, ip->dt, ip->db, 1)));
+  guide_direction(w, sigma * mu, gd->as, gd->at, gd->ab, gd->ds, gd->dt, gd->db);
+  double a = fmin(1, 0.995 * fmin(guide_to_bound(w, gd->ds, gd->dt, gd->db, 0),
+                                  guide_to_bound(w, gd->ds, gd->dt, gd->db, 1)));
   int inside = 1;
   for (int c = 0; c < nk; c++) {
-    ip->s[c] += a * ip->ds[c], ip->t[c] += a * ip->dt[c], ip->b[c] += a * ip->db[c];
-    inside &= isfinite(ip->s[c] + ip->t[c] + ip->b[c]);
-    if (c < w->nc) inside &= ip->s[c] > 0 && ip->t[c] > 0;
+    gd->s[c] += a * gd->ds[c], gd->t[c] += a * gd->dt[c], gd->b[c] += a * gd->db[c];
+    inside &= isfinite(gd->s[c] + gd->t[c] + gd->b[c]);
+    if (c < w->nc) inside &= gd->s[c] > 0 && gd->t[c] > 0;
     else if (slips(w, c))
-      inside &= ip->s[c] > 0 && ip->b[c] > 0 && ip->t[c] > w->flo[c] && ip->t[c] < w->fhi[c];
+      inside &= gd->s[c] > 0 && gd->b[c] > 0 && gd->t[c] > w->flo[c] && gd->t[c] < w->fhi[c];
   }
   return !inside;
 }
-#line 843 "paper/pdas.nw"
+#line 865 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;
   Condense *cd = w->cond;
-  Pdas_guide *ip = &pd->ip;
+  Pdas_guide *gd = &pd->gd;
   int nk = w->nk, changed = 0;
-  ip->guided = 0;
-  if (ip->state == GUIDE_STOPPED) return;
-  if (ip->state == GUIDE_OFF && !guide_start(w)) return;
-  if (guide_step(w)) { ip->state = GUIDE_STOPPED; return; }
+  gd->guided = 0;
+  if (gd->state == GUIDE_STOPPED) return;
+  if (gd->state == GUIDE_OFF && !guide_start(w)) return;
+  if (guide_step(w)) { gd->state = GUIDE_STOPPED; return; }
   for (int c = 0; c < nk; c++) {
-    double z = ip->t[c] - w->d[w->ik[c]] * (ip->s[c] - ip->b[c]);
+    double z = gd->t[c] - w->d[w->ik[c]] * (gd->s[c] - gd->b[c]);
     char a = c < w->nc
-             ? (ip->t[c] > w->d[w->ik[c]] * ip->s[c] ? CONDENSE_HELD : CONDENSE_LO)
+             ? (gd->t[c] > w->d[w->ik[c]] * gd->s[c] ? CONDENSE_HELD : CONDENSE_LO)
            : !slips(w, c) || z <= w->flo[c] ? CONDENSE_LO
            : z > w->fhi[c] ? CONDENSE_HI : CONDENSE_HELD;
-    changed |= a != ip->pred[c];
-    ip->pred[c] = a;
+    changed |= a != gd->pred[c];
+    gd->pred[c] = a;
   }
   if (!changed) return;
-  memcpy(ip->own, cd->act, (size_t) nk);
-  memcpy(cd->act, ip->pred, (size_t) nk);
-  ip->guided = 1;
+  memcpy(gd->own, cd->act, (size_t) nk);
+  memcpy(cd->act, gd->pred, (size_t) nk);
+  gd->guided = 1;
 }

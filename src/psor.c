@@ -1,7 +1,8 @@
-#line 47 "paper/psor.nw"
+#line 60 "paper/psor.nw"
 #include "qp_private.h"
+#include "psor.h"
 
-#line 51 "paper/psor.nw"
+#line 65 "paper/psor.nw"
 /* one projected SOR sweep over all unknowns, then the residual */
 int psor_iterate(Qp_workspace *w, Status *st)
 {

@@ -1,96 +1,19 @@
-#line 385 "paper/qp.nw"
+#line 420 "paper/qp.nw"
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qp_private.h"
-#include "condense.h"
-#line 376 "paper/qp.nw"
-static double qp_norm_bound(const cholmod_sparse *A);
+#include "pdas.h"
+#include "mprgp.h"
+#include "psor.h"
+#line 407 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st);
 static int check_problem(const Qp *qp, const Qp_options *opt, cholmod_common *cm, Status *st);
 static int alloc_common(Qp_workspace *w, Status *st);
 static int check_pattern(Qp_workspace *w, Status *st);
 static int not_converged(const Qp_workspace *w, Status *st);
-#line 575 "paper/qp.nw"
-/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
-   if known, else NULL; T (nc, may be NULL) receives the contact forces */
-double qp_kkt_eval(const Qp *qp, double normA, const double *x,
-                   const double *g, double *T)
-{
-  const double *b = qp->b;
-  const Sparse_index *Ap = qp->A->p;
-  double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
-  int m = 0;                               /* the longest column of A */
-  for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
-    double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
-    if (Ap[j + 1] - Ap[j] > m) m = (int) (Ap[j + 1] - Ap[j]);
-    bb += b[j] * b[j];
-    axax += axj * axj;
-    xx += x[j] * x[j];
-    if (c < qp->nc && qp->ic[c] == j) {
-      
-#line 604 "paper/qp.nw"
-double gap = x[j] - qp->lo[c];
-if (r < 0) tn += r * r;          /* a pulling contact force */
-if (gap < 0) inf += gap * gap;   /* a penetration */
-comp += fabs(r) * fabs(gap);     /* a force without contact */
-ll += qp->lo[c] * qp->lo[c];
-if (T) T[c] = r;
-#line 592 "paper/qp.nw"
-      c++;
-    } else if (k < qp->nt && qp->it[k] == j) {
-      
-#line 617 "paper/qp.nw"
-qp_slip_terms(qp->slip[k], r, x[j], &tn, &comp);
-if (T) T[qp->nc + k] = r;
-#line 595 "paper/qp.nw"
-      k++;
-    } else
-      rf += r * r;
-  }
-  
-#line 625 "paper/qp.nw"
-double sf = sqrt(bb) + sqrt(axax), su = sqrt(xx) + sqrt(ll);
-double gm = qp_gamma(m + 2);             /* m + 1 terms, and x rounded */
-double rho = gm * (normA * sqrt(xx) + sqrt(bb));
-return qp_kkt_combine(sqrt(rf), sqrt(tn), sqrt(inf), comp, sf, su, rho, gm);
-#line 600 "paper/qp.nw"
-}
-#line 632 "paper/qp.nw"
-double qp_kkt(const Qp *qp, const double *x, double *T)
-{
-  return qp_kkt_eval(qp, qp_norm_bound(qp->A), x, NULL, T);
-}
-#line 640 "paper/qp.nw"
-/* max_j sum_i |A_ij|: an upper bound of ||A||_2 and of || |A| ||_2 */
-static double qp_norm_bound(const cholmod_sparse *A)
-{
-  const Sparse_index *Ap = A->p;
-  const double *Ax = A->x;
-  double m = 0;
-  for (int j = 0; j < (int) A->ncol; j++) {
-    double sum = 0;
-    for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) sum += fabs(Ax[k]);
-    m = fmax(m, sum);
-  }
-  return m;
-}
-#line 701 "paper/qp.nw"
-/* y = A x */
-void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
-{
-  for (int j = 0; j < (int) A->ncol; j++) y[j] = qp_row_dot(A, j, x);
-}
-
-/* g = A x - b, then kkt and T at x */
-void qp_refresh(Qp_workspace *w)
-{
-  qp_matvec(w->qp->A, w->x, w->g);
-  for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
-  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
-}
-#line 721 "paper/qp.nw"
+#line 758 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -101,15 +24,16 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   w->n = (int) qp->A->ncol, w->nc = qp->nc, w->nk = qp->nc + qp->nt;
   int code = alloc_common(w, st);
   if (!code) code = check_pattern(w, st);
+  Condense_contact ct = { w->nc, qp->b, w->d, w->pos, w->flo, w->fhi };
   if (!code && (opt->method == QP_PDAS || (opt->method == QP_CGSSOR && qp->nt))
-      && !(w->cond = condense_alloc(qp->A, w->nk, w->ik, cm, st)))
-    code = st->code;               /* MPRGP with friction condenses too */
+      && !(w->cond = condense_alloc(qp->A, w->nk, w->ik, &ct, cm, st)))
+    code = st->code;               /* CG--SSOR with friction condenses too */
   if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
   if (!code && opt->method == QP_CGSSOR) code = mprgp_alloc(w, st);
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 743 "paper/qp.nw"
+#line 781 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -132,7 +56,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 886 "paper/qp.nw"
+#line 924 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -144,15 +68,15 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 765 "paper/qp.nw"
+#line 803 "paper/qp.nw"
   return check_options(opt, st);
 }
-#line 770 "paper/qp.nw"
+#line 808 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
-#line 779 "paper/qp.nw"
+#line 817 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -167,7 +91,7 @@ static int check_options(const Qp_options *opt, Status *st)
                       opt->omega);
   return STATUS_OK;
 }
-#line 800 "paper/qp.nw"
+#line 838 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -197,7 +121,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 837 "paper/qp.nw"
+#line 875 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -216,7 +140,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
-#line 859 "paper/qp.nw"
+#line 897 "paper/qp.nw"
 void qp_release(Qp_workspace *w)
 {
   if (w) condense_release(w->cond);
@@ -233,7 +157,7 @@ void qp_free(Qp_workspace *w)
   free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
   free(w);
 }
-#line 908 "paper/qp.nw"
+#line 946 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -257,7 +181,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 938 "paper/qp.nw"
+#line 976 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -280,7 +204,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 963 "paper/qp.nw"
+#line 1001 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 static int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -288,7 +212,7 @@ static int qp_read_values(Qp_workspace *w, Status *st)
   if (!code) code = read_vectors(w, st);
   return code;
 }
-#line 975 "paper/qp.nw"
+#line 1013 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -302,7 +226,7 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   if (w->opt.method == QP_CGSSOR) mprgp_set(w);
   return STATUS_OK;
 }
-#line 996 "paper/qp.nw"
+#line 1034 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -318,13 +242,7 @@ int qp_iterate(Qp_workspace *w, Status *st)
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 1014 "paper/qp.nw"
-const char *qp_method_name(Qp_method m)
-{
-  return m == QP_PDAS ? "pdas" : m == QP_PSOR ? "psor"
-       : m == QP_CGSSOR ? "cgssor" : "?";
-}
-#line 1036 "paper/qp.nw"
+#line 1074 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -343,7 +261,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     code = mprgp_end(w, st);        /* for qp_schur; after the copies */
   return code;
 }
-#line 1067 "paper/qp.nw"
+#line 1105 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -351,25 +269,49 @@ static int not_converged(const Qp_workspace *w, Status *st)
     qp_method_name(w->opt.method), w->iter, w->iter == 1 ? "" : "s",
     w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
-#line 1077 "paper/qp.nw"
-/* bounded unknowns at their bound */
-int qp_count_active(const Qp_workspace *w)
+#line 1198 "paper/qp.nw"
+/* w's problem without friction condensed onto its bounded unknowns at
+   the values of the last qp_set; who names the caller in a message */
+static Condense *condense_apart(const Qp_workspace *w, const char *who,
+                                Status *st)
 {
-  int m = 0;
-  for (int c = 0; c < w->nc; c++) m += !qp_is_free(w, w->qp->ic[c]);
-  return m;
+  Condense_contact ct = { w->nc, w->qp->b, w->d, w->pos, w->flo, w->fhi };
+  Condense *cd = condense_alloc(w->qp->A, w->nc, w->ik, &ct, w->cm, st);
+  if (!cd) return NULL;
+  int code = condense_factor(cd, st);
+  if (code == CONDENSE_SINGULAR)
+    status_set(st, STATUS_NUMERIC, "%s: A is singular even with every "
+               "bounded unknown held", who);
+  if (code) { condense_free(cd); return NULL; }
+  return cd;
 }
-#line 1092 "paper/qp.nw"
-/* (4.3) has no solution: why, with how many bounds active */
-int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
-                int active)
+
+/* the workspace's own condensation when it belongs to the values of the
+   last qp_set, else NULL */
+static Condense *condensed(const Qp_workspace *w)
 {
-  return status_set(st, STATUS_NUMERIC, "%s: the body is not held with %d "
-    "of %d bounds active: %s, at iteration %d",
-    qp_method_name(w->opt.method), active, w->nc, why, w->iter + 1);
+  return w->cond && w->cond->condensed ? w->cond : NULL;
 }
-#line 1124 "paper/qp.nw"
+#line 1223 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
-  return condense_schur(w, shift, S, st);
+  Condense *cd = condensed(w);
+  if (cd) return condense_schur(cd, shift, S, st);
+  if (!(cd = condense_apart(w, "qp_schur", st))) return st->code;
+  int code = condense_schur(cd, shift, S, st);
+  condense_free(cd);
+  return code;
+}
+#line 1237 "paper/qp.nw"
+int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
+               char *held, Status *st)
+{
+  Condense *cd = condensed(w), *own = NULL;
+  if (!cd && w->nk > w->nc)
+    return status_set(st, STATUS_INPUT, "adjoint: no condensation of the "
+                      "friction state to solve with");
+  if (!cd && !(cd = own = condense_apart(w, "adjoint", st))) return st->code;
+  int code = condense_adjoint(cd, w->x, g, lam, held, st);
+  condense_free(own);
+  return code;
 }

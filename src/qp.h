@@ -1,10 +1,10 @@
-#line 58 "paper/qp.nw"
+#line 60 "paper/qp.nw"
 #ifndef CONTACTOPT_QP_H
 #define CONTACTOPT_QP_H
 #include "sparse.h"
 #include "status.h"
 
-#line 72 "paper/qp.nw"
+#line 74 "paper/qp.nw"
 /* The discrete state problem (4.3): minimise 1/2 x'Ax - b'x subject to
    x[ic[c]] >= lo[c], c = 0..nc-1; with given friction, plus
    sum_k s_k |x[it[k]]|.  A is symmetric positive semidefinite, and
@@ -23,7 +23,7 @@ typedef struct {
                               slipping unknown and 0 at every bounded one
                               (only friction holds the body sideways) */
 } Qp;
-#line 93 "paper/qp.nw"
+#line 95 "paper/qp.nw"
 typedef enum { QP_PDAS, QP_PSOR, QP_CGSSOR } Qp_method;
 
 typedef struct {
@@ -37,16 +37,16 @@ typedef struct {
 Qp_options qp_options_default(Qp_method method);
 /* "pdas", "psor", "cgssor", or "?" */
 const char *qp_method_name(Qp_method method);
-#line 109 "paper/qp.nw"
+#line 111 "paper/qp.nw"
 typedef struct {
-  int iterations;          /* sweeps, CG steps or Newton steps used */
+  int iterations;          /* sweeps, CG steps or active-set steps used */
   double kkt;              /* qp_kkt at the returned x */
   int active;              /* bounded unknowns at their bound */
   int converged;           /* kkt <= tol */
 } Qp_report;
 
 typedef struct Qp_workspace Qp_workspace;
-#line 125 "paper/qp.nw"
+#line 127 "paper/qp.nw"
 /* set / iterate / test, GSL style: the caller may own the loop */
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st);
@@ -58,7 +58,7 @@ const double *qp_x(const Qp_workspace *w);   /* the current iterate */
    makes anew; the analysis and the iterate stay */
 void qp_release(Qp_workspace *w);
 void qp_free(Qp_workspace *w);
-#line 139 "paper/qp.nw"
+#line 141 "paper/qp.nw"
 /* The whole loop: from x0 (NULL: cold start) to x, with the contact forces
    T[c] = (Ax - b)[ic[c]], then (friction) T[nc + k] = (Ax - b)[it[k]];
    STATUS_NUMERIC when not converged. */
@@ -74,9 +74,9 @@ double qp_kkt(const Qp *qp, const double *x, double *T);
    onto the bounded unknowns, A_cc - A_cu A_uu^-1 A_uc (slipping unknowns
    among the u, as if frictionless), with its diagonal
    raised by shift A_ii (the Schur complement of A with those diagonals
-   raised), at the values the last qp_set read; from the Newton method's
+   raised), at the values the last qp_set read; from PDAS's
    own S when it has one.  Needs GSL's error handler off
-   (gsl_set_error_handler_off), as the Newton method does. */
+   (gsl_set_error_handler_off), as PDAS needs too. */
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
 
 /* lam (n) = the adjoint of the last state solved: A_FF lam_F = g_F and
@@ -91,5 +91,5 @@ int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
 /* y = A x, A stored with both triangles (as a Qp's); the package's one
    sparse product, which the tests use too */
 void qp_matvec(const cholmod_sparse *A, const double *x, double *y);
-#line 68 "paper/qp.nw"
+#line 70 "paper/qp.nw"
 #endif

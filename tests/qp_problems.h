@@ -453,7 +453,7 @@ static inline void check_not_held(int m)
     Qp_options o = options(methods[m]);
     o.max_iter = 2000;
     Run r = run(P[k], o, NULL, x, NULL);
-    /* pdas and cgssor find it (a singular Newton matrix, a direction
+    /* pdas and cgssor find it (a singular step matrix, a direction
        that nothing resists); psor runs out of sweeps and says what it
        measured: none of the bounds is active */
     int said = methods[m] == QP_PSOR

@@ -144,7 +144,7 @@ static void analysis_fails(void)
   void *(*c)(size_t, size_t) = SuiteSparse_config.calloc_func;
   SuiteSparse_config.malloc_func = no_malloc, SuiteSparse_config.calloc_func = no_calloc;
   st.code = STATUS_OK, st.msg[0] = 0;
-  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, &cm, &st);
+  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, NULL, &cm, &st);
   SuiteSparse_config.malloc_func = m, SuiteSparse_config.calloc_func = c;
   check(!cd && st.code == STATUS_MEMORY && strstr(st.msg, "CHOLMOD failed to analyse A: out of memory "
         "(CHOLMOD status -2, CHOLMOD_OUT_OF_MEMORY)"),

@@ -6,7 +6,7 @@
 #include "weakly_active.h"
 
 /* pdas from psor's solution at a tighter tolerance: the active set guessed
-   from it is right, and one Newton step ends the solve */
+   from it is right, and one active-set step ends the solve */
 static void check_warm_pdas(Qp_problem *P)
 {
   double *x = malloc(P->n * sizeof *x);
@@ -15,7 +15,7 @@ static void check_warm_pdas(Qp_problem *P)
   o = options(QP_PDAS), o.tol = 1e-14;
   Run r2 = run(P, o, x, x, NULL);
   check(!r.code && !r2.code && r2.rep.iterations == 1, "%s pdas, tol 1e-14, "
-        "warm from psor's solution (kkt %.2g): %d Newton step, kkt %.3g%s",
+        "warm from psor's solution (kkt %.2g): %d active-set step, kkt %.3g%s",
         P->name, r.rep.kkt, r2.rep.iterations, r2.rep.kkt, r2.st.msg);
   free(x);
 }
