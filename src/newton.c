@@ -5,7 +5,7 @@
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "newton_private.h"
-#line 228 "paper/newton.nw"
+#line 230 "paper/newton.nw"
 Newton_workspace *newton_alloc(int n, int m, Status *st)
 {
   Newton_workspace *w = calloc(1, sizeof *w);
@@ -53,7 +53,7 @@ void newton_free(Newton_workspace *w)
   if (w->Sig) gsl_matrix_free(w->Sig);
   free(w);
 }
-#line 282 "paper/newton.nw"
+#line 284 "paper/newton.nw"
 /* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double force_scale(const Newton_model *mdl)
 {
@@ -88,37 +88,7 @@ static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 320 "paper/newton.nw"
-/* out = A z (p values) */
-void newton_constraints_times(const Newton_workspace *w, const int *col,
-                              const double *z, double *out)
-{
-  int n = w->n, m = w->m, N = n - 1;
-  const double *v = z + n;
-  for (int i = 0; i < n; i++) out[i] = -z[i], out[n + i] = z[i];
-  for (int i = 0; i < N; i++) {
-    out[2 * n + i] = z[i + 1] - z[i];
-    out[2 * n + N + i] = z[i] - z[i + 1];
-  }
-  for (int c = 0; c < m; c++) out[2 * n + 2 * N + c] = -v[c] - z[col[c]];
-}
-
-/* out = A' y (n+m values) */
-void newton_constraints_transposed(const Newton_workspace *w, const int *col,
-                                   const double *y, double *out)
-{
-  int n = w->n, m = w->m, N = n - 1;
-  for (int i = 0; i < n; i++) out[i] = y[n + i] - y[i];
-  for (int i = 0; i < N; i++) {
-    double up = y[2 * n + i] - y[2 * n + N + i];
-    out[i + 1] += up, out[i] -= up;
-  }
-  for (int c = 0; c < m; c++) {
-    double yc = y[2 * n + 2 * N + c];
-    out[n + c] = -yc, out[col[c]] -= yc;
-  }
-}
-#line 696 "paper/newton.nw"
+#line 701 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 static const double NEWTON_FACE_SOFT = 1e-4;   /* the weight of a soft face */
 
@@ -222,7 +192,7 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
   }
   return 0;
 }
-#line 875 "paper/newton.nw"
+#line 880 "paper/newton.nw"
 /* the point of the face act at the weight of face_weight and, if its
    dual, primal or area residual stays above tol, once more at
    NEWTON_FACE_SOFT times that weight; -1 as face_point */
@@ -234,7 +204,7 @@ static int face_point_soft(Newton_workspace *w, const int *col, double bmax,
   if (!q->finite || fmax(fmax(q->dual, q->primal), q->area) <= tol) return 0;
   return face_point(w, col, bmax, NEWTON_FACE_SOFT * om, q);
 }
-#line 889 "paper/newton.nw"
+#line 894 "paper/newton.nw"
 /* 1 if the point of the face passes; else the face takes the constraints
    its point violates and gives up those of negative multipliers, up to
    NEWTON_FACE_ROUNDS times, while that changes it; *singular counts the
@@ -257,7 +227,7 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 972 "paper/newton.nw"
+#line 977 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
@@ -342,7 +312,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 1083 "paper/newton.nw"
+#line 1088 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -357,9 +327,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 1056 "paper/newton.nw"
+#line 1061 "paper/newton.nw"
     
-#line 1073 "paper/newton.nw"
+#line 1078 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -367,7 +337,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 1057 "paper/newton.nw"
+#line 1062 "paper/newton.nw"
     if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -376,7 +346,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 1102 "paper/newton.nw"
+#line 1107 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -388,7 +358,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 1065 "paper/newton.nw"
+#line 1070 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v, &rep->rounding);

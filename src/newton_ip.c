@@ -1,4 +1,4 @@
-#line 180 "paper/newton.nw"
+#line 181 "paper/newton.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,7 +6,37 @@
 #include <gsl/gsl_linalg.h>
 #include "newton_private.h"
 
-#line 413 "paper/newton.nw"
+#line 325 "paper/newton.nw"
+/* out = A z (p values) */
+void newton_constraints_times(const Newton_workspace *w, const int *col,
+                              const double *z, double *out)
+{
+  int n = w->n, m = w->m, N = n - 1;
+  const double *v = z + n;
+  for (int i = 0; i < n; i++) out[i] = -z[i], out[n + i] = z[i];
+  for (int i = 0; i < N; i++) {
+    out[2 * n + i] = z[i + 1] - z[i];
+    out[2 * n + N + i] = z[i] - z[i + 1];
+  }
+  for (int c = 0; c < m; c++) out[2 * n + 2 * N + c] = -v[c] - z[col[c]];
+}
+
+/* out = A' y (n+m values) */
+void newton_constraints_transposed(const Newton_workspace *w, const int *col,
+                                   const double *y, double *out)
+{
+  int n = w->n, m = w->m, N = n - 1;
+  for (int i = 0; i < n; i++) out[i] = y[n + i] - y[i];
+  for (int i = 0; i < N; i++) {
+    double up = y[2 * n + i] - y[2 * n + N + i];
+    out[i + 1] += up, out[i] -= up;
+  }
+  for (int c = 0; c < m; c++) {
+    double yc = y[2 * n + 2 * N + c];
+    out[n + c] = -yc, out[col[c]] -= yc;
+  }
+}
+#line 418 "paper/newton.nw"
 /* x = T^-1 x, T factored as L D L' by factor_tridiagonal */
 static void tridiagonal_solve(const Newton_workspace *w, double *x)
 {
@@ -84,7 +114,7 @@ static int factor_newton_matrix(Newton_workspace *w, const int *col)
   gsl_matrix_view Sv = gsl_matrix_submatrix(w->Sig, 0, 0, m, m);
   return gsl_linalg_cholesky_decomp1(&Sv.matrix) ? -1 : 0;
 }
-#line 498 "paper/newton.nw"
+#line 503 "paper/newton.nw"
 /* y = K^-1 r (n+m values); r and y may not alias */
 static void newton_matrix_solve(const Newton_workspace *w, const int *col,
                                 const double *r, double *y)
@@ -113,7 +143,7 @@ void newton_bordered_solve(Newton_workspace *w, const int *col, const double *r,
   *dmu = (wy1 + re) / wy2;
   for (int k = 0; k < w->n + w->m; k++) dz[k] -= *dmu * w->y2[k];
 }
-#line 542 "paper/newton.nw"
+#line 547 "paper/newton.nw"
 /* the largest alpha <= 1 with x + alpha dx >= (1 - 0.995) x, x > 0 */
 static double step_to_boundary(const double *x, const double *dx, int k)
 {

@@ -1,9 +1,9 @@
-#line 153 "paper/newton.nw"
+#line 154 "paper/newton.nw"
 #ifndef CONTACTOPT_NEWTON_PRIVATE_H
 #define CONTACTOPT_NEWTON_PRIVATE_H
 #include <gsl/gsl_matrix.h>
 #include "newton.h"
-#line 201 "paper/newton.nw"
+#line 203 "paper/newton.nw"
 struct Newton_workspace {
   int n, m, p;         /* design nodes, contact unknowns, inequalities */
   double *z, *s, *lam; /* n+m, p, p: the iterate, slacks, multipliers */
@@ -28,7 +28,7 @@ struct Newton_workspace {
   double *rdf, *rpf;   /* n+m, p: its residuals */
   unsigned char *act, *tried; /* p: the face now indicated, the last tried */
 };
-#line 158 "paper/newton.nw"
+#line 159 "paper/newton.nw"
 /* out = A z, the constraints at z (columns col of the contact) */
 void newton_constraints_times(const Newton_workspace *w, const int *col,
                               const double *z, double *out);
