@@ -1,4 +1,4 @@
-#line 155 "paper/model.nw"
+#line 159 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -7,10 +7,10 @@
 #include "held.h"
 #include "model.h"
 #include "coulomb.h"
-#line 150 "paper/model.nw"
+#line 154 "paper/model.nw"
 static int model_state(Model *md, Status *st);
 static int model_pressed(const Model *md, Status *st);
-#line 168 "paper/model.nw"
+#line 172 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -25,7 +25,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 188 "paper/model.nw"
+#line 192 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -38,19 +38,19 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 182 "paper/model.nw"
+#line 186 "paper/model.nw"
   
-#line 203 "paper/model.nw"
+#line 207 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 183 "paper/model.nw"
+#line 187 "paper/model.nw"
   return md;
 }
-#line 226 "paper/model.nw"
+#line 230 "paper/model.nw"
 static int model_solve_with(Model *md, const double *X, int rounding,
                             Status *st)
 {
@@ -88,7 +88,7 @@ int model_solve_to_rounding(Model *md, const double *X, Status *st)
 {
   return model_solve_with(md, X, 1, st);
 }
-#line 267 "paper/model.nw"
+#line 271 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved || md->guessed ? md->Q : NULL,
@@ -97,7 +97,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK, md->guessed = 0;
   return rc;
 }
-#line 280 "paper/model.nw"
+#line 284 "paper/model.nw"
 static int model_pressed(const Model *md, Status *st)
 {
   if (!held_lift_free(md->problem)) return 0;
@@ -107,7 +107,7 @@ static int model_pressed(const Model *md, Status *st)
                     "ended with no node pressed onto the foundation, and no side "
                     "holds u2");
 }
-#line 304 "paper/model.nw"
+#line 308 "paper/model.nw"
 void model_contact_gaps(const Model *md, double *g)
 {
   for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
@@ -123,12 +123,12 @@ void model_guess_contact(Model *md, const double *X, const double *g)
   }
   md->guessed = 1;
 }
-#line 333 "paper/model.nw"
+#line 337 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-#line 341 "paper/model.nw"
+#line 345 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -142,7 +142,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-#line 360 "paper/model.nw"
+#line 364 "paper/model.nw"
 void model_release(Model *md)
 {
   if (md) qp_release(md->solver);
@@ -158,7 +158,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 402 "paper/model.nw"
+#line 406 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -171,17 +171,17 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 421 "paper/model.nw"
+#line 425 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 414 "paper/model.nw"
+#line 418 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 487 "paper/model.nw"
+#line 491 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -191,21 +191,21 @@ int model_summary(const Model *md, Model_summary *sum, Status *st)
   memset(sum, 0, sizeof *sum);
   fem_reactions(md->mesh, d, &md->hooke, md->problem, md->Q, r);
   
-#line 508 "paper/model.nw"
+#line 512 "paper/model.nw"
 for (int k = 0; k < d->ndof; k++) {
   int side = d->unknown[k] < 0 ? fem_reaction_side(md->mesh, md->problem, k) : -1;
   if (side >= 0) sum->reaction[side][k % 2] += r[k];
 }
-#line 496 "paper/model.nw"
+#line 500 "paper/model.nw"
   free(r);
   
-#line 515 "paper/model.nw"
+#line 519 "paper/model.nw"
 for (int c = 0; c < d->nc; c++)
   if (md->Q[d->contact[c]] <= md->lo[c]) {
     sum->pressure_max = fmax(sum->pressure_max, model_pressure(md, c));
     sum->contact_length += mesh_tributary(md->mesh, d->contact_col[c]);
   }
-#line 498 "paper/model.nw"
+#line 502 "paper/model.nw"
   for (int t = 0; t < md->mesh->ntri; t++) {
     double s[5];
     model_stress(md, t, s);
@@ -213,7 +213,7 @@ for (int c = 0; c < d->nc; c++)
   }
   return STATUS_OK;
 }
-#line 542 "paper/model.nw"
+#line 546 "paper/model.nw"
 void model_stress(const Model *md, int t, double s[5])
 {
   long double e[3], sigma[3];
@@ -225,14 +225,14 @@ void model_stress(const Model *md, int t, double s[5])
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
-#line 561 "paper/model.nw"
+#line 565 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 575 "paper/model.nw"
+#line 579 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -244,7 +244,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 592 "paper/model.nw"
+#line 596 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

@@ -39,7 +39,7 @@ typedef struct {
   double fixed_point_tol; /* Coulomb: the solver's tol, relative */
 } Model;
 
-#line 463 "paper/model.nw"
+#line 467 "paper/model.nw"
 /* what a summary says of the state at the last design solved */
 typedef struct {
   double reaction[SIDE_COUNT][2]; /* N/m: the force of each side on the
@@ -88,7 +88,7 @@ void model_guess_contact(Model *md, const double *X, const double *g);
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
-#line 476 "paper/model.nw"
+#line 480 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
    triangle t at the last state solved [Pa when E is] */
 void model_stress(const Model *md, int t, double s[5]);
