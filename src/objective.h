@@ -63,6 +63,6 @@ int objective_gradient_fixed(const Model *md, const Objective *o,
    (objective_gradient_fixed), and either under Coulomb friction through
    the fixed point (coulomb_gradient).  STATUS_NUMERIC with *J = NaN where
    J is undefined; a checked error before a solve. */
-int objective_evaluate(Model *md, const Objective *o, double *J, double *G,
-                       double *dJ, Status *st);
+int objective_evaluate(const Model *md, const Objective *o, double *J,
+                       double *G, double *dJ, Status *st);
 #endif

@@ -18,7 +18,7 @@ static double evaluation_rounding(const Model *md, Objective_kind kind, double J
 
 /* G and *dJ (each may be NULL; dJ's state term comes with G) at the last
    state, whose J is known */
-static int evaluate_gradient(Model *md, const Objective *o, double J,
+static int evaluate_gradient(const Model *md, const Objective *o, double J,
                              double *G, double *dJ, Status *st)
 {
   int rc = STATUS_OK;
@@ -33,8 +33,8 @@ static int evaluate_gradient(Model *md, const Objective *o, double J,
   return rc;
 }
 
-int objective_evaluate(Model *md, const Objective *o, double *J, double *G,
-                       double *dJ, Status *st)
+int objective_evaluate(const Model *md, const Objective *o, double *J,
+                       double *G, double *dJ, Status *st)
 {
   double v;
   if (G && !md->solved)
