@@ -1,10 +1,108 @@
-#line 159 "paper/coulomb.nw"
+#line 324 "paper/coulomb.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "coulomb.h"
-#line 254 "paper/coulomb.nw"
+#line 174 "paper/coulomb.nw"
+#define COULOMB_STALL 10  /* rounds without halving the change: a stall */
+
+static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+                           double *slip);
+static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+                          const double *b, double *slip);
+static int coulomb_goes_on(const Model *md, int rounding, double before);
+static int coulomb_failed(const Model *md, int stalled, double mark, Status *st);
+static double coulomb_change(const double *old, const double *T, int nc);
+#line 197 "paper/coulomb.nw"
+int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
+                        int rounding, Status *st)
+{
+  const Problem *p = md->problem;
+  int nc = md->dofs->nc, rc, steps = 0, stalled = 0;
+  double *Tn = malloc((nc + 1) * sizeof *Tn), mark = INFINITY;
+  if (!Tn) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
+  memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
+  if (!friction_side_holds(p, 0))
+    coulomb_start(p, md->mesh, md->dofs, md->b, md->slip);
+  rc = state(md, st);
+  md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
+  double before = INFINITY;           /* the change of the round before */
+  while (!rc && coulomb_goes_on(md, rounding, before)
+         && md->fixed_point_iterations < p->max_fixed_point
+         && stalled < COULOMB_STALL) {
+    before = md->fixed_point_residual;
+    memcpy(Tn, md->T, nc * sizeof *Tn);
+    coulomb_bounds(p, md->dofs, Tn, md->slip);
+    steps += md->report.iterations;
+    rc = state(md, st);
+    md->fixed_point_iterations++;
+    md->fixed_point_residual = coulomb_change(Tn, md->T, nc);
+    if (md->fixed_point_residual <= mark / 2) mark = md->fixed_point_residual, stalled = 0;
+    else stalled++;
+  }
+  free(Tn);
+  md->report.iterations += steps;
+  if (!rc && md->fixed_point_residual > md->fixed_point_tol)
+    rc = coulomb_failed(md, stalled, mark, st);
+  return rc;
+}
+#line 239 "paper/coulomb.nw"
+static int coulomb_goes_on(const Model *md, int rounding, double before)
+{
+  double r = md->fixed_point_residual;
+  if (r > md->fixed_point_tol) return 1;
+  return rounding && r > 0 && r <= before / 2;
+}
+#line 249 "paper/coulomb.nw"
+static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
+{
+  if (stalled >= COULOMB_STALL)
+    return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point stopped "
+      "converging: the change of the normal forces did not halve in its last "
+      "%d of %d iterations (from %.3g to %.3g relative, > solver.tol = %.3g); "
+      "successive approximations converge only for a small enough friction "
+      "(here %g)", stalled, md->fixed_point_iterations, mark,
+      md->fixed_point_residual, md->fixed_point_tol, md->problem->friction);
+  return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
+    "converge in %d iterations (contact.max_fixed_point): the normal forces "
+    "still change by %.3g relative > solver.tol = %.3g; successive "
+    "approximations converge only for a small enough friction (here %g)",
+    md->fixed_point_iterations, md->fixed_point_residual,
+    md->fixed_point_tol, md->problem->friction);
+}
+#line 269 "paper/coulomb.nw"
+static double coulomb_change(const double *old, const double *T, int nc)
+{
+  double diff = 0, size = 0;
+  for (int c = 0; c < nc; c++)
+    diff = fmax(diff, fabs(T[c] - old[c])),
+    size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
+  return diff == 0 ? 0 : diff / size;
+}
+#line 286 "paper/coulomb.nw"
+static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+                           double *slip)
+{
+  int c = 0;
+  for (int k = 0; k < d->nt; k++) {
+    while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
+    int here = c < d->nc && d->contact_col[c] == d->tangent_col[k];
+    slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
+  }
+}
+#line 304 "paper/coulomb.nw"
+static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+                          const double *b, double *slip)
+{
+  double W = 0, length = 0;
+  for (int k = 1; k < d->ndof; k += 2)
+    if (d->unknown[k] >= 0) W -= b[d->unknown[k]];
+  for (int k = 0; k < d->nt; k++)
+    length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
+  for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
+}
+#line 421 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
@@ -35,7 +133,7 @@ static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
   work_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
-#line 169 "paper/coulomb.nw"
+#line 336 "paper/coulomb.nw"
 /* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
    normal unknown c at its node, held with T_c > 0; returns m */
 static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
@@ -50,7 +148,7 @@ static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
   }
   return m;
 }
-#line 191 "paper/coulomb.nw"
+#line 358 "paper/coulomb.nw"
 /* (A q)_j, A stored with both triangles */
 static double row_times(const cholmod_sparse *A, int j, const double *q)
 {
@@ -81,7 +179,7 @@ static int coulomb_sensitivity(const Model *md, int m, const int *kk,
   free(e);
   return rc;
 }
-#line 227 "paper/coulomb.nw"
+#line 394 "paper/coulomb.nw"
 /* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
 static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
 {
@@ -104,7 +202,7 @@ static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
   gsl_permutation_free(p);
   return rc;
 }
-#line 292 "paper/coulomb.nw"
+#line 459 "paper/coulomb.nw"
 /* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
@@ -114,7 +212,7 @@ static void coulomb_rhs(const Model *md, const Objective *o, int m,
   for (int a = 0; a < m; a++) {
     int t = d->tangent[w->k[a]];
     double sigma = md->T[d->nc + w->k[a]] > 0 ? -1 : 1;
-    w->v[a] = md->problem->friction * ((o->kind == OBJECTIVE_ENERGY) * fabs(md->Q[t])
+    w->v[a] = md->problem->friction * (objective_is_energy(o->kind) * fabs(md->Q[t])
                                        - sigma * w->lam[t]);
   }
 }
@@ -123,14 +221,15 @@ static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
                          double *G, Status *st)
 {
   double F = md->problem->friction;
-  int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, st);
+  int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, NULL, st);
   int m = rc ? 0 : coulomb_pairs(md, w->held, w->k, w->c);
   if (rc || m == 0 || F == 0) return rc;
   coulomb_rhs(md, o, m, w);
   if ((rc = coulomb_sensitivity(md, m, w->k, w->c, w->S, st))
       || (rc = coulomb_multiplier(m, F, w->S, w->v, st))) return rc;
   for (int a = 0; a < m; a++) w->mu[w->c[a]] = w->v[a];
-  if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, st))) return rc;
+  if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, NULL, st)))
+    return rc;
   for (int i = 0; i < md->mesh->ncol; i++) G[i] += w->G2[i];
   return STATUS_OK;
 }

@@ -1,10 +1,17 @@
-#line 130 "paper/coulomb.nw"
+#line 133 "paper/coulomb.nw"
 #ifndef CONTACTOPT_COULOMB_H
 #define CONTACTOPT_COULOMB_H
 #include "status.h"
 #include "model.h"
 #include "objective.h"
 
+/* the state of a Coulomb problem at the model's design, by successive
+   approximations: state (the model's one state solve) under the bounds
+   F T of the last normal forces, to solver.tol; rounding 1: on past it
+   to the rounding of the forces (for a gradient).  STATUS_NUMERIC when
+   it stops short, or state's status. */
+int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
+                        int rounding, Status *st);
 /* G (N+1) = dJ/dX of the objective o at the Coulomb state the model
    solved last, through its fixed point s = F T on the state's contact,
    stick and slip sets */

@@ -1,32 +1,21 @@
-#line 403 "paper/friction.nw"
+#line 394 "paper/friction.nw"
 #include <math.h>
 #include "friction.h"
-#line 409 "paper/friction.nw"
+#line 400 "paper/friction.nw"
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
-#line 420 "paper/friction.nw"
-void friction_coulomb_bounds(const Problem *p, const Dofs *d,
-                             const double *T, double *slip)
-{
-  int c = 0;
-  for (int k = 0; k < d->nt; k++) {
-    while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
-    int here = c < d->nc && d->contact_col[c] == d->tangent_col[k];
-    slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
-  }
-}
-#line 433 "paper/friction.nw"
+#line 409 "paper/friction.nw"
 double friction_work(const Dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
-#line 445 "paper/friction.nw"
+#line 421 "paper/friction.nw"
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G)
 {
@@ -42,7 +31,7 @@ void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
     }
   }
 }
-#line 466 "paper/friction.nw"
+#line 442 "paper/friction.nw"
 int friction_side_holds(const Problem *p, int component)
 {
   for (int id = 0; id < SIDE_COUNT; id++) {
@@ -52,7 +41,7 @@ int friction_side_holds(const Problem *p, int component)
   }
   return 0;
 }
-#line 480 "paper/friction.nw"
+#line 456 "paper/friction.nw"
 /* L = the total load (L1, L2) of a body of this area, N/m */
 static void total_load(const Problem *p, double area, double L[2])
 {
@@ -62,7 +51,7 @@ static void total_load(const Problem *p, double area, double L[2])
       for (int j = 0; j < 2; j++)
         L[j] += p->side[id].P[j] * (p->side[id].to - p->side[id].from);
 }
-#line 493 "paper/friction.nw"
+#line 469 "paper/friction.nw"
 Friction_hold friction_hold(const Problem *p)
 {
   double w = p->b - p->a, area[2] = {(p->gamma - p->C0prime) * w, p->gamma * w};
@@ -76,15 +65,4 @@ Friction_hold friction_hold(const Problem *p)
     if (end == 0 || h.capacity - h.load < least.capacity - least.load) least = h;
   }
   return least;
-}
-#line 512 "paper/friction.nw"
-void friction_coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
-                            const double *b, double *slip)
-{
-  double W = 0, length = 0;
-  for (int k = 1; k < d->ndof; k += 2)
-    if (d->unknown[k] >= 0) W -= b[d->unknown[k]];
-  for (int k = 0; k < d->nt; k++)
-    length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
-  for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
 }

@@ -10,17 +10,13 @@
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
                             double *slip);
-/* Coulomb: slip[k] = F max(T_c, 0), T_c the normal force at the same
-   node, 0 where its u2 is held */
-void friction_coulomb_bounds(const Problem *p, const Dofs *d,
-                             const double *T, double *slip);
 /* the work of friction, sum_k slip[k] |u1| at the tangential unknowns */
 double friction_work(const Dofs *d, const double *slip, const double *Q);
 /* G += g d/dX sum_k omega_k(X) |u1_k|: given friction's part of the
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
                        const double *Q, double *G);
-#line 379 "paper/friction.nw"
+#line 375 "paper/friction.nw"
 /* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
    side holds both, a roller on the left or the right u1, on the top u2 */
 int friction_side_holds(const Problem *p, int component);
@@ -35,10 +31,5 @@ typedef struct {
 /* capacity and loads at the design the mesh admits where the margin
    capacity - load is least */
 Friction_hold friction_hold(const Problem *p);
-
-/* Coulomb's first bounds where no side holds u1: slip[k] = F W omega_k /
-   sum omega, W minus the u2 components of b */
-void friction_coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
-                            const double *b, double *slip);
 #line 352 "paper/friction.nw"
 #endif

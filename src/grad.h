@@ -1,4 +1,4 @@
-#line 34 "paper/grad.nw"
+#line 38 "paper/grad.nw"
 #ifndef CONTACTOPT_GRAD_H
 #define CONTACTOPT_GRAD_H
 #include "status.h"
@@ -6,11 +6,11 @@
 #include "objective.h"
 
 /* G (N+1 values) = grad E(X) by (4.8), at the design and state that the
-   model solved last; under Coulomb friction the gradient of J_F through
-   the fixed point (coulomb_gradient).  It is a checked error to call it
-   before a solve. */
+   model solved last, without Coulomb friction (objective_evaluate gives
+   J_F's through the fixed point).  It is a checked error to call it
+   before a solve or at a Coulomb state. */
 int grad_energy(const Model *md, double *G, Status *st);
-#line 73 "paper/grad.nw"
+#line 77 "paper/grad.nw"
 typedef struct {
   int N;          /* the design has N+1 nodes */
   int ncheck;     /* the nodes checked: all N+1 unless the caller lowers it */
@@ -41,5 +41,5 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
                Grad_check_progress progress, void *data, Status *st);
 /* the state solves that grad_check(md, X, gc, ...) takes, md's problem's */
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X);
-#line 46 "paper/grad.nw"
+#line 50 "paper/grad.nw"
 #endif

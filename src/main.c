@@ -189,13 +189,13 @@ static int command_solve(Run *r, Status *st)
          md->report.active, md->dofs->nc, md->seconds, r->dir);
   return STATUS_OK;
 }
-#line 523 "paper/main.nw"
+#line 525 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
   const Problem *p = &r->s.problem;
-  int rc = model_solve(r->md, r->s.alpha0, st);
-  if (rc || (rc = model_solve(r->md, r->s.alpha0, st))) return rc;
+  int rc = model_solve_to_rounding(r->md, r->s.alpha0, st);
+  if (rc || (rc = model_solve_to_rounding(r->md, r->s.alpha0, st))) return rc;
   long solves = grad_check_solves(gc, p, r->s.alpha0);
   double t = r->md->seconds, total = solves * t;
   printf("gradcheck: %d of %d nodes, %ld state solves of about %.2g s: about %.0f s\n",
@@ -212,7 +212,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 549 "paper/main.nw"
+#line 551 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -231,16 +231,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 577 "paper/main.nw"
-/* the refusal of the Newton method for a Coulomb scene */
-static int no_newton(const Run *r, Status *st)
-{
-  return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: "
-                    "optimizer.method = newton models the Hessian of a Tresca "
-                    "energy, not the cost J_F of a Coulomb state; use slsqp or "
-                    "mma (or name no method: slsqp is chosen)", r->s.path);
-}
-
+#line 579 "paper/main.nw"
 /* the method the scene did not name, and why it is the one */
 static void say_method(const Run *r)
 {
@@ -273,7 +264,6 @@ static void gradcheck_crossed(const Grad_check *gc)
 static int command_gradcheck(Run *r, Status *st)
 {
   Output o;
-  r->md->fixed_point_rounding = 1;              /* Coulomb: see above */
   Grad_check *gc = grad_check_new(r->s.problem.N, st);
   Gradcheck_progress g = { 0, 0, 0 };
   int rc = gc ? components_read(r->a->components, r->s.problem.N, gc, st)
@@ -293,7 +283,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 786 "paper/main.nw"
+#line 778 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -304,7 +294,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 803 "paper/main.nw"
+#line 795 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -315,9 +305,9 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
     printf("%s: the initial design is not in B (largest relative violation "
            "%.3g): moved to the nearest point of B, at distance %.6g m\n",
            r->s.path, v, *moved);
-  return rc ? rc : model_solve(r->md, X, st);
+  return rc ? rc : model_solve_to_rounding(r->md, X, st);
 }
-#line 828 "paper/main.nw"
+#line 820 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -347,7 +337,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->evaluations == 1 ? "" : "s", c->seconds, N);
   return rc;
 }
-#line 861 "paper/main.nw"
+#line 853 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -357,13 +347,12 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 881 "paper/main.nw"
+#line 873 "paper/main.nw"
 /* the value of the run's objective at the model's state */
 static double optimize_value(Run *r, Status *st)
 {
-  const Objective *J = &r->s.optimizer.objective;
-  double v = r->md->energy;
-  if (J->kind != OBJECTIVE_ENERGY && objective_value(r->md, J, &v, st)) v = NAN;
+  double v;
+  if (objective_value(r->md, &r->s.optimizer.objective, &v, st)) v = NAN;
   return v;
 }
 
@@ -387,7 +376,7 @@ static int optimize_one_start(Run *r, const Design_set *B, int k, double *X,
            objective_unit(o->objective.kind), rk->stop_reason, rk->iterations);
   return rc;
 }
-#line 913 "paper/main.nw"
+#line 904 "paper/main.nw"
 /* X = the lowest optimum of the K starts (X the first on entry); sr
    their report (starts 1 and no cost when K = 1) */
 static int optimize_starts(Run *r, const Design_set *B, double *X,
@@ -407,17 +396,17 @@ static int optimize_starts(Run *r, const Design_set *B, double *X,
     if ((rc = optimize_one_start(r, B, k, Y, &rk, &v, st))) break;
     sr->starts_evaluations += rk.evaluations;
     
-#line 943 "paper/main.nw"
+#line 934 "paper/main.nw"
 if (!isnan(v) && (isnan(sr->starts_min) || v < sr->starts_min))
   sr->starts_min = v, sr->starts_best = k + 1, memcpy(X, Y, n * sizeof *X);
 if (!isnan(v) && (isnan(sr->starts_max) || v > sr->starts_max)) sr->starts_max = v;
-#line 932 "paper/main.nw"
+#line 923 "paper/main.nw"
     if (!strcmp(rk.stop_reason, "interrupted")) break;
   }
   sr->starts = K;
   sr->starts_seconds = resources_clock() - t0;
   
-#line 949 "paper/main.nw"
+#line 940 "paper/main.nw"
 if (!rc && sr->starts_best)
   printf("%s: %d starts: %s from %.12g to %.12g%s (spread %.2e relative); the "
          "run goes on from start %d\n", r->s.path, K,
@@ -427,11 +416,11 @@ if (!rc && sr->starts_best)
          sr->starts_best);
 else if (!rc)
   printf("%s: %d starts: none ended; the run goes on from the first\n", r->s.path, K);
-#line 937 "paper/main.nw"
+#line 928 "paper/main.nw"
   free(Y);
   return rc;
 }
-#line 962 "paper/main.nw"
+#line 953 "paper/main.nw"
 static int optimize_report_starts(Opt_report *rep, const Opt_report *sr)
 {
   rep->starts = sr->starts, rep->starts_best = sr->starts_best;
@@ -441,7 +430,7 @@ static int optimize_report_starts(Opt_report *rep, const Opt_report *sr)
   rep->seconds += sr->starts_seconds;
   return STATUS_OK;
 }
-#line 982 "paper/main.nw"
+#line 973 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -454,17 +443,10 @@ static int command_optimize(Run *r, Status *st)
   Design_multipliers *m = design_multipliers_new(&B, st);
   const Objective *J = &r->s.optimizer.objective;
   if (h) h->objective = J->kind;
-  r->md->fixed_point_rounding = 1;
-  if (r->s.problem.contact == CONTACT_COULOMB && r->s.optimizer.method == OPT_NEWTON)
-    rc = no_newton(r, st);
-  else if (r->s.optimizer.method == OPT_NEWTON && J->kind != OBJECTIVE_ENERGY)
-    rc = status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
-                    "the energy only; objective.kind = %s needs slsqp, "
-                    "mma or projgrad (or name no method: slsqp is chosen)",
-                    r->s.path, objective_name(J->kind));
-  else if (!X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
-  else if (!h || !m) rc = st->code;
-  else if (say_method(r), !(rc = begin(r, &o, st))) {
+  rc = opt_refusal(r->s.optimizer.method, J, r->s.problem.contact, r->s.path, st);
+  if (!rc && !X) rc = status_set(st, STATUS_MEMORY, "optimize: out of memory");
+  else if (!rc && (!h || !m)) rc = st->code;
+  else if (!rc && (say_method(r), !(rc = begin(r, &o, st)))) {
     if (!(rc = output_history_vtu(h, &o, r->md, st))   /* iterates/, .pvd */
         && !(rc = optimize_start(r, &B, X, &moved, st))
         && !(rc = output_start(&o, r->md, X, moved,
@@ -476,16 +458,14 @@ static int command_optimize(Run *r, Status *st)
         && !(rc = optimize_report_starts(&rep, &starts))
         && !(rc = output_state(&o, "final", r->md, X, st))
         && !(rc = output_history(&o, &r->s.problem, h, st))
-        && !(rc = J->kind == OBJECTIVE_ENERGY ? grad_energy(r->md, G, st)
-                                              : objective_gradient(r->md, J, G, st))
+        && !(rc = objective_evaluate(r->md, J, NULL, G, NULL, st))
         && !(rc = design_kkt(&B, X, G, -1, NULL, m, NULL, st))
         && !(rc = output_multipliers(&o, &r->s.problem, X, G, m, st)))
       rc = output_opt_summary(&o, &r->run, r->md, &start, &rep, m->mu, st);
     rc = finish(r, &o, rc, st);
   }
-  double J0 = J->kind == OBJECTIVE_ENERGY ? start.energy : start.J[J->kind];
-  double J1 = rep.energy;                   /* the objective, E by default */
-  if (!rc && J->kind != OBJECTIVE_ENERGY) rc = objective_value(r->md, J, &J1, st);
+  double J0 = start.J.value[J->kind], J1;   /* the objective, E by default */
+  if (!rc) rc = objective_value(r->md, J, &J1, st);
   if (!rc)
     printf("%s: %s %.10g -> %.10g%s in %d iteration%s, %d evaluation%s, "
            "projected gradient %.2e (%s) -> %s/\n", r->s.path,
@@ -508,7 +488,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 1058 "paper/main.nw"
+#line 1040 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -527,7 +507,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1088 "paper/main.nw"
+#line 1070 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -543,7 +523,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1116 "paper/main.nw"
+#line 1098 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },

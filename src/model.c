@@ -1,4 +1,4 @@
-#line 158 "paper/model.nw"
+#line 159 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,32 +6,11 @@
 #include "resources.h"
 #include "held.h"
 #include "model.h"
-#line 371 "paper/model.nw"
-#define COULOMB_STALL 10  /* rounds without halving the change: a stall */
-
-static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
-{
-  if (stalled >= COULOMB_STALL)
-    return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point stopped "
-      "converging: the change of the normal forces did not halve in its last "
-      "%d of %d iterations (from %.3g to %.3g relative, > solver.tol = %.3g); "
-      "successive approximations converge only for a small enough friction "
-      "(here %g)", stalled, md->fixed_point_iterations, mark,
-      md->fixed_point_residual, md->fixed_point_tol, md->problem->friction);
-  return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
-    "converge in %d iterations (contact.max_fixed_point): the normal forces "
-    "still change by %.3g relative > solver.tol = %.3g; successive "
-    "approximations converge only for a small enough friction (here %g)",
-    md->fixed_point_iterations, md->fixed_point_residual,
-    md->fixed_point_tol, md->problem->friction);
-}
-#line 150 "paper/model.nw"
+#include "coulomb.h"
+#line 154 "paper/model.nw"
 static int model_state(Model *md, Status *st);
 static int model_pressed(const Model *md, Status *st);
-static double model_change(const double *old, const double *T, int nc);
-static int model_coulomb(Model *md, Status *st);
-static int coulomb_goes_on(const Model *md, double before);
-#line 170 "paper/model.nw"
+#line 172 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -46,7 +25,7 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 190 "paper/model.nw"
+#line 192 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -59,20 +38,21 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 184 "paper/model.nw"
+#line 186 "paper/model.nw"
   
-#line 205 "paper/model.nw"
+#line 207 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 185 "paper/model.nw"
+#line 187 "paper/model.nw"
   return md;
 }
-#line 225 "paper/model.nw"
-int model_solve(Model *md, const double *X, Status *st)
+#line 230 "paper/model.nw"
+static int model_solve_with(Model *md, const double *X, int rounding,
+                            Status *st)
 {
   double start = resources_clock();
   int rc;
@@ -88,8 +68,8 @@ int model_solve(Model *md, const double *X, Status *st)
                        md->checked ? STATUS_NUMERIC : STATUS_INPUT, st)))
     return rc;
   md->checked = 1;
-  rc = md->problem->contact == CONTACT_COULOMB ? model_coulomb(md, st)
-                                               : model_state(md, st);
+  rc = md->problem->contact == CONTACT_COULOMB
+       ? coulomb_fixed_point(md, model_state, rounding, st) : model_state(md, st);
   md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
   if (md->dofs->nt) {
     md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
@@ -98,7 +78,17 @@ int model_solve(Model *md, const double *X, Status *st)
   md->seconds = resources_clock() - start;
   return rc;
 }
-#line 255 "paper/model.nw"
+
+int model_solve(Model *md, const double *X, Status *st)
+{
+  return model_solve_with(md, X, 0, st);
+}
+
+int model_solve_to_rounding(Model *md, const double *X, Status *st)
+{
+  return model_solve_with(md, X, 1, st);
+}
+#line 271 "paper/model.nw"
 static int model_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved || md->guessed ? md->Q : NULL,
@@ -107,7 +97,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK, md->guessed = 0;
   return rc;
 }
-#line 268 "paper/model.nw"
+#line 284 "paper/model.nw"
 static int model_pressed(const Model *md, Status *st)
 {
   if (!held_lift_free(md->problem)) return 0;
@@ -117,7 +107,7 @@ static int model_pressed(const Model *md, Status *st)
                     "ended with no node pressed onto the foundation, and no side "
                     "holds u2");
 }
-#line 292 "paper/model.nw"
+#line 308 "paper/model.nw"
 void model_contact_gaps(const Model *md, double *g)
 {
   for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
@@ -133,60 +123,12 @@ void model_guess_contact(Model *md, const double *X, const double *g)
   }
   md->guessed = 1;
 }
-#line 321 "paper/model.nw"
-static int model_coulomb(Model *md, Status *st)
-{
-  const Problem *p = md->problem;
-  int nc = md->dofs->nc, rc, steps = 0, stalled = 0;
-  double *Tn = malloc((nc + 1) * sizeof *Tn), mark = INFINITY;
-  if (!Tn) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
-  memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
-  if (!friction_side_holds(p, 0))
-    friction_coulomb_start(p, md->mesh, md->dofs, md->b, md->slip);
-  rc = model_state(md, st);
-  md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
-  double before = INFINITY;           /* the change of the round before */
-  while (!rc && coulomb_goes_on(md, before)
-         && md->fixed_point_iterations < p->max_fixed_point
-         && stalled < COULOMB_STALL) {
-    before = md->fixed_point_residual;
-    memcpy(Tn, md->T, nc * sizeof *Tn);
-    friction_coulomb_bounds(p, md->dofs, Tn, md->slip);
-    steps += md->report.iterations;
-    rc = model_state(md, st);
-    md->fixed_point_iterations++;
-    md->fixed_point_residual = model_change(Tn, md->T, nc);
-    if (md->fixed_point_residual <= mark / 2) mark = md->fixed_point_residual, stalled = 0;
-    else stalled++;
-  }
-  free(Tn);
-  md->report.iterations += steps;
-  if (!rc && md->fixed_point_residual > md->fixed_point_tol)
-    rc = coulomb_failed(md, stalled, mark, st);
-  return rc;
-}
-#line 361 "paper/model.nw"
-static int coulomb_goes_on(const Model *md, double before)
-{
-  double r = md->fixed_point_residual;
-  if (r > md->fixed_point_tol) return 1;
-  return md->fixed_point_rounding && r > 0 && r <= before / 2;
-}
-#line 393 "paper/model.nw"
-static double model_change(const double *old, const double *T, int nc)
-{
-  double diff = 0, size = 0;
-  for (int c = 0; c < nc; c++)
-    diff = fmax(diff, fabs(T[c] - old[c])),
-    size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
-  return diff == 0 ? 0 : diff / size;
-}
-#line 415 "paper/model.nw"
+#line 337 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-#line 423 "paper/model.nw"
+#line 345 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -200,7 +142,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-#line 442 "paper/model.nw"
+#line 364 "paper/model.nw"
 void model_release(Model *md)
 {
   if (md) qp_release(md->solver);
@@ -216,7 +158,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 484 "paper/model.nw"
+#line 406 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -229,17 +171,17 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 503 "paper/model.nw"
+#line 425 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 496 "paper/model.nw"
+#line 418 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 569 "paper/model.nw"
+#line 491 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -249,21 +191,21 @@ int model_summary(const Model *md, Model_summary *sum, Status *st)
   memset(sum, 0, sizeof *sum);
   fem_reactions(md->mesh, d, &md->hooke, md->problem, md->Q, r);
   
-#line 590 "paper/model.nw"
+#line 512 "paper/model.nw"
 for (int k = 0; k < d->ndof; k++) {
   int side = d->unknown[k] < 0 ? fem_reaction_side(md->mesh, md->problem, k) : -1;
   if (side >= 0) sum->reaction[side][k % 2] += r[k];
 }
-#line 578 "paper/model.nw"
+#line 500 "paper/model.nw"
   free(r);
   
-#line 597 "paper/model.nw"
+#line 519 "paper/model.nw"
 for (int c = 0; c < d->nc; c++)
   if (md->Q[d->contact[c]] <= md->lo[c]) {
     sum->pressure_max = fmax(sum->pressure_max, model_pressure(md, c));
     sum->contact_length += mesh_tributary(md->mesh, d->contact_col[c]);
   }
-#line 580 "paper/model.nw"
+#line 502 "paper/model.nw"
   for (int t = 0; t < md->mesh->ntri; t++) {
     double s[5];
     model_stress(md, t, s);
@@ -271,7 +213,7 @@ for (int c = 0; c < d->nc; c++)
   }
   return STATUS_OK;
 }
-#line 624 "paper/model.nw"
+#line 546 "paper/model.nw"
 void model_stress(const Model *md, int t, double s[5])
 {
   long double e[3], sigma[3];
@@ -283,14 +225,14 @@ void model_stress(const Model *md, int t, double s[5])
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
-#line 643 "paper/model.nw"
+#line 565 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 657 "paper/model.nw"
+#line 579 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -302,7 +244,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 674 "paper/model.nw"
+#line 596 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

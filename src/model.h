@@ -37,11 +37,9 @@ typedef struct {
   int guessed;          /* Q's contact unknowns hold a guess (below):
                            warm start the next solve from it */
   double fixed_point_tol; /* Coulomb: the solver's tol, relative */
-  int fixed_point_rounding; /* Coulomb: 1 to go on past the tol while the
-                           change halves, to rounding (for a gradient) */
 } Model;
 
-#line 545 "paper/model.nw"
+#line 467 "paper/model.nw"
 /* what a summary says of the state at the last design solved */
 typedef struct {
   double reaction[SIDE_COUNT][2]; /* N/m: the force of each side on the
@@ -53,7 +51,7 @@ typedef struct {
   double von_mises_max;   /* Pa: the largest von Mises stress of a triangle */
 } Model_summary;
 
-#line 90 "paper/model.nw"
+#line 88 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -65,6 +63,9 @@ double model_pressure_cv(const Model *md);
 double model_displacement_max(const Model *md);
 /* move to design X (N+1 values), assemble, solve the state from the last */
 int model_solve(Model *md, const double *X, Status *st);
+/* model_solve, with Coulomb's fixed point taken on past solver.tol to
+   the rounding of the forces (coulomb_fixed_point): for a gradient */
+int model_solve_to_rounding(Model *md, const double *X, Status *st);
 /* S (N+1 x N+1, row-major): the stiffness of the body seen from its
    contact nodes at the last design solved (see below) */
 int model_contact_stiffness(Model *md, double *S, Status *st);
@@ -87,7 +88,7 @@ void model_guess_contact(Model *md, const double *X, const double *g);
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
-#line 558 "paper/model.nw"
+#line 480 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
    triangle t at the last state solved [Pa when E is] */
 void model_stress(const Model *md, int t, double s[5]);

@@ -34,19 +34,35 @@ int objective_partials(const Model *md, const Objective *o, double *J,
    friction the sticking ones) is that of held[] (nc + nt), 0 if not;
    held NULL: write it */
 int objective_same_sets(const Model *md, char *held, int write);
-/* G (N+1) = grad J by the adjoint of the last state; for energy the same
-   path gives (4.8); under Coulomb friction the gradient through the fixed
-   point (coulomb_gradient).  A checked error before a solve. */
-int objective_gradient(Model *md, const Objective *o, double *G, Status *st);
-/* G as objective_gradient, and dJ (may be NULL) the rounding of J at the
-   last state: its evaluation's and its state's (below) */
-int objective_gradient_rounding(Model *md, const Objective *o, double *G,
-                                double *dJ, Status *st);
-/* G (N+1) = the gradient at fixed slip bounds of J (o; NULL: none) plus
-   t'T (t, nc, may be NULL, zero off the held contact unknowns); lam (n)
+/* the properties of a kind that its callers ask for: 1 if it is the
+   energy E (the Newton method's model, (4.8), a line of its own in a
+   summary); 1 if it is a functional of the contact pressure (J_s, J_q);
+   1 if it takes the exponent q (J_q) */
+int objective_is_energy(Objective_kind k);
+int objective_of_pressure(Objective_kind k);
+int objective_has_exponent(Objective_kind k);
+/* 1 if J at the model's problem has a kink where the held sets change:
+   another objective than E, or any under Coulomb friction (J_F) */
+int objective_has_kinks(const Model *md, const Objective *o);
+/* every kind's J at a state, in the order of objective_names (NaN:
+   undefined there) */
+typedef struct { double value[OBJECTIVE_COUNT]; } Objective_values;
+/* G (N+1) = the gradient by the adjoint of the last state of J (o;
+   NULL: none) plus t'T (t, nc, may be NULL, zero off the held contact
+   unknowns), at fixed slip bounds under Coulomb friction; lam (n)
    and held_out (nc + nt), each may be NULL, receive the adjoint and the
-   held sets.  A checked error before a solve. */
+   held sets, and *state (may be NULL) the rounding of J through its
+   state (below).  A checked error before a solve. */
 int objective_gradient_fixed(const Model *md, const Objective *o,
                              const double *t, double *lam, char *held_out,
-                             double *G, Status *st);
+                             double *G, double *state, Status *st);
+/* the front door, for every kind and contact law: *J (may be NULL) the
+   objective o at the model's last state, G (N+1, may be NULL) its
+   gradient and *dJ (may be NULL) the rounding of J; the energy's
+   gradient by (4.8) (grad_energy), another's by the adjoint
+   (objective_gradient_fixed), and either under Coulomb friction through
+   the fixed point (coulomb_gradient).  STATUS_NUMERIC with *J = NaN where
+   J is undefined; a checked error before a solve. */
+int objective_evaluate(const Model *md, const Objective *o, double *J,
+                       double *G, double *dJ, Status *st);
 #endif

@@ -1,11 +1,10 @@
-#line 296 "paper/objective.nw"
+#line 336 "paper/objective.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
-#include "coulomb.h"
-#line 308 "paper/objective.nw"
+#line 347 "paper/objective.nw"
 /* g = dJ/dQ + A_{:H} t, t = dT on the held contact unknowns */
 static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
@@ -26,7 +25,7 @@ static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
       for (Sparse_index k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
         g[Ai[k]] += Ax[k] * dT[c];
 }
-#line 332 "paper/objective.nw"
+#line 371 "paper/objective.nw"
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
@@ -41,7 +40,7 @@ static void held_term(const Model *md, const char *held, const double *g,
     G[d->contact_col[c]] -= g[j] - Al;
   }
 }
-#line 351 "paper/objective.nw"
+#line 390 "paper/objective.nw"
 /* d (u'K_e q) / d y_m: eu, eq the strains (times d) of u and q, Du, Dq
    D times them, d = 2|T| */
 static double bilinear_height(const double gy[3], const double u[6],
@@ -56,7 +55,7 @@ static double bilinear_height(const double gy[3], const double u[6],
   return (du0 * Dq[0] + du2 * Dq[2] + dq0 * Du[0] + dq2 * Du[2]) / (2 * d)
        - uDq * gy[m] / (2 * d * d);
 }
-#line 370 "paper/objective.nw"
+#line 409 "paper/objective.nw"
 /* the strain (times d) of q on the triangle, and D times it */
 static void strain_of(const Model *md, const double gx[3], const double gy[3],
                       const double q[6], double e[3], double De[3])
@@ -94,7 +93,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
     G[node % m->ncol] += rate * dy;
   }
 }
-#line 413 "paper/objective.nw"
+#line 452 "paper/objective.nw"
 /* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
 static void tributary_term(const Mesh *m, int nc, const int *col,
                            const double *dw, double *G)
@@ -108,7 +107,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
         G[k + 1] += r, G[k] -= r;
       }
 }
-#line 433 "paper/objective.nw"
+#line 472 "paper/objective.nw"
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
@@ -124,7 +123,7 @@ static int sliding_term(const Model *md, const char *held, const double *lam,
   free(dw);
   return STATUS_OK;
 }
-#line 470 "paper/objective.nw"
+#line 509 "paper/objective.nw"
 /* eps sum_i |w_i| rho_i, rho_i = sum_j |A_ij Q_j| + |b_i| */
 static double state_rounding(const Model *md, const double *w)
 {
@@ -139,18 +138,7 @@ static double state_rounding(const Model *md, const double *w)
   }
   return DBL_EPSILON * (double) s;
 }
-
-/* eps m(J): the rounding of J's evaluation; delta E for the energy */
-static double evaluation_rounding(const Model *md, Objective_kind kind, double J)
-{
-  if (kind == OBJECTIVE_ENERGY) return model_energy_rounding(md);
-  if (kind == OBJECTIVE_SPREAD) return 4 * DBL_EPSILON * (fabs(J) + 1);
-  if (kind == OBJECTIVE_PEAK) return 4 * DBL_EPSILON * fabs(J);
-  long double m = 0;
-  for (int i = 0; i < md->dofs->n; i++) m += fabsl((long double) md->b[i] * md->Q[i]);
-  return DBL_EPSILON * (double) m;
-}
-#line 499 "paper/objective.nw"
+#line 527 "paper/objective.nw"
 /* G from the partials dT, dw already in v; kind OBJECTIVE_COUNT: a
    functional of T alone */
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
@@ -191,38 +179,10 @@ static int gradient_work(const Model *md, double **v, char **held, Status *st)
   free(*v), free(*held);
   return status_set(st, STATUS_MEMORY, "objective: out of memory");
 }
-
-int objective_gradient(Model *md, const Objective *o, double *G, Status *st)
-{
-  return objective_gradient_rounding(md, o, G, NULL, st);
-}
-
-int objective_gradient_rounding(Model *md, const Objective *o, double *G,
-                                double *dJ, Status *st)
-{
-  if (!md->solved)
-    return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
-  double *v, J, state = 0;
-  char *held;
-  if (md->problem->contact == CONTACT_COULOMB) {       /* no state term */
-    int rc = coulomb_gradient(md, o, G, st);
-    if (!rc && dJ && !(rc = objective_value(md, o, &J, st)))
-      *dJ = evaluation_rounding(md, o->kind, J);
-    return rc;
-  }
-  int rc = gradient_work(md, &v, &held, st), n = md->dofs->n;
-  if (rc) return rc;
-  double *dT = v + 5 * n, *dw = dT + md->dofs->nc + 1;
-  if (!(rc = objective_partials(md, o, &J, dT, dw, st)))
-    rc = gradient_terms(md, o->kind, v, held, G, dJ ? &state : NULL, st);
-  if (!rc && dJ) *dJ = evaluation_rounding(md, o->kind, J) + state;
-  free(v), free(held);
-  return rc;
-}
 #line 578 "paper/objective.nw"
 int objective_gradient_fixed(const Model *md, const Objective *o,
                              const double *t, double *lam, char *held_out,
-                             double *G, Status *st)
+                             double *G, double *state, Status *st)
 {
   if (!md->solved)
     return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
@@ -233,7 +193,7 @@ int objective_gradient_fixed(const Model *md, const Objective *o,
   double *dT = v + 5 * n, *dw = dT + nc + 1;
   if (o) rc = objective_partials(md, o, &J, dT, dw, st);
   for (int c = 0; t && c < nc; c++) dT[c] += t[c];
-  if (!rc) rc = gradient_terms(md, o ? o->kind : OBJECTIVE_COUNT, v, held, G, NULL, st);
+  if (!rc) rc = gradient_terms(md, o ? o->kind : OBJECTIVE_COUNT, v, held, G, state, st);
   if (!rc && lam) memcpy(lam, v + 2 * n, n * sizeof *lam);
   if (!rc && held_out) memcpy(held_out, held, md->dofs->nc + md->dofs->nt);
   free(v), free(held);

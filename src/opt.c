@@ -1,11 +1,10 @@
-#line 379 "paper/opt.nw"
+#line 386 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
-#include "grad.h"
-#line 393 "paper/opt.nw"
+#line 399 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -25,31 +24,44 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 453 "paper/opt.nw"
+#line 427 "paper/opt.nw"
+int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
+                const char *path, Status *st)
+{
+  if (m == OPT_NEWTON && contact == CONTACT_COULOMB)
+    return status_set(st, STATUS_INPUT, "%s: contact.model = coulomb: "
+                      "optimizer.method = newton models the Hessian of a Tresca "
+                      "energy, not the cost J_F of a Coulomb state; use slsqp or "
+                      "mma (or name no method: slsqp is chosen)", path);
+  if (m == OPT_NEWTON && !objective_is_energy(o->kind))
+    return status_set(st, STATUS_INPUT, "%s: optimizer.method = newton minimises "
+                      "the energy only; objective.kind = %s needs slsqp, "
+                      "mma or projgrad (or name no method: slsqp is chosen)",
+                      path, objective_name(o->kind));
+  return STATUS_OK;
+}
+#line 487 "paper/opt.nw"
 int opt_evaluate(Evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
   double start = resources_clock();
-  int rc = model_solve(ev->md, X, ev->st);
+  int rc = model_solve_to_rounding(ev->md, X, ev->st);
   ev->solves++;
-  const Objective *o = &ev->o->objective;
   double J = 0, dJ = 0;
   ev->lifted = 0;
-  if (!rc && o->kind == OBJECTIVE_ENERGY) rc = grad_energy(ev->md, ev->G, ev->st);
-  else if (!rc && (rc = objective_value(ev->md, o, &J, ev->st)))
-    ev->lifted = rc == STATUS_NUMERIC;          /* no contact node presses */
-  else if (!rc) rc = objective_gradient_rounding(ev->md, o, ev->G, &dJ, ev->st);
+  if (!rc && (rc = objective_evaluate(ev->md, &ev->o->objective, &J, ev->G, &dJ,
+                                      ev->st)))
+    ev->lifted = rc == STATUS_NUMERIC && isnan(J);  /* no contact node presses */
   if (ev->rep)
     ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
   if (rc) return rc;
   memcpy(ev->X, X, ev->n * sizeof *X);
-  ev->J = o->kind == OBJECTIVE_ENERGY ? ev->md->energy : J;
-  ev->noise = o->kind == OBJECTIVE_ENERGY ? model_energy_rounding(ev->md) : dJ;
+  ev->J = J, ev->noise = dJ;
   ev->have = 1;
   return STATUS_OK;
 }
-#line 511 "paper/opt.nw"
+#line 542 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -58,7 +70,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 522 "paper/opt.nw"
+#line 553 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
@@ -71,7 +83,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 562 "paper/opt.nw"
+#line 593 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -98,7 +110,7 @@ void opt_idle_detail(Evaluator *ev)
            "%.2e the smallest of the run)", ev->idle, J, ev->idle_J - ev->J, u, J,
            ev->noise, u, ev->pg_last, ev->pg_best);
 }
-#line 593 "paper/opt.nw"
+#line 624 "paper/opt.nw"
 const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
 {
   double pg;
@@ -113,7 +125,7 @@ const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 828 "paper/opt.nw"
+#line 859 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
@@ -128,7 +140,7 @@ void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c
     c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
   }
 }
-#line 847 "paper/opt.nw"
+#line 878 "paper/opt.nw"
 /* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
 {
@@ -144,7 +156,7 @@ void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *
     }
   }
 }
-#line 1998 "paper/opt.nw"
+#line 2028 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -166,19 +178,15 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                    .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);
-  if (md->problem->contact == CONTACT_COULOMB && o->method == OPT_NEWTON)
-    return free(ev.X), status_set(st, STATUS_INPUT, "optimiser: the Newton "
-                                  "method has no model of a Coulomb state's cost");
   if (!ev.X) return status_set(st, STATUS_MEMORY, "optimiser: out of memory");
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
-  md->fixed_point_rounding = 1;             /* Coulomb: forces to rounding */
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 2041 "paper/opt.nw"
+#line 2067 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 2027 "paper/opt.nw"
+#line 2053 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -189,14 +197,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 2058 "paper/opt.nw"
+#line 2084 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 2109 "paper/opt.nw"
+#line 2135 "paper/opt.nw"
 int opt_start_design(const Design_set *B, int k, double *X, Status *st)
 {
   int N = B->N, j = (k + 1) / 2;
@@ -205,7 +213,7 @@ int opt_start_design(const Design_set *B, int k, double *X, Status *st)
   for (int i = 0; i <= N; i++) X[i] = c + s * a * cos(j * pi * i / N);
   return design_project(B, X, X, NULL, st);
 }
-#line 2190 "paper/opt.nw"
+#line 2216 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -222,7 +230,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2213 "paper/opt.nw"
+#line 2239 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -235,7 +243,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2241 "paper/opt.nw"
+#line 2267 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -265,7 +273,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 2281 "paper/opt.nw"
+#line 2307 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st)

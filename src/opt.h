@@ -74,6 +74,11 @@ typedef struct {
 Opt_options opt_options_default(Opt_method method);
 const char *opt_method_name(Opt_method m);   /* or "?" */
 const char *opt_metric_name(Opt_metric m);   /* or "?" */
+/* 0 if method m minimises the objective o under the contact law; else
+   STATUS_INPUT, st saying why after "path: " (the Newton method's model
+   is the Hessian of an energy without Coulomb friction) */
+int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
+                const char *path, Status *st);
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,
                  Status *st);

@@ -104,7 +104,7 @@ typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
   double moved;             /* ||start - alpha0||_2, 0: alpha0 was in B */
-  double J[OBJECTIVE_COUNT]; /* every objective there (NaN: undefined) */
+  Objective_values J;       /* every objective there (NaN: undefined) */
 } Output_start;
 
 /* initial/: the state files at the start X, solved by the model; start

@@ -1,25 +1,25 @@
-#line 1644 "paper/output.nw"
+#line 1645 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1656 "paper/output.nw"
+#line 1657 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1507 "paper/output.nw"
+#line 1508 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const double *J, const Output_start *start)
 {
   fprintf(f, "objective %s\nobjective_value %.15g\n", objective_name(ob->kind),
           J[ob->kind]);
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {  /* an undefined one: no line */
-    if (k != OBJECTIVE_ENERGY && !isnan(start->J[k]))  /* initial_energy: above */
-      fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J[k]);
+  for (int k = 0; objective_names[k]; k++) {  /* an undefined one: no line */
+    if (!objective_is_energy(k) && !isnan(start->J.value[k]))  /* initial_energy: above */
+      fprintf(f, "initial_%s %.15g\n", objective_names[k], start->J.value[k]);
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1724 "paper/output.nw"
+#line 1725 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = h->md->mesh;
@@ -40,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1663 "paper/output.nw"
+#line 1664 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -85,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1752 "paper/output.nw"
+#line 1753 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -119,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1790 "paper/output.nw"
+#line 1791 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -132,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1813 "paper/output.nw"
+#line 1814 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -151,7 +151,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1835 "paper/output.nw"
+#line 1836 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -160,18 +160,18 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->energy = md->energy;
   start->cv = model_pressure_cv(md);
   start->moved = moved;
-  return output_objectives(md, q, start->J, st);
+  return output_objectives(md, q, &start->J, st);
 }
-#line 1854 "paper/output.nw"
+#line 1855 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
 {
   const Problem *p = md->problem;
   Model_summary ms;
-  double J[OBJECTIVE_COUNT];
+  Objective_values J;
   FILE *f = model_summary(md, &ms, st)
-            || output_objectives(md, run->objective->q, J, st)
+            || output_objectives(md, run->objective->q, &J, st)
             ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
@@ -187,17 +187,17 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
   
-#line 1898 "paper/output.nw"
+#line 1899 "paper/output.nw"
 if (p && (!strcmp(run->optimizer, "slsqp") || !strcmp(run->optimizer, "mma")))
   fprintf(f, "subproblem_seconds %.6f\n", r->subproblem_seconds);
-#line 1878 "paper/output.nw"
+#line 1879 "paper/output.nw"
   
-#line 1906 "paper/output.nw"
+#line 1907 "paper/output.nw"
 if (r->starts > 1)
   fprintf(f, "starts %d\nstarts_best %d\nstarts_min %.15g\nstarts_max %.15g\n"
           "starts_evaluations %d\nstarts_seconds %.6f\n", r->starts, r->starts_best,
           r->starts_min, r->starts_max, r->starts_evaluations, r->starts_seconds);
-#line 1879 "paper/output.nw"
+#line 1880 "paper/output.nw"
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   if (r->levels > 1)
     fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",
@@ -207,7 +207,7 @@ if (r->starts > 1)
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
           md->report.active, md->report.kkt, mu);
   output_reactions(f, md, &ms);
-  output_objectives_summary(f, run->objective, J, start);
+  output_objectives_summary(f, run->objective, J.value, start);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);

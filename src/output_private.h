@@ -44,6 +44,6 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms);
 /* J = every objective at the model's state, the peak's exponent q, NaN
    where undefined (a body that lifts off has no pressure); the status
    of an objective that failed otherwise (out of memory) */
-int output_objectives(const Model *md, double q, double *J, Status *st);
+int output_objectives(const Model *md, double q, Objective_values *J, Status *st);
 #line 333 "paper/output.nw"
 #endif

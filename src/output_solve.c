@@ -10,10 +10,10 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
 {
   const Problem *p = md->problem;
   Model_summary ms;
-  double J[OBJECTIVE_COUNT];
+  Objective_values J;
   int rc = output_state(o, "", md, X, st);
   if (!rc) rc = model_summary(md, &ms, st);
-  if (!rc) rc = output_objectives(md, run->objective ? run->objective->q : 8, J, st);
+  if (!rc) rc = output_objectives(md, run->objective ? run->objective->q : 8, &J, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
@@ -22,8 +22,9 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
           p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
   fprintf(f, "energy %.15g\n", md->energy);
-  for (int k = OBJECTIVE_ENERGY + 1; k < OBJECTIVE_COUNT; k++)   /* undefined: no line */
-    if (!isnan(J[k])) fprintf(f, "%s %.15g\n", objective_names[k], J[k]);
+  for (int k = 0; objective_names[k]; k++)     /* E: above; undefined: no line */
+    if (!objective_is_energy(k) && !isnan(J.value[k]))
+      fprintf(f, "%s %.15g\n", objective_names[k], J.value[k]);
   fprintf(f, "kkt_residual %.3e\niterations %d\n", md->report.kkt, md->report.iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
           md->seconds);
@@ -32,7 +33,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1487 "paper/output.nw"
+#line 1488 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
@@ -46,19 +47,19 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1525 "paper/output.nw"
-int output_objectives(const Model *md, double q, double *J, Status *st)
+#line 1526 "paper/output.nw"
+int output_objectives(const Model *md, double q, Objective_values *J, Status *st)
 {
-  for (int k = 0; k < OBJECTIVE_COUNT; k++) {
+  for (int k = 0; objective_names[k]; k++) {
     Objective o = { (Objective_kind) k, q };
     Status why;
-    int rc = objective_value(md, &o, &J[k], &why);
-    if (rc == STATUS_NUMERIC) J[k] = NAN;
+    int rc = objective_value(md, &o, &J->value[k], &why);
+    if (rc == STATUS_NUMERIC) J->value[k] = NAN;
     else if (rc) return status_set(st, rc, "%s", why.msg);
   }
   return STATUS_OK;
 }
-#line 1543 "paper/output.nw"
+#line 1544 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = md->problem;
@@ -73,7 +74,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             md->fixed_point_iterations, md->fixed_point_residual);
 }
-#line 1562 "paper/output.nw"
+#line 1563 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -96,13 +97,13 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1596 "paper/output.nw"
+#line 1597 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
   FILE *f = output_open(o, "gradient.dat", st);
   if (!f) return st->code;
-  Objective_kind J = gc->objective ? gc->objective->kind : OBJECTIVE_ENERGY;
+  Objective_kind J = (gc->objective ? *gc->objective : objective_default()).kind;
   const char *unit = *objective_unit(J) ? "[J/m^2]" : "[1/m]";
   fprintf(f, "# i x1[m] d%s/dX_i%s finite_difference%s relative_error\n",
           objective_symbol(J), unit, unit);
@@ -118,9 +119,9 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st)
 {
   const Problem *p = md->problem;
-  const Objective *J = gc->objective;
-  double value = md->energy;
-  int rc = J && J->kind != OBJECTIVE_ENERGY ? objective_value(md, J, &value, st) : STATUS_OK;
+  Objective J = gc->objective ? *gc->objective : objective_default();
+  double value;
+  int rc = objective_value(md, &J, &value, st);
   FILE *f = rc ? NULL : output_open(o, "summary.dat", st);
   if (!f) return st->code;
   fprintf(f, "# name value\ncommand %s\n", o->command);
@@ -128,7 +129,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
              "objective %s\nobjective_value %.15g\n"
              "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
           run->scene, problem_model_name(p->model), p->N, md->energy,
-          objective_name(J ? J->kind : OBJECTIVE_ENERGY), value,
+          objective_name(J.kind), value,
           gc->err[gc->worst], gc->worst, gc->ncheck);
   output_friction(f, md);
   threads_summary(f);

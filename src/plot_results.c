@@ -368,7 +368,7 @@ static void objective_words(const Objective *o, char *title, char *symbol, size_
                                      "{/:Italic J_q}" };
   snprintf(symbol, size, "%s", sym[o->kind]);
   snprintf(title, size, "%s%s", name[o->kind], sym[o->kind]);
-  if (o->kind == OBJECTIVE_PEAK)
+  if (objective_has_exponent(o->kind))
     snprintf(title, size, "%s%s, {/:Italic q} = %s", name[o->kind], sym[o->kind], plot_num(o->q));
 }
 

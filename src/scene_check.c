@@ -329,11 +329,13 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
 }
 #line 2398 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
-/* the method of a scene that names none: newton where it applies */
+/* the method of a scene that names none: newton where it applies
+   (opt_refusal) */
 static Opt_method default_method(const Scene *s)
 {
-  return s->optimizer.objective.kind == OBJECTIVE_ENERGY
-         && s->problem.contact != CONTACT_COULOMB ? OPT_NEWTON : OPT_SLSQP;
+  Status why;
+  return opt_refusal(OPT_NEWTON, &s->optimizer.objective, s->problem.contact,
+                     s->path, &why) ? OPT_SLSQP : OPT_NEWTON;
 }
 
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1,
@@ -360,7 +362,7 @@ static int read_optimizer(Loader *L, Scene *s)
   if ((rc = scene_get(L, s, "optimizer", "max_iter"))) return rc;
   if (o->max_iter < 1) return scene_blame(L, "must be >= 1");
   if (!scene_find(L, "optimizer", "max_iter")
-      && o->objective.kind != OBJECTIVE_ENERGY)
+      && !objective_is_energy(o->objective.kind))
     o->max_iter = OTHER_OBJECTIVE_MAX_ITER;
   if ((rc = scene_get(L, s, "optimizer", "levels"))) return rc;
   if (o->levels < 0) return scene_blame(L, "must be >= 0 (0: chosen by N)");
@@ -369,7 +371,7 @@ static int read_optimizer(Loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2446 "paper/scene.nw"
+#line 2448 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Loader *L, Scene *s)
 {
@@ -379,14 +381,14 @@ static int read_objective(Loader *L, Scene *s)
       || (rc = scene_refuse_unused(L, "objective", "kind",
                                    objective_names[o->kind])))
     return rc;
-  if (o->kind != OBJECTIVE_PEAK) { o->q = objective_default().q; return 0; }
+  if (!objective_has_exponent(o->kind)) { o->q = objective_default().q; return 0; }
   if ((rc = scene_get(L, s, "objective", "q"))) return rc;
   if (!(o->q >= 1 && o->q <= 1000))
     return scene_blame(L, "must lie in [1, 1000]: a mean of order q of the "
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2472 "paper/scene.nw"
+#line 2474 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {

@@ -29,8 +29,7 @@ static int open_coulomb(Case *c, const char *F, int n, char **more)
   if ((c->rc = scene_load(&c->s, TRESCA, 3 + n, ov, &c->st))) return c->rc;
   if (!(c->md = model_new(&c->s.problem, &c->s.solver, &c->cm, &c->st)))
     return c->rc = c->st.code;
-  c->md->fixed_point_rounding = 1;
-  return c->rc = model_solve(c->md, c->s.alpha0, &c->st);
+  return c->rc = model_solve_to_rounding(c->md, c->s.alpha0, &c->st);
 }
 
 static void f_zero(void)
@@ -40,7 +39,8 @@ static void f_zero(void)
   double G[17], H[17];
   if (!check(open_case(&a, 0, NULL) == 0 && open_coulomb(&b, "0", 0, NULL) == 0,
              "F = 0: solved: %s%s", a.st.msg, b.st.msg)) return;
-  int rc = grad_energy(a.md, G, &a.st) || grad_energy(b.md, H, &b.st);
+  Objective e = objective_default();
+  int rc = grad_energy(a.md, G, &a.st) || objective_evaluate(b.md, &e, NULL, H, NULL, &b.st);
   check(!rc && max_diff(G, H, n) <= 1e-12 * max_abs(G, n), "F = 0: the gradient "
         "of J_F is (4.8) of the frictionless scene to %.1e <= 1e-12 of its "
         "largest component", max_diff(G, H, n) / max_abs(G, n));
@@ -67,7 +67,7 @@ static void differences(const char *F, const Objective *o)
   int n = c.s.problem.N + 1, its = c.md->fixed_point_iterations, kept;
   double res = c.md->fixed_point_residual, Gs[64], fixed_err = 0;
   Objective e = objective_default();
-  int rc = objective_gradient_fixed(c.md, o ? o : &e, NULL, NULL, NULL, Gs, &c.st);
+  int rc = objective_gradient_fixed(c.md, o ? o : &e, NULL, NULL, NULL, Gs, NULL, &c.st);
   Grad_check *gc = grad_check_new(c.s.problem.N, &c.st);
   if (gc) gc->objective = o;
   if (!check(!rc && gc && grad_check(c.md, c.s.alpha0, gc, NULL, NULL, &c.st) == 0,
@@ -95,7 +95,9 @@ static void units(const char *F)
   double G[17], H[17];
   if (!check(open_coulomb(&a, F, 0, NULL) == 0 && open_coulomb(&b, F, 2, big) == 0,
              "F = %s, scaled: solved: %s%s", F, a.st.msg, b.st.msg)) return;
-  int rc = grad_energy(a.md, G, &a.st) || grad_energy(b.md, H, &b.st);
+  Objective e = objective_default();
+  int rc = objective_evaluate(a.md, &e, NULL, G, NULL, &a.st)
+        || objective_evaluate(b.md, &e, NULL, H, NULL, &b.st);
   for (int i = 0; i < 17; i++) H[i] /= 1e7;
   check(!rc && max_diff(G, H, 17) <= 1e-10 * max_abs(G, 17), "F = %s: E and the "
         "load times 1e7 give the gradient times 1e7, to %.1e <= 1e-10", F,
