@@ -1,5 +1,17 @@
-/* case.h: a scene of Example 5.1 with overrides, its model solved at
-   alpha0, for the test programs of friction; and two vector norms. */
+/* case.h: a case, that is a scene loaded with overrides, its model built
+   and solved at alpha0, step by step or at once, for the test programs
+   that solve a scene; and two vector norms.  Each step says its status
+   in c->rc (and c->st); close_case frees what the steps made, whichever
+   failed.
+     open_case (Example 5.1 with overrides): test_friction.c,
+       test_mprgp.c, test_qp.c, test_coulomb.c;
+     case_load, case_model, case_solve, their own checks between the
+       steps: test_condense.c, test_grad.c, test_objective.c (solved),
+       test_output.c, test_coulomb.c (open_coulomb: another scene, the
+       fixed point to rounding set before the solve);
+     case_load_refined (-s mesh.refine=k, load_refined of setup.h):
+       test_condense.c;
+     max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c. */
 #ifndef CONTACTOPT_TEST_CASE_H
 #define CONTACTOPT_TEST_CASE_H
 #include <math.h>
@@ -18,15 +30,50 @@ typedef struct {
   Status st;
 } Case;
 
-/* load EX51 with the overrides, build its model, solve at alpha0 */
-static inline int open_case(Case *c, int n, char **ov)
+/* CHOLMOD started (test_start) and the scene at path loaded with the n
+   overrides ov; no model yet, so that the caller may change c->s */
+static inline int case_load(Case *c, const char *path, int n, char **ov)
 {
   memset(c, 0, sizeof *c);
   test_start(&c->cm);
-  if ((c->rc = scene_load(&c->s, EX51, n, ov, &c->st))) return c->rc;
+  return c->rc = scene_load(&c->s, path, n, ov, &c->st);
+}
+
+/* the same, the scene refined k times (load_refined) */
+static inline int case_load_refined(Case *c, const char *path, int k)
+{
+  memset(c, 0, sizeof *c);
+  test_start(&c->cm);
+  return c->rc = load_refined(&c->s, path, k, &c->st);
+}
+
+/* the model of c->s's problem and state solver, anew (after the caller
+   changed c->s) if c has one */
+static inline int case_model(Case *c)
+{
+  model_free(c->md);
   if (!(c->md = model_new(&c->s.problem, &c->s.solver, &c->cm, &c->st)))
     return c->rc = c->st.code;
+  return c->rc = 0;
+}
+
+/* the model solved at the scene's alpha0 */
+static inline int case_solve(Case *c)
+{
   return c->rc = model_solve(c->md, c->s.alpha0, &c->st);
+}
+
+/* the scene at path with the overrides, its model solved at alpha0 */
+static inline int open_case_at(Case *c, const char *path, int n, char **ov)
+{
+  if (case_load(c, path, n, ov) || case_model(c)) return c->rc;
+  return case_solve(c);
+}
+
+/* EX51 with the overrides, its model solved at alpha0 */
+static inline int open_case(Case *c, int n, char **ov)
+{
+  return open_case_at(c, EX51, n, ov);
 }
 
 static inline void close_case(Case *c)

@@ -1,4 +1,18 @@
-/* setup.h: what every test program of the model does first. */
+/* setup.h: what every test program of the model does first.
+     test_start (CHOLMOD started and quiet, GSL's handler off):
+       test_qp.c, test_pdas.c, test_psor.c, test_mprgp.c (by
+       qp_problems.h's cm, and weakly_active.h), test_fem.c,
+       test_model.c, test_scene_write.c, and every test of case.h
+       (test_condense.c, test_grad.c, test_objective.c, test_output.c,
+       test_friction.c, test_coulomb.c);
+     test_start_gsl (GSL's handler off alone, no CHOLMOD): test_newton.c;
+     load_refined: test_model.c, and test_condense.c by case.h.
+   The test programs that neither factorise nor call GSL through the
+   library start nothing: test_mesh.c, test_problem.c, test_threads.c,
+   test_design.c (its GSL is its own reference, whose failure should
+   abort), and the tests of the scene files, test_scene.c,
+   test_scene_errors.c, test_scene_keys.c, which call scene_load
+   itself, the function they test. */
 #ifndef CONTACTOPT_TEST_SETUP_H
 #define CONTACTOPT_TEST_SETUP_H
 #include <stdio.h>
@@ -6,13 +20,19 @@
 #include <gsl/gsl_errno.h>
 #include "scene.h"
 
-/* CHOLMOD started and quiet, GSL's error handler off: the library reports
+/* GSL's error handler off: the library checks GSL's codes and reports
    every failure through its Status, as the program does */
+static inline void test_start_gsl(void)
+{
+  gsl_set_error_handler_off();
+}
+
+/* CHOLMOD started and quiet, GSL's error handler off */
 static inline void test_start(cholmod_common *cm)
 {
   cholmod_l_start(cm);
   cm->print = 0;
-  gsl_set_error_handler_off();
+  test_start_gsl();
 }
 
 /* the scene at path refined k times (-s mesh.refine=k), as make accuracy
