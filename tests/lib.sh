@@ -142,6 +142,30 @@ numbers() {
   fi
   numdiff -q -a $1 -r $2 $TMP/numbers.a $TMP/numbers.b; }
 
+# scene_key KEY SCENE: the value of the line "KEY = value" of the scene
+# file SCENE (the first, in whatever section: every suite scene gives its
+# constants once)
+scene_key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
+
+# ---- the prose of the paper (tests/numbers.sh, tests/prose.sh) ----------------
+# prose FILE: the documentation lines of the noweb file FILE (outside its
+# code chunks: from a line "@" or "@ text" to the next "<<name>>="), as
+# FILE:LINE:text
+prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
+  /^@( |$)/ { code = 0; sub(/^@ ?/, "") }
+  !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
+# prose_lines FILE...: the lines of the prose of each FILE, as
+# FILE:LINE:text: of a paper/*.nw its documentation lines (prose), of a
+# .tex file its lines that are not comments, of any other file (README.md)
+# every line
+prose_lines() { for _lp; do
+  case $_lp in
+    *.nw) prose "$_lp" ;;
+    *.tex) awk -v F="$_lp" '!/^%/ { print F ":" FNR ":" $0 }' "$_lp" ;;
+    *) awk '{ print FILENAME ":" FNR ":" $0 }' "$_lp" ;;
+  esac
+done; }
+
 # ---- the design set B and the optimality of a design --------------------------
 # B of the three shipped scenes on the article's mesh: C0, d = C1 h, the
 # area S = gamma (b - a) - C2, b - a and h, as in_B takes them
