@@ -142,10 +142,6 @@ numbers() {
   fi
   numdiff -q -a $1 -r $2 $TMP/numbers.a $TMP/numbers.b; }
 
-# scene_key KEY SCENE: the value of the line "KEY = value" of the scene
-# file SCENE (the first, in whatever section: every suite scene gives its
-# constants once)
-scene_key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
 
 # ---- the prose of the paper (tests/numbers.sh, tests/prose.sh) ----------------
 # prose FILE: the documentation lines of the noweb file FILE (outside its
@@ -170,6 +166,17 @@ done; }
 # B of the three shipped scenes on the article's mesh: C0, d = C1 h, the
 # area S = gamma (b - a) - C2, b - a and h, as in_B takes them
 B_article="0.05 0.00625 0.09 4 0.25"
+# scene_key KEY SCENE: the value of the first line "KEY = value" of the
+# scene file SCENE, in whatever section (the scenes of tests/converged.sh
+# and tests/suite.sh give their constants once, each in full)
+scene_key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
+# scene_B SCENE: B of the scene file SCENE on its own mesh, as in_B takes
+# it: "C0 d S L h", with L = b - a, h = L / N, d = C1 h, S = gamma L - C2
+scene_B() {
+  _lbL=$(calc 'b - a' a="$(scene_key a "$1")" b="$(scene_key b "$1")")
+  _lbh=$(calc 'L / N' L="$_lbL" N="$(scene_key N "$1")")
+  echo "$(scene_key C0 "$1")" "$(calc 'C1 * h' C1="$(scene_key C1 "$1")" h="$_lbh")" \
+    "$(calc 'g * L - C2' g="$(scene_key gamma "$1")" L="$_lbL" C2="$(scene_key C2 "$1")")" "$_lbL" "$_lbh"; }
 # violation FILE C0 d S L h: the largest violation of B (4.4) by an iterate
 # of FILE (iterates.dat: one block per iteration, two blank lines apart,
 # alpha in column 4),
