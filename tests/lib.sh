@@ -264,6 +264,12 @@ rel() { show %.1e "$(calc 'abs(a - ref) / abs(ref)' a="$1" ref="$2")"; }
 # "nan"), their values are those of nodes.dat and contact.dat and the
 # stress from them, which tests/paraview.sh finds finite
 finite() { ! grep -r -q -I -i -E "(^|[[:space:]\"'>=])[-+]?(nan|inf)" "$1"; }
+# state_ok NAME TOL: the solve into $TMP/NAME converged to a KKT residual
+# at most TOL, and wrote no NaN or Inf (two checks)
+state_ok() {
+  _lsk=$(value kkt_residual $TMP/$1)
+  check "$1: KKT residual $_lsk <= $2 after $(value iterations $TMP/$1) $(value state_solver $TMP/$1) iterations" le "$_lsk" $2
+  check "$1: no NaN or Inf in any output file" finite $TMP/$1; }
 # udiff DIR1 DIR2 [FACTOR]: max |u - u'/FACTOR| over the nodes (same mesh),
 # relative to umax DIR1 (absolute if that is 0)
 udiff() { paste $1/nodes.dat $2/nodes.dat | rows_max 'max(abs($6 - $13 / f), abs($7 - $14 / f)) / (u > 0 ? u : 1)' - \
