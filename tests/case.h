@@ -1,17 +1,22 @@
 /* case.h: a case, that is a scene loaded with overrides, its model built
-   and solved at alpha0, step by step or at once, for the test programs
-   that solve a scene; and two vector norms.  Each step says its status
-   in c->rc (and c->st); close_case frees what the steps made, whichever
-   failed.
-     open_case (Example 5.1 with overrides): test_friction.c,
+   and solved at alpha0, at once or step by step, for the test programs
+   that solve a scene; and two vector norms.  Each step puts its status in
+   c->rc (and c->st); close_case frees what the steps made, wherever they
+   stopped.  Which test uses which:
+     open_case (Example 5.1 with overrides, solved): test_friction.c,
        test_mprgp.c, test_qp.c, test_coulomb.c;
-     case_load, case_model, case_solve, their own checks between the
-       steps: test_condense.c, test_grad.c, test_objective.c (solved),
-       test_output.c, test_coulomb.c (open_coulomb: another scene, the
-       fixed point to rounding set before the solve);
-     case_load_refined (-s mesh.refine=k, load_refined of setup.h):
-       test_condense.c;
-     max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c. */
+     case_load, case_model, case_solve (any scene; the test checks each
+       step, or changes c->s before the model, or the model before the
+       solve): test_condense.c, test_grad.c, test_model.c,
+       test_objective.c, test_output.c, test_coulomb.c (open_coulomb);
+     case_load_refined (-s mesh.refine=k, by setup.h's load_refined):
+       test_condense.c, test_model.c;
+     max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c.
+   The tests that build a model of a scene they hold otherwise go through
+   setup.h alone: test_scene_write.c (a scene written and read back),
+   weakly_active.h (a model per state solver, solve_cold), and
+   test_mprgp.c's model of a case's scene with a solver the scene
+   refuses. */
 #ifndef CONTACTOPT_TEST_CASE_H
 #define CONTACTOPT_TEST_CASE_H
 #include <math.h>
@@ -63,17 +68,11 @@ static inline int case_solve(Case *c)
   return c->rc = model_solve(c->md, c->s.alpha0, &c->st);
 }
 
-/* the scene at path with the overrides, its model solved at alpha0 */
-static inline int open_case_at(Case *c, const char *path, int n, char **ov)
-{
-  if (case_load(c, path, n, ov) || case_model(c)) return c->rc;
-  return case_solve(c);
-}
-
 /* EX51 with the overrides, its model solved at alpha0 */
 static inline int open_case(Case *c, int n, char **ov)
 {
-  return open_case_at(c, EX51, n, ov);
+  if (case_load(c, EX51, n, ov) || case_model(c)) return c->rc;
+  return case_solve(c);
 }
 
 static inline void close_case(Case *c)

@@ -1,18 +1,20 @@
-/* setup.h: what every test program of the model does first.
+/* setup.h: what every test program of the model does first.  Which test
+   uses which:
      test_start (CHOLMOD started and quiet, GSL's handler off):
-       test_qp.c, test_pdas.c, test_psor.c, test_mprgp.c (by
-       qp_problems.h's cm, and weakly_active.h), test_fem.c,
-       test_model.c, test_scene_write.c, and every test of case.h
-       (test_condense.c, test_grad.c, test_objective.c, test_output.c,
-       test_friction.c, test_coulomb.c);
+       test_qp.c, test_pdas.c, test_psor.c, test_mprgp.c (on
+       qp_problems.h's cm, and in weakly_active.h), test_fem.c,
+       test_scene_write.c, and through case.h every test that opens a
+       case (test_condense.c, test_coulomb.c, test_friction.c,
+       test_grad.c, test_model.c, test_objective.c, test_output.c);
      test_start_gsl (GSL's handler off alone, no CHOLMOD): test_newton.c;
-     load_refined: test_model.c, and test_condense.c by case.h.
-   The test programs that neither factorise nor call GSL through the
-   library start nothing: test_mesh.c, test_problem.c, test_threads.c,
-   test_design.c (its GSL is its own reference, whose failure should
-   abort), and the tests of the scene files, test_scene.c,
-   test_scene_errors.c, test_scene_keys.c, which call scene_load
-   itself, the function they test. */
+     load_refined: through case.h's case_load_refined, test_condense.c
+       and test_model.c.
+   The test programs that neither factorise with CHOLMOD nor reach GSL's
+   routines through the library start nothing: test_mesh.c,
+   test_problem.c, test_threads.c (BLAS alone), test_design.c (its GSL is its own reference, whose failure should
+   abort it); nor do the tests of the scene files, test_scene.c,
+   test_scene_errors.c and test_scene_keys.c, which call scene_load,
+   the function they test, with overrides of their own. */
 #ifndef CONTACTOPT_TEST_SETUP_H
 #define CONTACTOPT_TEST_SETUP_H
 #include <stdio.h>
