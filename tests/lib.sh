@@ -17,6 +17,14 @@ finish() { rm -rf "$TMP"; [ "$failures" -eq 0 ]; }
 # whole suite with OPENBLAS_NUM_THREADS=16 too
 unasked() { env -u OPENBLAS_NUM_THREADS -u GOTO_NUM_THREADS -u OMP_NUM_THREADS "$@"; }
 
+# limits_run: the runs under ulimit -v can be made; under AddressSanitizer
+# (make SAN=1), which reserves terabytes of shadow address space at start
+# that no ulimit -v admits, they cannot: a comment says so, status 1
+# (tests/runs.sh, tests/threads.sh)
+limits_run() { case $BIN in
+  */san/*) echo "# skipped under AddressSanitizer: the ulimit -v runs (its shadow memory cannot be reserved under an address-space limit)"; return 1 ;;
+esac; }
+
 # ---- the numeric guard ------------------------------------------------------
 # A check compares numbers only: every value it compares must be a finite
 # decimal number (number() below: not empty, not NaN or Inf, not a word),
