@@ -9,13 +9,15 @@
        step, or changes c->s before the model, or the model before the
        solve): test_condense.c, test_grad.c, test_model.c,
        test_objective.c, test_output.c, test_coulomb.c (open_coulomb);
+       case_load alone, its models one per state solver (solve_cold):
+       weakly_active.h (test_pdas.c, test_psor.c, test_mprgp.c,
+       test_model.c);
      case_load_refined (-s mesh.refine=k, by setup.h's load_refined):
        test_condense.c, test_model.c;
      max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c.
-   The tests that build a model of a scene they hold otherwise go through
-   setup.h alone: test_scene_write.c (a scene written and read back),
-   weakly_active.h (a model per state solver, solve_cold), and
-   test_mprgp.c's model of a case's scene with a solver the scene
+   Two models stand outside a case, through setup.h alone: that of
+   test_scene_write.c's energy, of a scene written and read back, and
+   test_mprgp.c's of a case's scene with a state solver the scene
    refuses. */
 #ifndef CONTACTOPT_TEST_CASE_H
 #define CONTACTOPT_TEST_CASE_H
