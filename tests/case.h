@@ -15,10 +15,10 @@
      case_load_refined (-s mesh.refine=k, by setup.h's load_refined):
        test_condense.c, test_model.c;
      max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c.
-   Two models stand outside a case, through setup.h alone: that of
-   test_scene_write.c's energy, of a scene written and read back, and
-   test_mprgp.c's of a case's scene with a state solver the scene
-   refuses. */
+   Two models are built outside case_model: test_scene_write.c's energy
+   (of a scene written and read back; CHOLMOD by setup.h's test_start)
+   and test_mprgp.c's, on a case's scene with a state solver that the
+   scene refuses. */
 #ifndef CONTACTOPT_TEST_CASE_H
 #define CONTACTOPT_TEST_CASE_H
 #include <math.h>
