@@ -18,13 +18,12 @@
 # robustness suite on which SLSQP or Algorithm 4.1 does not converge in
 # its 200 iterations.
 . tests/lib.sh
-key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
 # one start: LABEL SCENE [-s KEY=VALUE...]
 start() {
   label=$1 sc=$2; shift 2
-  L=$(calc 'b - a' a="$(key a $sc)" b="$(key b $sc)"); N=$(key N $sc); C0=$(key C0 $sc)
-  h=$(calc 'L / N' L="$L" N="$N"); d=$(calc 'C1 * h' C1="$(key C1 $sc)" h="$h")
-  S=$(calc 'g * L - C2' g="$(key gamma $sc)" L="$L" C2="$(key C2 $sc)")
+  read -r C0 d S L h <<B
+$(scene_B $sc)
+B
   for m in newton slsqp projgrad; do
     o=$TMP/$label-$m; rm -rf $o
     $BIN optimize $sc -o $o -s optimizer.method=$m "$@" >/dev/null 2>$TMP/$label-$m.err

@@ -21,11 +21,6 @@ optimize() { _n=$1 _sc=$2; shift 2
   # stop reason the checks that follow judge
   [ $_rc -eq 0 ] || { [ $_rc -eq 3 ] && [ -s $TMP/$_n/summary.dat ]; } && return 0
   fail "$_n: optimize failed: $(cat $TMP/err)"; return 1; }
-# state_ok NAME TOL: the solve converged to TOL, and wrote no NaN or Inf
-state_ok() {
-  _k=$(value kkt_residual $TMP/$1)
-  check "$1: KKT residual $_k <= $2 after $(value iterations $TMP/$1) $(value state_solver $TMP/$1) iterations" le "$_k" $2
-  check "$1: no NaN or Inf in any output file" finite $TMP/$1; }
 # refused NAME CODE PATTERN COMMAND...: the command exits with CODE, says
 # one line on stderr that matches PATTERN, and writes nothing into $TMP/NAME
 refused() {

@@ -17,6 +17,14 @@ finish() { rm -rf "$TMP"; [ "$failures" -eq 0 ]; }
 # whole suite with OPENBLAS_NUM_THREADS=16 too
 unasked() { env -u OPENBLAS_NUM_THREADS -u GOTO_NUM_THREADS -u OMP_NUM_THREADS "$@"; }
 
+# limits_run: the runs under ulimit -v can be made; under AddressSanitizer
+# (make SAN=1), which reserves terabytes of shadow address space at start
+# that no ulimit -v admits, they cannot: a comment says so, status 1
+# (tests/runs.sh, tests/threads.sh)
+limits_run() { case $BIN in
+  */san/*) echo "# skipped under AddressSanitizer: the ulimit -v runs (its shadow memory cannot be reserved under an address-space limit)"; return 1 ;;
+esac; }
+
 # ---- the numeric guard ------------------------------------------------------
 # A check compares numbers only: every value it compares must be a finite
 # decimal number (number() below: not empty, not NaN or Inf, not a word),
@@ -142,10 +150,41 @@ numbers() {
   fi
   numdiff -q -a $1 -r $2 $TMP/numbers.a $TMP/numbers.b; }
 
+
+# ---- the prose of the paper (tests/numbers.sh, tests/prose.sh) ----------------
+# prose FILE: the documentation lines of the noweb file FILE (outside its
+# code chunks: from a line "@" or "@ text" to the next "<<name>>="), as
+# FILE:LINE:text
+prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
+  /^@( |$)/ { code = 0; sub(/^@ ?/, "") }
+  !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
+# prose_lines FILE...: the lines of the prose of each FILE, as
+# FILE:LINE:text: of a paper/*.nw its documentation lines (prose), of a
+# .tex file its lines that are not comments, of any other file (README.md)
+# every line
+prose_lines() { for _lp; do
+  case $_lp in
+    *.nw) prose "$_lp" ;;
+    *.tex) awk -v F="$_lp" '!/^%/ { print F ":" FNR ":" $0 }' "$_lp" ;;
+    *) awk '{ print FILENAME ":" FNR ":" $0 }' "$_lp" ;;
+  esac
+done; }
+
 # ---- the design set B and the optimality of a design --------------------------
 # B of the three shipped scenes on the article's mesh: C0, d = C1 h, the
 # area S = gamma (b - a) - C2, b - a and h, as in_B takes them
 B_article="0.05 0.00625 0.09 4 0.25"
+# scene_key KEY SCENE: the value of the first line "KEY = value" of the
+# scene file SCENE, in whatever section (the scenes of tests/converged.sh
+# and tests/suite.sh give their constants once, each in full)
+scene_key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
+# scene_B SCENE: B of the scene file SCENE on its own mesh, as in_B takes
+# it: "C0 d S L h", with L = b - a, h = L / N, d = C1 h, S = gamma L - C2
+scene_B() {
+  _lbL=$(calc 'b - a' a="$(scene_key a "$1")" b="$(scene_key b "$1")")
+  _lbh=$(calc 'L / N' L="$_lbL" N="$(scene_key N "$1")")
+  echo "$(scene_key C0 "$1")" "$(calc 'C1 * h' C1="$(scene_key C1 "$1")" h="$_lbh")" \
+    "$(calc 'g * L - C2' g="$(scene_key gamma "$1")" L="$_lbL" C2="$(scene_key C2 "$1")")" "$_lbL" "$_lbh"; }
 # violation FILE C0 d S L h: the largest violation of B (4.4) by an iterate
 # of FILE (iterates.dat: one block per iteration, two blank lines apart,
 # alpha in column 4),
@@ -233,6 +272,12 @@ rel() { show %.1e "$(calc 'abs(a - ref) / abs(ref)' a="$1" ref="$2")"; }
 # "nan"), their values are those of nodes.dat and contact.dat and the
 # stress from them, which tests/paraview.sh finds finite
 finite() { ! grep -r -q -I -i -E "(^|[[:space:]\"'>=])[-+]?(nan|inf)" "$1"; }
+# state_ok NAME TOL: the solve into $TMP/NAME converged to a KKT residual
+# at most TOL, and wrote no NaN or Inf (two checks)
+state_ok() {
+  _lsk=$(value kkt_residual $TMP/$1)
+  check "$1: KKT residual $_lsk <= $2 after $(value iterations $TMP/$1) $(value state_solver $TMP/$1) iterations" le "$_lsk" $2
+  check "$1: no NaN or Inf in any output file" finite $TMP/$1; }
 # udiff DIR1 DIR2 [FACTOR]: max |u - u'/FACTOR| over the nodes (same mesh),
 # relative to umax DIR1 (absolute if that is 0)
 udiff() { paste $1/nodes.dat $2/nodes.dat | rows_max 'max(abs($6 - $13 / f), abs($7 - $14 / f)) / (u > 0 ? u : 1)' - \

@@ -47,18 +47,6 @@ hits() { tee $TMP/numbers.in | grep -E "$pattern" > $TMP/numbers.a
   grep -i -E -f $TMP/phrases $TMP/numbers.in > $TMP/numbers.b
   cat $TMP/numbers.a $TMP/numbers.b | awk '!seen[$0]++'; }
 
-# prose FILE: the documentation lines of the noweb file FILE, as FILE:LINE:text
-prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
-  /^@( |$)/ { code = 0; sub(/^@ ?/, "") }
-  !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
-# lines FILE...: the lines of the prose of each FILE, as FILE:LINE:text
-lines() { for f; do
-  case $f in
-    *.nw) prose "$f" ;;
-    *.tex) awk -v F="$f" '!/^%/ { print F ":" FNR ":" $0 }' "$f" ;;
-    *) awk '{ print FILENAME ":" FNR ":" $0 }' "$f" ;;
-  esac
-done; }
 # allowed: standard input with what tests/numbers.allow allows taken out
 allowed() { awk 'NR == FNR { if (!/^#/ && NF) re[++n] = $0; next }
   { for (i = 1; i <= n; i++) gsub(re[i], "(allowed)"); print }' tests/numbers.allow -; }
@@ -71,7 +59,7 @@ pending() { awk -F '\t' 'FILENAME != "-" { if (!/^#/ && NF) p[$1 "\t" $2] = 1; n
   { i = index($0, ":"); f = substr($0, 1, i - 1); r = substr($0, i + 1); t = substr(r, index(r, ":") + 1)
     if ((f "\t" t) in p) { print > "/dev/stderr"; next } print }' tests/numbers.pending -; }
 
-lines paper/*.nw paper/article.tex README.md | allowed | hits | pending > $TMP/numbers.hits 2> $TMP/numbers.pending
+prose_lines paper/*.nw paper/article.tex README.md | allowed | hits | pending > $TMP/numbers.hits 2> $TMP/numbers.pending
 cat $TMP/numbers.hits
 check "the prose of paper/*.nw, paper/article.tex and README.md quotes no measured number by hand ($(wc -l < $TMP/numbers.hits) lines do; $(wc -l < $TMP/numbers.pending) listed as pending in tests/numbers.pending)" \
   test ! -s $TMP/numbers.hits
@@ -82,7 +70,7 @@ check "the prose of paper/*.nw, paper/article.tex and README.md quotes no measur
 printf '%s\n' 'It takes 0.53\,s and 12\,\% of the time.' 'A run of 489 checks,' 'and 1.6~times as long.' \
   '<<chunk>>=' 'x = 1; /* 0.53 s, 489 checks, 12 % */' \
   '@ The macro \outputwhole\,s, and $10^{10}$ times.' 'SLSQP stops after 200 iterations.' > $TMP/probe.nw
-lines $TMP/probe.nw | allowed | hits > $TMP/probe.hits
+prose_lines $TMP/probe.nw | allowed | hits > $TMP/probe.hits
 check "the check finds the planted numbers in prose (lines 1 to 3) and nothing else" \
   test "$(cut -d: -f2 $TMP/probe.hits | tr '\n' ' ')" = "1 2 3 "
 
@@ -100,7 +88,7 @@ while IFS='|' read -r file phrase; do
   cp "$file" $TMP/planted.nw
   printf '@ %s\n' "$phrase" >> $TMP/planted.nw
   n=$(wc -l < $TMP/planted.nw)
-  lines $TMP/planted.nw | allowed | hits | grep -c "^$TMP/planted.nw:$n:" > $TMP/planted.count || true
+  prose_lines $TMP/planted.nw | allowed | hits | grep -c "^$TMP/planted.nw:$n:" > $TMP/planted.count || true
   label=$(printf '%s' "$phrase" | tr -d '\\$' | cut -c1-60)
   check "the check finds a stale number typed back into $file: $label" test "$(cat $TMP/planted.count)" = 1
 done <<'STALE'

@@ -12,20 +12,9 @@
 
 patterns='until issue|issue[ ~]?[0-9]|issues [0-9]|used to|no longer|until (january|february|march|april|may|june|july|august|september|october|november|december)|was the default|(the )?default (until|before|since)|before this (module|change|version|one)|this version|last round|this session|(was|were) mended|in the run before|the run before this|older versions|(earlier|previous|former|old) version|was the floor of|(stopped|stalled) on before|(slsqp|solvers?|optimi[sz]ers?|pdas) stalled|without the mending'
 
-# prose FILE: the documentation lines of the noweb file FILE, as FILE:LINE:text
-prose() { awk '/^<<.*>>=[ \t]*$/ { code = 1; next }
-  /^@( |$)/ { code = 0; sub(/^@ ?/, "") }
-  !code { print FILENAME ":" FNR ":" $0 }' "$1"; }
-
-
-# not the tables the bench scripts write (paper/bench-*.tex)
-for f in paper/*.nw paper/article.tex README.md; do
-  case $f in
-    *.nw) prose "$f" ;;
-    *.tex) awk '!/^%/ { print FILENAME ":" FNR ":" $0 }' "$f" ;;
-    *) awk '{ print FILENAME ":" FNR ":" $0 }' "$f" ;;
-  esac
-done > $TMP/prose.lines
+# the prose (prose_lines of tests/lib.sh), not the tables the bench
+# scripts write (paper/bench-*.tex)
+prose_lines paper/*.nw paper/article.tex README.md > $TMP/prose.lines
 grep -i -E "$patterns" $TMP/prose.lines > $TMP/prose.hits
 # a phrase split over two lines ("the residual the solvers stopped on /
 # before"): each line joined to the next of its file, reported by its

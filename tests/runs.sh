@@ -23,12 +23,9 @@ check "design.N = 100000: refused before any work, exit 5, one line with the est
 $BIN solve $ex -o $TMP/big -s design.N=2000000 >/dev/null 2>$TMP/err
 check "design.N=2000000: refused before any work by the memory, exit 5, one line" \
   clean_failure $? 5 $TMP/err $TMP/big 'needs about [0-9.e+]+ GB, more than the [0-9.]+ GB this process may use'
-# AddressSanitizer reserves terabytes of shadow address space at start,
-# which no ulimit -v admits: under make SAN=1 the limits are skipped,
-# and said so (the ordinary build runs them in make check).
-case $BIN in
-  */san/*) echo "# skipped under AddressSanitizer: the ulimit -v runs (its shadow memory cannot be reserved under an address-space limit)" ;;
-  *)
+# under make SAN=1 the limits are skipped, and said so (limits_run of
+# tests/lib.sh); the ordinary build runs them in make check
+if limits_run; then
   ( ulimit -v 8000000; $BIN solve $ex -o $TMP/big -s mesh.refine=512 >/dev/null 2>$TMP/err )
   check "ulimit -v 8 GB, N = 8192: refused by the memory alone (no index type bounds it), exit 5, one line" \
     clean_failure $? 5 $TMP/err $TMP/big 'N = 8192 .*needs about [0-9.e+]+ GB, more than the 8.19? GB this process may use'
@@ -41,8 +38,7 @@ case $BIN in
   ( ulimit -v 900000; unasked $BIN solve $ex -o $TMP/oom -s mesh.refine=64 >/dev/null 2>$TMP/err )
   check "ulimit -v 900 MB, N = 1024: memory runs out on the way, exit 5, one line, nothing written" \
     clean_failure $? 5 $TMP/err $TMP/oom 'out of memory'
-  ;;
-esac
+fi
 
 # ---- interrupts ------------------------------------------------------------------
 # SLSQP on N = 256 takes about 10 s: the signal comes after the first

@@ -10,8 +10,6 @@
 # energies agree to 1e-9, and where it does not, the Newton method's
 # energy is not above its own.
 . tests/lib.sh
-# the value of KEY in a scene file (every suite scene gives its constants)
-key() { awk -v k="$1" '$1 == k && $2 == "=" { print $3; exit }' "$2"; }
 # What SLSQP (schur metric, optimizer.max_iter = 200) does on each scene:
 # "STOP EXIT [ITERATIONS]", the same under the OpenBLAS kernels Haswell,
 # Sandybridge, Prescott, SkylakeX and with one thread (paper/opt.nw,
@@ -32,9 +30,9 @@ for sc in data/suite/*.scene; do
   fi
   check "$n: the Newton method converges within 100 iterations ($(value stop_reason $c), $(value iterations $c) it, pi $(value projected_gradient $c))" \
     holds 'ok && it <= 100' ok=$([ "$(value stop_reason $c)" = converged ] && echo 1 || echo 0) it="$(value iterations $c)"
-  L=$(calc 'b - a' a="$(key a $sc)" b="$(key b $sc)"); N=$(key N $sc); C0=$(key C0 $sc)
-  h=$(calc 'L / N' L="$L" N="$N"); d=$(calc 'C1 * h' C1="$(key C1 $sc)" h="$h")
-  S=$(calc 'g * L - C2' g="$(key gamma $sc)" L="$L" C2="$(key C2 $sc)")
+  read -r C0 d S L h <<B
+$(scene_B $sc)
+B
   in_B "$n newton" $c 1e-12 $C0 $d $S $L $h
   kkt_point "$n newton" $c $C0 $d $h
   $BIN optimize $sc -o $r -s optimizer.method=slsqp >/dev/null 2>$TMP/err; rc=$?

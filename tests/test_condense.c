@@ -18,9 +18,7 @@
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "check.h"
-#include "setup.h"
-#include "scene.h"
-#include "model.h"
+#include "case.h"
 #include "condense.h"
 
 /* the dense Schur complement of A onto the contact unknowns, ordered by
@@ -68,19 +66,20 @@ static gsl_matrix *dense_schur(const Model *md, double shift)
    pdas hands over its own S, the others have it condensed apart */
 static void compare(const char *path, int N, Qp_method state)
 {
-  Scene s;
-  Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(load_refined(&s, path, N / 16, &st) == 0, "load %s", path)) return;
-  s.solver = qp_options_default(state);
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
+  Case cs;
+  if (!check(case_load_refined(&cs, path, N / 16) == 0, "load %s", path)) {
+    close_case(&cs);
+    return;
+  }
+  cs.s.solver = qp_options_default(state);
+  case_model(&cs);
+  Model *md = cs.md;
   int n1 = N + 1, nc = md->dofs->nc;
   double *S = malloc((size_t) n1 * n1 * sizeof *S), err = 0, scale = 0;
   const char *sn = qp_method_name(state);
-  check(model_solve(md, s.alpha0, &st) == 0, "%s N = %d %s: solve", path, N, sn);
-  int rc = model_contact_stiffness(md, S, &st);
-  check(rc == 0, "%s N = %d %s: model_contact_stiffness (%s)", path, N, sn, rc ? st.msg : "ok");
+  check(case_solve(&cs) == 0, "%s N = %d %s: solve", path, N, sn);
+  int rc = model_contact_stiffness(md, S, &cs.st);
+  check(rc == 0, "%s N = %d %s: model_contact_stiffness (%s)", path, N, sn, rc ? cs.st.msg : "ok");
   gsl_matrix *ref = dense_schur(md, 1e-6);
   for (int c = 0; c < nc; c++)
     for (int e = 0; e < nc; e++) {
@@ -94,21 +93,20 @@ static void compare(const char *path, int N, Qp_method state)
   check(gsl_linalg_cholesky_decomp1(&Sv.matrix) == 0, "%s N = %d %s: S is positive definite", path, N, sn);
   gsl_matrix_free(ref);
   free(S);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 /* the flat punch: no shift, S times the vertical rigid motion is zero */
 static void floating(void)
 {
-  Scene s;
-  Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(scene_load(&s, "tests/scenes/flat-punch.scene", 0, NULL, &st) == 0, "load flat punch")) return;
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
-  model_solve(md, s.alpha0, &st);
+  Case cs;
+  if (!check(case_load(&cs, "tests/scenes/flat-punch.scene", 0, NULL) == 0, "load flat punch")) {
+    close_case(&cs);
+    return;
+  }
+  case_model(&cs);
+  case_solve(&cs);
+  Model *md = cs.md;
   gsl_matrix *S = dense_schur(md, 0);
   int nc = md->dofs->nc;
   double rigid = 0, scale = 0;
@@ -121,9 +119,7 @@ static void floating(void)
   check(rigid <= 1e-10 * scale, "flat punch: without the shift S annihilates the vertical "
         "rigid motion (|S 1| = %.1e of max S_ii): the shift is needed", rigid / scale);
   gsl_matrix_free(S);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 /* CHOLMOD's allocator, made to fail */
@@ -134,26 +130,26 @@ static void *no_calloc(size_t n, size_t m) { (void) n, (void) m; return NULL; }
    a message that gives CHOLMOD's status by number and name */
 static void analysis_fails(void)
 {
-  Scene s;
+  Case cs;
+  if (!check(case_load(&cs, EX51, 0, NULL) == 0, "load example 5.1")) {
+    close_case(&cs);
+    return;
+  }
+  case_model(&cs);
+  Model *md = cs.md;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(scene_load(&s, "data/example-5.1.scene", 0, NULL, &st) == 0, "load example 5.1")) return;
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
   void *(*m)(size_t) = SuiteSparse_config.malloc_func;
   void *(*c)(size_t, size_t) = SuiteSparse_config.calloc_func;
   SuiteSparse_config.malloc_func = no_malloc, SuiteSparse_config.calloc_func = no_calloc;
   st.code = STATUS_OK, st.msg[0] = 0;
-  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, NULL, &cm, &st);
+  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, NULL, &cs.cm, &st);
   SuiteSparse_config.malloc_func = m, SuiteSparse_config.calloc_func = c;
   check(!cd && st.code == STATUS_MEMORY && strstr(st.msg, "CHOLMOD failed to analyse A: out of memory "
         "(CHOLMOD status -2, CHOLMOD_OUT_OF_MEMORY)"),
         "CHOLMOD's allocations fail in the analysis: exit status 5, CHOLMOD's status in the message (%d: %s)",
         st.code, st.msg);
   condense_free(cd);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 int main(void)

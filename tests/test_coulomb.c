@@ -24,11 +24,7 @@ static int open_coulomb(Case *c, const char *F, int n, char **more)
   char pf[48], *ov[8] = { "contact.model=coulomb", "contact.g=", pf };
   snprintf(pf, sizeof pf, "contact.friction=%s", F);
   for (int k = 0; k < n; k++) ov[3 + k] = more[k];
-  memset(c, 0, sizeof *c);
-  test_start(&c->cm);
-  if ((c->rc = scene_load(&c->s, TRESCA, 3 + n, ov, &c->st))) return c->rc;
-  if (!(c->md = model_new(&c->s.problem, &c->s.solver, &c->cm, &c->st)))
-    return c->rc = c->st.code;
+  if (case_load(c, TRESCA, 3 + n, ov) || case_model(c)) return c->rc;
   return c->rc = model_solve_to_rounding(c->md, c->s.alpha0, &c->st);
 }
 

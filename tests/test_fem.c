@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
+#include "setup.h"
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
@@ -106,7 +107,7 @@ static void patch_test(Plane_model model)
   Problem s = free_body(N, M, R, model);
   Status st = { 0, "" };
   cholmod_common cm;
-  cholmod_l_start(&cm);
+  test_start(&cm);
   Mesh *m = mesh_new(&s, &st);
   double X[17];
   design(N, X);
@@ -212,7 +213,7 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   Problem s = free_body(N, M, R, MODEL_PLANE_STRESS);
   Status st = { 0, "" };
   cholmod_common cm;
-  cholmod_l_start(&cm);
+  test_start(&cm);
   s.side[SIDE_LEFT].kind = left, s.side[SIDE_RIGHT].kind = right, s.side[SIDE_TOP].kind = top;
   Mesh *m = mesh_new(&s, &st);
   Dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
@@ -255,7 +256,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
   s.F[0] = 3e7, s.F[1] = -2e8, s.has_body_force = 1;
   Status st = { 0, "" };
   cholmod_common cm;
-  cholmod_l_start(&cm);
+  test_start(&cm);
   Mesh *m = mesh_new(&s, &st);
   double X[17], area = 0, want[2], sum[2] = { 0, 0 }, scale;
   design(N, X);

@@ -12,9 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "setup.h"
-#include "scene.h"
-#include "model.h"
+#include "case.h"
 #include "grad.h"
 
 static double energy(Model *md, double *X)
@@ -26,15 +24,18 @@ static double energy(Model *md, double *X)
 
 static void weakly_active(const char *path, Plane_model model)
 {
-  Scene s;
+  Case cs;
+  if (!check(case_load(&cs, path, 0, NULL) == 0, "load %s", path)) {
+    close_case(&cs);
+    return;
+  }
+  cs.s.problem.model = model;
+  case_model(&cs);
+  Model *md = cs.md;
+  const Problem *P = &cs.s.problem;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
-  s.problem.model = model;
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
-  double *X = malloc((s.problem.N + 1) * sizeof *X), *G = malloc((s.problem.N + 1) * sizeof *G);
-  memcpy(X, s.alpha0, (s.problem.N + 1) * sizeof *X);
+  double *X = malloc((P->N + 1) * sizeof *X), *G = malloc((P->N + 1) * sizeof *G);
+  memcpy(X, cs.s.alpha0, (P->N + 1) * sizeof *X);
   energy(md, X);
   int i = -1, c = -1;                 /* the last free node before the zone */
   for (int k = 0; k < md->dofs->nc; k++) {
@@ -44,7 +45,7 @@ static void weakly_active(const char *path, Plane_model model)
   }
   if (!check(i >= 0, "%s: a free node next to the contact zone", path)) return;
   double hi = X[i], lo = 0;             /* free at hi, pressing at lo = 0 */
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * s.problem.C0; it++) {
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * P->C0; it++) {
     X[i] = 0.5 * (lo + hi);
     energy(md, X);
     if (md->Q[md->dofs->contact[c]] > -X[i]) hi = X[i]; else lo = X[i];
@@ -54,11 +55,11 @@ static void weakly_active(const char *path, Plane_model model)
   grad_energy(md, G, &st);
   double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0, Gmax = 0;
   for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
-  for (int k = 0; k <= s.problem.N; k++) Gmax = fmax(Gmax, fabs(G[k]));
-  check(gap <= 1e-12 * s.problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+  for (int k = 0; k <= P->N; k++) Gmax = fmax(Gmax, fabs(G[k]));
+  check(gap <= 1e-12 * P->C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
         "%s: node %d touches (gap %.1e m) with force %.1e max T (4.6): weakly active",
         path, i, gap, fabs(md->T[c]) / Tmax);
-  double x0 = X[i], E0 = md->energy, h = 1e-5 * s.problem.C0, Ep, Ep2, Em, Em2;
+  double x0 = X[i], E0 = md->energy, h = 1e-5 * P->C0, Ep, Ep2, Em, Em2;
   X[i] = x0 + h; Ep = energy(md, X);
   X[i] = x0 + 2 * h; Ep2 = energy(md, X);
   X[i] = x0 - h; Em = energy(md, X);
@@ -73,9 +74,7 @@ static void weakly_active(const char *path, Plane_model model)
         "%s: dE/dX_%d by (4.8) agrees with the backward difference %.9g (%.1e)",
         path, i, backward, fabs(backward - G[i]) / Gmax);
   free(X); free(G);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 typedef struct { int calls, in_order; } Progress;
@@ -89,20 +88,23 @@ static void progress(int i, const Grad_check *gc, void *data)
 
 static void check_grad_check(const char *path)
 {
-  Scene s;
+  Case cs, fr;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "load %s", path)) return;
-  int N = s.problem.N;
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
-  Model *fresh = model_new(&s.problem, &s.solver, &cm, &st);
+  if (!check(case_load(&cs, path, 0, NULL) == 0 && case_load(&fr, path, 0, NULL) == 0,
+             "load %s", path)) {
+    close_case(&cs), close_case(&fr);
+    return;
+  }
+  int N = cs.s.problem.N;
+  case_model(&cs);
+  case_model(&fr);
+  Model *md = cs.md, *fresh = fr.md;
   Grad_check *gc = grad_check_new(N, &st);
   double *G = malloc((N + 1) * sizeof *G), worst = 0;
-  model_solve(fresh, s.alpha0, &st);
+  case_solve(&fr);
   grad_energy(fresh, G, &st);
   Progress p = { 0, 1 };
-  int rc = grad_check(md, s.alpha0, gc, progress, &p, &st);
+  int rc = grad_check(md, cs.s.alpha0, gc, progress, &p, &st);
   for (int i = 0; i <= N; i++) worst = fmax(worst, gc->err[i]);
   check(rc == 0 && !memcmp(G, gc->G, (N + 1) * sizeof *G),
         "%s: grad_check's G (4.8) is grad_energy's at alpha0, bit for bit", path);
@@ -111,32 +113,30 @@ static void check_grad_check(const char *path)
   check(worst < 1e-6 && gc->err[gc->worst] == worst,
         "%s: largest relative error of (4.8) %.2e < 1e-6, at node worst = %d", path,
         worst, gc->worst);
-  if (s.alpha0[0] == 0)
+  if (cs.s.alpha0[0] == 0)
     check(gc->err[0] < 1e-6, "%s: node 0 on the foundation (alpha_0 = 0), "
           "one-sided difference of (4.8): error %.2e", path, gc->err[0]);
   check(fabs(md->energy - fresh->energy) <= 1e-12 * fabs(fresh->energy),
         "%s: the model is left solved at alpha0 (E %.15g, fresh %.15g)", path,
         md->energy, fresh->energy);
   Grad_check *other = grad_check_new(N / 2, &st);
-  check(grad_check(md, s.alpha0, other, NULL, NULL, &st) == STATUS_INPUT,
+  check(grad_check(md, cs.s.alpha0, other, NULL, NULL, &st) == STATUS_INPUT,
         "%s: a check made for another N is refused: %s", path, st.msg);
   grad_check_free(other);
   free(G);
   grad_check_free(gc);
-  model_free(fresh);
-  model_free(md);
-  s.solver = qp_options_default(QP_CGSSOR);
-  s.solver.max_iter = 2;
-  md = model_new(&s.problem, &s.solver, &cm, &st);
+  close_case(&fr);
+  cs.s.solver = qp_options_default(QP_CGSSOR);
+  cs.s.solver.max_iter = 2;
+  case_model(&cs);
+  md = cs.md;
   gc = grad_check_new(N, &st);
   p = (Progress) { 0, 1 };
-  rc = grad_check(md, s.alpha0, gc, progress, &p, &st);
+  rc = grad_check(md, cs.s.alpha0, gc, progress, &p, &st);
   check(rc == STATUS_NUMERIC && p.calls == 0, "%s: a state solve that fails "
         "stops the check with its status: %s", path, st.msg);
   grad_check_free(gc);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 int main(void)

@@ -10,11 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "setup.h"
+#include "case.h"
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_sort_vector.h>
-#include "scene.h"
-#include "model.h"
 #include "grad.h"
 #include "design.h"
 #include "opt.h"
@@ -46,23 +44,26 @@ static int fd_hessian(Model *md, double *X, int n, double step, double *H)
 
 static void curvature(void)
 {
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
   Opt_report r;
-  test_start(&cm);
-  if (!check(scene_load(&s, "data/example-5.1.scene", 0, NULL, &st) == 0, "load 5.1")) return;
-  int n = s.problem.N + 1, active = 0, near1 = 0, near0 = 0;
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
-  Design_set B = design_set(&s.problem);
+  if (!check(case_load(&cs, EX51, 0, NULL) == 0, "load 5.1")) {
+    close_case(&cs);
+    return;
+  }
+  Scene *s = &cs.s;
+  int n = s->problem.N + 1, active = 0, near1 = 0, near0 = 0;
+  case_model(&cs);
+  Model *md = cs.md;
+  Design_set B = design_set(&s->problem);
   double *X = malloc(n * sizeof *X), *H = malloc((size_t) n * n * sizeof *H),
          *S = malloc((size_t) n * n * sizeof *S), lo1 = HUGE_VAL, hi1 = 0, hi0 = 0;
-  int ok = !design_project(&B, s.alpha0, X, NULL, &st)
-           && !opt_minimize(md, &B, &s.optimizer, X, NULL, NULL, &r, &st)
+  int ok = !design_project(&B, s->alpha0, X, NULL, &st)
+           && !opt_minimize(md, &B, &s->optimizer, X, NULL, NULL, &r, &st)
            && !model_solve(md, X, &st) && !model_contact_stiffness(md, S, &st);
   for (int c = 0; ok && c < md->dofs->nc; c++)
     active += md->Q[md->dofs->contact[c]] <= md->lo[c] && md->T[c] > 0;
-  ok = ok && !fd_hessian(md, X, n, 1e-7 * s.problem.C0, H);
+  ok = ok && !fd_hessian(md, X, n, 1e-7 * s->problem.C0, H);
   if (check(ok, "5.1: optimum by Algorithm 4.1, S and the difference Hessian of (4.8) (%d nodes in contact)", active)) {
     gsl_matrix_view Hv = gsl_matrix_view_array(H, n, n), Sv = gsl_matrix_view_array(S, n, n);
     gsl_vector *ev = gsl_vector_alloc(n);
@@ -79,9 +80,7 @@ static void curvature(void)
     gsl_eigen_gensymm_free(w), gsl_vector_free(ev);
   }
   free(X), free(H), free(S);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 /* The energy is evaluated accurately enough that two solvers' states,
@@ -90,14 +89,16 @@ static void curvature(void)
    rounding of A (1.4e-14 apart here, 7e-14 at N = 256). */
 static void energy_agreement(const char *path, int N)
 {
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  if (!check(load_refined(&s, path, N / 16, &st) == 0, "load %s at N = %d", path, N)) return;
-  s.solver.tol = 1e-12;
-  Model *a = solve_cold(&s, QP_PDAS, s.alpha0, &cm, &st);
-  Model *b = a ? solve_cold(&s, QP_CGSSOR, s.alpha0, &cm, &st) : NULL;
+  if (!check(case_load_refined(&cs, path, N / 16) == 0, "load %s at N = %d", path, N)) {
+    close_case(&cs);
+    return;
+  }
+  Scene *s = &cs.s;
+  s->solver.tol = 1e-12;
+  Model *a = solve_cold(s, QP_PDAS, s->alpha0, &cs.cm, &st);
+  Model *b = a ? solve_cold(s, QP_CGSSOR, s->alpha0, &cs.cm, &st) : NULL;
   if (check(a && b, "%s N = %d: pdas and cgssor converge to kkt 1e-12%s%s", path,
             N, a && b ? "" : ": ", a && b ? "" : st.msg)) {
     double rel = fabs(a->energy - b->energy) / fabs(a->energy);
@@ -105,8 +106,7 @@ static void energy_agreement(const char *path, int N)
           "to %.1e <= 1e-15", path, N, a->energy, b->energy, rel);
   }
   model_free(a), model_free(b);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 int main(void)

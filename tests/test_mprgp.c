@@ -257,8 +257,7 @@ static void test_tol_below_rounding(const char *tol)
 
 int main(void)
 {
-  cholmod_l_start(&cm);
-  gsl_set_error_handler_off();
+  test_start(&cm);
   check_method(2);
   cholmod_l_finish(&cm);
   weakly_active_nodes(QP_CGSSOR);

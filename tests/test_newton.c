@@ -20,6 +20,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include "check.h"
+#include "setup.h"
 #include "newton.h"
 
 static uint64_t seed = 0x9E3779B97F4A7C15ULL;
@@ -648,7 +649,7 @@ static void test_bending(void)
 
 int main(void)
 {
-  gsl_set_error_handler_off();
+  test_start_gsl();
   test_enumeration();
   test_endgame();
   test_interior();

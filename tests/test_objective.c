@@ -8,35 +8,33 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "setup.h"
-#include "scene.h"
-#include "model.h"
+#include "case.h"
 #include "grad.h"
 #include "objective.h"
 
-/* the scene at path with the overrides, its model solved at alpha0 */
-static Model *solved(Scene *s, const char *path, int nov, char **ov,
-                     cholmod_common *cm)
+/* the case of the scene at path with the overrides, its model solved at
+   alpha0; NULL, the case closed, if not */
+static Model *solved(Case *cs, const char *path, int nov, char **ov)
 {
-  Status st;
-  if (!check(scene_load(s, path, nov, ov, &st) == 0, "load %s", path)) return NULL;
-  Model *md = model_new(&s->problem, &s->solver, cm, &st);
-  if (!md || model_solve(md, s->alpha0, &st)) {
-    check(0, "%s: solve: %s", path, st.msg);
+  if (!check(case_load(cs, path, nov, ov) == 0, "load %s", path)) {
+    close_case(cs);
     return NULL;
   }
-  return md;
+  if (case_model(cs) || case_solve(cs)) {
+    check(0, "%s: solve: %s", path, cs->st.msg);
+    close_case(cs);
+    return NULL;
+  }
+  return cs->md;
 }
 
 static void energy_is_48(const char *path)
 {
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  Model *md = solved(&s, path, 0, NULL, &cm);
+  Model *md = solved(&cs, path, 0, NULL);
   if (!md) return;
-  int n = s.problem.N + 1;
+  int n = cs.s.problem.N + 1;
   double *G = malloc(2 * n * sizeof *G), *H = G + n, Gmax = 0, d = 0;
   Objective o = objective_default();
   int rc = grad_energy(md, G, &st)
@@ -46,20 +44,16 @@ static void energy_is_48(const char *path)
   check(!rc && d <= 1e-12 * Gmax, "%s: the energy through the adjoint is "
         "(4.8) to %.1e <= 1e-12 of its largest component", path, d / Gmax);
   free(G);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 static void uniform_pressure(void)
 {
   char *ov[] = { "design.initial=constant", "design.constant=0", "design.C2=4",
                  "left.bc=roller", "top.from=0", "top.to=4" };
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  Model *md = solved(&s, "data/example-5.1.scene", 6, ov, &cm);
+  Model *md = solved(&cs, "data/example-5.1.scene", 6, ov);
   if (!md) return;
   double Js, Jq;
   Objective spread = { OBJECTIVE_SPREAD, 8 }, peak = { OBJECTIVE_PEAK, 8 };
@@ -67,19 +61,15 @@ static void uniform_pressure(void)
   check(!rc && fabs(Js) <= 1e-12 && fabs(Jq - 1) <= 1e-12, "a uniform load on "
         "a flat body in full contact: J_s = %.1e = 0, J_q - 1 = %.1e = 0",
         Js, Jq - 1);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 static void compliance_is_minus_2E(const char *path)
 {
   char *ov[] = { "design.initial=constant", "design.constant=0" };
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  Model *md = solved(&s, path, 2, ov, &cm);
+  Model *md = solved(&cs, path, 2, ov);
   if (!md) return;
   double J;
   Objective c = { OBJECTIVE_COMPLIANCE, 8 };
@@ -87,28 +77,22 @@ static void compliance_is_minus_2E(const char *path)
   check(!rc && fabs(J + 2 * md->energy) <= 1e-12 * fabs(J), "%s at alpha = 0: "
         "compliance %.10g = -2E (relative %.1e)", path, J,
         fabs(J + 2 * md->energy) / fabs(J));
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 static void lift_off(void)
 {
   char *ov[] = { "top.P2=5.75e8", "left.bc=clamped" };
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
-  test_start(&cm);
-  Model *md = solved(&s, "data/example-5.1.scene", 2, ov, &cm);
+  Model *md = solved(&cs, "data/example-5.1.scene", 2, ov);
   if (!md) return;
   double J;
   Objective o = { OBJECTIVE_SPREAD, 8 };
   int rc = objective_value(md, &o, &J, &st);
   check(rc == STATUS_NUMERIC && strstr(st.msg, "lifts off"), "a load that lifts "
         "the body off leaves the pressure spread undefined: %s", st.msg);
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 int main(void)

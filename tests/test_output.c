@@ -11,7 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
-#include "setup.h"
+#include "case.h"
 #include "output.h"
 
 /* the entries of folder path, . and .. aside; -1 if it is not there */
@@ -50,27 +50,26 @@ static int run(const char *dir, Model *md, const Problem *p, const double *X,
 
 int main(void)
 {
-  cholmod_common cm;
-  Scene s;
+  Case cs;
   Status st = { STATUS_OK, "" };
   char dir[] = "/tmp/test_output-XXXXXX", out[64], path[128];
-  test_start(&cm);
-  if (!check(!scene_load(&s, "data/example-5.1.scene", 0, NULL, &st) && mkdtemp(dir),
-             "the scene loads, a scratch folder: %s", st.msg))
+  if (!check(!case_load(&cs, EX51, 0, NULL) && mkdtemp(dir),
+             "the scene loads, a scratch folder: %s", cs.st.msg))
     return check_done();
-  Model *md = model_new(&s.problem, &s.solver, &cm, &st);
-  if (!check(md && !model_solve(md, s.alpha0, &st), "the model solves at alpha0: %s", st.msg))
+  if (!check(!case_model(&cs) && !case_solve(&cs), "the model solves at alpha0: %s", cs.st.msg))
     return check_done();
+  Model *md = cs.md;
+  Scene *s = &cs.s;
   snprintf(out, sizeof out, "%s/out", dir);
 
   /* (1) iterates/ replaced whole */
-  int rc1 = run(out, md, &s.problem, s.alpha0, 5, NULL, &st);
+  int rc1 = run(out, md, &s->problem, s->alpha0, 5, NULL, &st);
   snprintf(path, sizeof path, "%s/iterates", out);
   check(!rc1 && entries(path) == 5, "a run of 5 iterates: iterates/ holds %d files", entries(path));
   snprintf(path, sizeof path, "%s/other.txt", out);
   FILE *f = fopen(path, "w");
   if (f) fclose(f);
-  int rc2 = run(out, md, &s.problem, s.alpha0, 2, NULL, &st);
+  int rc2 = run(out, md, &s->problem, s->alpha0, 2, NULL, &st);
   char iter[128];
   snprintf(iter, sizeof iter, "%s/iterates", out);
   check(!rc2 && entries(iter) == 2, "a second run of 2 iterates into the same folder: "
@@ -81,10 +80,10 @@ int main(void)
   check(entries(dir) == 1, "no staging folder is left beside it (%d entries)", entries(dir));
 
   /* (2) an iterate at a design that is not the model's */
-  double bad[s.problem.N + 1];
-  memcpy(bad, s.alpha0, sizeof bad);
+  double bad[s->problem.N + 1];
+  memcpy(bad, s->alpha0, sizeof bad);
   bad[3] *= 0.5;
-  int rc3 = run(out, md, &s.problem, s.alpha0, 4, bad, &st);
+  int rc3 = run(out, md, &s->problem, s->alpha0, 4, bad, &st);
   check(rc3 == STATUS_INPUT && strstr(st.msg, "not at iterate 3") && strstr(st.msg, "alpha_3"),
         "a model not at the iterate: status %d, \"%s\"", rc3, st.msg);
   snprintf(path, sizeof path, "%s/iterates", out);
@@ -92,9 +91,7 @@ int main(void)
         "after the refusal the output folder is as it was (iterates/ %d files), no stage left",
         entries(path));
 
-  model_free(md);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
   snprintf(path, sizeof path, "rm -rf %s", dir);
   if (system(path)) check(0, "removing %s", dir);
   return check_done();

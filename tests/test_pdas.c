@@ -51,8 +51,7 @@ static void check_repeated(void)
 
 int main(void)
 {
-  cholmod_l_start(&cm);
-  gsl_set_error_handler_off();
+  test_start(&cm);
   check_method(0);
   Qp_problem *P[6];
   problems_new(P);

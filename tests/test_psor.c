@@ -7,8 +7,7 @@
 
 int main(void)
 {
-  cholmod_l_start(&cm);
-  gsl_set_error_handler_off();
+  test_start(&cm);
   check_method(1);
   cholmod_l_finish(&cm);
   weakly_active_nodes(QP_PSOR);

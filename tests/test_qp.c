@@ -96,8 +96,7 @@ static void test_psor_refused(void)
 
 int main(void)
 {
-  cholmod_l_start(&cm);
-  gsl_set_error_handler_off();
+  test_start(&cm);
   Qp_problem *P[6];
   problems_new(P);
   for (int k = 0; k < 5; k++) check_reference(P[k]);

@@ -18,9 +18,7 @@ limited() { _mb=$1 _t=$2; shift 2
     unset OPENBLAS_NUM_THREADS GOTO_NUM_THREADS OMP_NUM_THREADS
     [ "$_t" = - ] || export OPENBLAS_NUM_THREADS=$_t
     exec timeout 60 $BIN "$@" ) > /dev/null 2> $TMP/err; }
-case $BIN in
-  */san/*) echo "# skipped under AddressSanitizer: the ulimit -v runs (its shadow memory cannot be reserved under an address-space limit)" ;;
-  *)
+if limits_run; then
   for N in 16 1024; do
     refine=$((N / 16))
     for t in 1 2 16 -; do
@@ -44,8 +42,7 @@ case $BIN in
   limited 60 2 solve $ex -o $TMP/tiny; rc=$?
   check "ulimit -v 60 MB, 2 threads asked: exit 5 with the program's line, never 130 ($(cat $TMP/err))" \
     clean_failure $rc 5 $TMP/err $TMP/tiny 'the BLAS .* reserves'
-  ;;
-esac
+fi
 
 # ---- what computed a run ---------------------------------------------------------
 # summary.dat of each command names the BLAS, its file and kernels, and the

@@ -15,9 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "setup.h"
-#include "scene.h"
-#include "model.h"
+#include "case.h"
 
 static const char *weakly_name[] = { "pdas", "psor", "cgssor" };
 
@@ -95,42 +93,43 @@ static inline void agree(Scene *s, const char *tag, const double *X,
 static inline void weakly_active_node(const char *path, Plane_model model,
                                       Qp_method m)
 {
-  Scene s;
+  Case cs;
   Status st;
-  cholmod_common cm;
   int pdas = m == QP_PDAS;
-  test_start(&cm);
-  int loaded = scene_load(&s, path, 0, NULL, &st) == 0;
-  if (!(pdas ? check(loaded, "load %s", path) : loaded)) return;
-  s.problem.model = model;
-  s.solver.tol = 1e-11;
+  int loaded = case_load(&cs, path, 0, NULL) == 0;
+  if (!(pdas ? check(loaded, "load %s", path) : loaded)) {
+    close_case(&cs);
+    return;
+  }
+  Scene *s = &cs.s;
+  s->problem.model = model;
+  s->solver.tol = 1e-11;
   const char *mname = problem_model_name(model);
-  double *X = malloc((s.problem.N + 1) * sizeof *X);
-  memcpy(X, s.alpha0, (s.problem.N + 1) * sizeof *X);
-  Model *md = solve_cold(&s, QP_PDAS, X, &cm, &st);
-  int i = -1, c = -1, found = md && weakly_active(md, &s, X, &i, &c);
+  double *X = malloc((s->problem.N + 1) * sizeof *X);
+  memcpy(X, s->alpha0, (s->problem.N + 1) * sizeof *X);
+  Model *md = solve_cold(s, QP_PDAS, X, &cs.cm, &st);
+  int i = -1, c = -1, found = md && weakly_active(md, s, X, &i, &c);
   if (pdas ? check(found, "%s %s: a weakly active design found by bisection "
                    "(pdas warm starts throughout)", path, mname) : found) {
     double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0;
     for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
     if (pdas)
-      check(fabs(gap) <= 1e-12 * s.problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+      check(fabs(gap) <= 1e-12 * s->problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
             "%s %s: node %d touches (gap %.1e m) with force %.1e max T (4.6)",
             path, mname, i, gap, fabs(md->T[c]) / Tmax);
     char tag[600];
     double x0 = X[i];
     for (int side = -1; side <= 1; side++) {
-      X[i] = x0 + side * 1e-9 * s.problem.C0;
+      X[i] = x0 + side * 1e-9 * s->problem.C0;
       snprintf(tag, sizeof tag, "%s %s, node %d %s", path, mname, i,
                side < 0 ? "pressed by 1e-9 C0" : side > 0 ? "lifted by 1e-9 C0"
                : "weakly active");
-      agree(&s, tag, X, &cm, m);
+      agree(s, tag, X, &cs.cm, m);
     }
   }
   model_free(md);
   free(X);
-  scene_free(&s);
-  cholmod_l_finish(&cm);
+  close_case(&cs);
 }
 
 /* Examples 5.1 (plane stress and plane strain) and 5.2 */
