@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1448 "paper/figures.nw"
+#line 1451 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -22,14 +22,14 @@ typedef struct {
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
-#line 1468 "paper/figures.nw"
+#line 1471 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1478 "paper/figures.nw"
+#line 1481 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -45,7 +45,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1498 "paper/figures.nw"
+#line 1501 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -61,7 +61,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1518 "paper/figures.nw"
+#line 1521 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -71,7 +71,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1530 "paper/figures.nw"
+#line 1533 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
@@ -95,7 +95,7 @@ static Results_page results_page(const Plot *pl)
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1557 "paper/figures.nw"
+#line 1560 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -106,7 +106,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1574 "paper/figures.nw"
+#line 1577 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -127,7 +127,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1605 "paper/figures.nw"
+#line 1608 "paper/figures.nw"
 static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
 {
   int d = sc < sr ? sc : sr;
@@ -150,8 +150,7 @@ static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
   fprintf(f, "EOD\n");
 }
-#line 1634 "paper/figures.nw"
-#define RESULTS_PT "8.2" /* pt: the page's text, printed 16.4 cm wide */
+#line 1637 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -180,8 +179,6 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           plot_real(L->ucm, 6), plot_real(L->vex, 0), plot_real(COLW, 0), plot_real(GRAPHH, 0),
           results_width(pl), L->graphs, L->graphs > 1 ? L->graphs - 1 : 0);
   fputs(plot_page_lines, f);
-  fprintf(f, "fontpt = %s*Wcm/16.4      # the text %s pt where it prints 16.4 cm wide\n",
-          RESULTS_PT, RESULTS_PT);
   fprintf(f, "colx(c) = left + c*(colw + colgap)         # the left edge of column c\n"
           "bodyx(c) = colx(c) + (colw - pw)/2          # and of its body panels\n"
           "amax(x, y) = x > y ? x : y\n"
