@@ -26,7 +26,8 @@ SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
            src/objectives.sh src/fig-objectives.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/accuracy-numbers.sh src/fig-accuracy.gp \
-           src/huge.sh src/man.sh src/completion.sh
+           src/huge.sh src/man.sh src/completion.sh \
+           src/hard-nu.sh src/hard-units.sh src/hard-thin.sh src/hard-vertex.sh src/mprgp-table.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
@@ -45,6 +46,11 @@ FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png
            figures/fig-friction.pdf figures/fig-friction.png figures/friction.tex \
            figures/fig-coulomb.pdf figures/fig-coulomb.png figures/coulomb.tex \
            figures/fig-objectives.pdf figures/fig-objectives.png figures/objectives.tex
+# The tables of the hard cases (paper/stability.nw) and of MPRGP's cost
+# (paper/mprgp.nw), each written by the script that runs its cases (under
+# a minute together): rebuilt, not tracked (the last one is timed).
+HARD_FIGS := figures/hard-nu.tex figures/hard-units.tex figures/hard-thin.tex figures/hard-vertex.tex \
+             figures/mprgp.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -339,6 +345,13 @@ figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy
 figures/huge.tex: src/huge.sh bin/contactopt data/example-5.1.scene
 	@mkdir -p figures
 	sh $< out/huge > $@.partial && mv $@.partial $@
+figures/hard-%.tex: src/hard-%.sh bin/contactopt data/example-5.1.scene
+	@mkdir -p figures
+	sh $< out/hard-$* > $@.partial && mv $@.partial $@
+figures/hard-thin.tex: tests/scenes/hard-thin.scene tests/scenes/hard-thinner.scene
+figures/mprgp.tex: src/mprgp-table.sh bin/contactopt data/example-5.1-tresca.scene
+	@mkdir -p figures
+	sh $< out/mprgp > $@.partial && mv $@.partial $@
 figures/accuracy-numbers.tex: src/accuracy-numbers.sh out/accuracy/sweep.dat paper/bench-state.tex
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat paper/bench-state.tex > $@.partial && mv $@.partial $@
@@ -374,9 +387,9 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 # first of each entry. The build fails where the pages do not set: an
 # overfull box over 20 pt, a float too large, an undefined reference, an
 # index entry twice (paper/latex-log.sh reads the log and the index).
-paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) figures/keys.tex paper/bench-state.tex \
+paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) figures/keys.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
-                       paper/bench-output.tex paper/bench-kernels.tex paper/bench-threads.tex \
+                       paper/bench-output.tex paper/bench-kernels.tex \
                        paper/cholmod-long.tex paper/bench-levels.tex paper/bench-orderings.tex | deps
 	cd build/paper && for i in 1 2 3 4 5; do \
 	  pdflatex -interaction=nonstopmode -halt-on-error contactopt.tex >/dev/null \
@@ -447,8 +460,8 @@ figures/keys.tex: bin/contactopt
 # depends on it, and make -j2 runs them side by side.  The figures draw the
 # meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
-figures: $(FIGURES) $(ACCURACY_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table)"
+figures: $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table, the tables of the hard cases and of MPRGP)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null

@@ -9,7 +9,7 @@
 if (!exists("out")) { exit error "the variable out is required" }
 if (!exists("runs")) { runs = "out" }
 set encoding utf8; set minussign
-set terminal pdfcairo enhanced color size 16cm, 7.6cm font "DejaVu Sans,9" linewidth 1
+set terminal pdfcairo enhanced color size 16cm, 9cm font "DejaVu Sans,12.5" linewidth 1
 set output out
 ex = "5.1 5.2"
 meth = "optimize slsqp projgrad"
@@ -21,7 +21,7 @@ do for [e in ex] { do for [m in meth] {
   if (STATS_min < Estar) { Estar = STATS_min }
 } }
 gap(E) = (E - Estar) / abs(Estar) > 1e-15 ? (E - Estar) / abs(Estar) : NaN
-set multiplot layout 1,2 margins 0.085, 0.985, 0.26, 0.92 spacing 0.09, 0
+set multiplot layout 1,2 margins 0.1, 0.985, 0.33, 0.9 spacing 0.1, 0
 set logscale y; set format y "10^{%T}"; set yrange [1e-15:3]
 set ylabel "(E_h − E_h^*) / |E_h^*|"
 set grid lc rgb "#dddddd"
@@ -37,9 +37,9 @@ plot for [j=1:3] for [i=1:2] file(word(ex, i), word(meth, j)) using 4:(gap($2)) 
        with linespoints lc j dt i pt (i == 1 ? 7 : 6) ps 0.55 lw 1.3 \
        title word(label, j).", Ex. ".word(ex, i)
 # the key, below both panels: a plot of nothing across the whole width
-set key at screen 0.5, 0.1 center top horizontal maxcols 3 font ",8" samplen 2.5 spacing 1.1 width 2
+set key at screen 0.5, 0.15 center top vertical maxrows 2 font ",12.5" samplen 2.5 spacing 1.1 width 1
 unset logscale; unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid
-set lmargin at screen 0.02; set rmargin at screen 0.98; set tmargin at screen 0.12; set bmargin at screen 0.01
+set lmargin at screen 0.02; set rmargin at screen 0.98; set tmargin at screen 0.16; set bmargin at screen 0.01
 set xrange [0:1]; set yrange [0:1]
 plot for [j=1:3] for [i=1:2] NaN with linespoints lc j dt i pt (i == 1 ? 7 : 6) ps 0.55 lw 1.3 \
        title word(label, j).", Ex. ".word(ex, i)

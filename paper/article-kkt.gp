@@ -10,7 +10,7 @@
 if (!exists("out")) { exit error "the variable out is required" }
 if (!exists("run")) { run = "out/example-5.1-optimize" }
 set encoding utf8; set minussign
-set terminal pdfcairo enhanced color size 16cm, 7.2cm font "DejaVu Sans,9" linewidth 1
+set terminal pdfcairo enhanced color size 16cm, 9cm font "DejaVu Sans,12.5" linewidth 1
 set output out
 # x1 w dE T lower upper, one row a design node (T = 0 on the clamped one)
 data = "< awk 'FNR == 1 { f++ } /^#/ { next }".\
@@ -19,7 +19,7 @@ data = "< awk 'FNR == 1 { f++ } /^#/ { next }".\
        " print x[i], w, d[i], (x[i] in T) ? T[x[i]] : 0, lo[i], up[i] } }' ".\
        run."/final/contact.dat ".run."/multipliers.dat"
 mu = real(system("awk '$1 == \"area_multiplier\" { print $2 }' ".run."/summary.dat"))
-set multiplot layout 1,2 margins 0.085, 0.985, 0.24, 0.92 spacing 0.1, 0
+set multiplot layout 1,2 margins 0.1, 0.985, 0.33, 0.9 spacing 0.1, 0
 set xlabel "{/:Italic x}_1 [m]"; set xrange [-0.1:4.1]; set xtics 1
 set grid lc rgb "#dddddd"
 unset key
@@ -33,9 +33,9 @@ plot data using 1:(($3 + $4)/$2/1e6) with linespoints pt 7 ps 0.6 lw 1.5 lc 4, \
      data using 1:($5/$2/1e6) with impulses lw 4 lc 6, \
      data using 1:($6/$2/1e6) with impulses lw 4 lc 7
 # the key, below both panels: a plot of nothing across the whole width
-set key at screen 0.5, 0.09 center top horizontal maxcols 3 font ",8" samplen 2.5 spacing 1.1 width 1
+set key at screen 0.5, 0.15 center top horizontal maxcols 3 font ",12.5" samplen 2.5 spacing 1.1 width 1
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid
-set lmargin at screen 0.02; set rmargin at screen 0.98; set tmargin at screen 0.1; set bmargin at screen 0.01
+set lmargin at screen 0.02; set rmargin at screen 0.98; set tmargin at screen 0.16; set bmargin at screen 0.01
 set xrange [0:1]; set yrange [0:1]
 plot NaN with linespoints pt 7 ps 0.6 lw 1.5 lc 1 title "pressure {/:Italic T_i}/{/:Italic w_i}", \
      NaN with points pt 6 ps 1.1 lw 1.2 lc 2 title "−(∂{/:Italic E}/∂{/:Italic X_i})/{/:Italic w_i}", \

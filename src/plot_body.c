@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 860 "paper/figures.nw"
+#line 863 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
@@ -20,10 +20,10 @@ typedef struct {
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
   double width;               /* cm: the page */
 } Body_page;
-#line 880 "paper/figures.nw"
+#line 883 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 888 "paper/figures.nw"
+#line 891 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
@@ -48,7 +48,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
-#line 915 "paper/figures.nw"
+#line 918 "paper/figures.nw"
 static void top_support(FILE *f, Bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -63,7 +63,7 @@ static void top_support(FILE *f, Bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 934 "paper/figures.nw"
+#line 937 "paper/figures.nw"
 static double load_reach(const Side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Side *sd, int k)
@@ -75,7 +75,7 @@ static double side_reach(const Side *sd, int k)
   default: return 0;
   }
 }
-#line 950 "paper/figures.nw"
+#line 953 "paper/figures.nw"
 static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
@@ -98,7 +98,7 @@ static Body_page body_page(const Plot *pl)
   body_fit(pl, &L);
   return L;
 }
-#line 979 "paper/figures.nw"
+#line 982 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
 static void load_text(const Side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
@@ -121,7 +121,7 @@ static void body_fit(const Plot *pl, Body_page *L)
            pl->args->title ? pl->args->title : pl->args->dir);
   L->width = fmax(2.6 + (L->xhi - L->xlo) * L->ucm + 0.6, plot_text_cm(t, 12) + 1);
 }
-#line 1014 "paper/figures.nw"
+#line 1017 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -150,7 +150,7 @@ static double load_reach(const Side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 1045 "paper/figures.nw"
+#line 1048 "paper/figures.nw"
 static void load_text(const Side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -160,13 +160,13 @@ static void load_text(const Side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 1059 "paper/figures.nw"
+#line 1062 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 1069 "paper/figures.nw"
+#line 1072 "paper/figures.nw"
 static void side_load(FILE *f, const Side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -200,7 +200,7 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1114 "paper/figures.nw"
+#line 1117 "paper/figures.nw"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
@@ -228,7 +228,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1150 "paper/figures.nw"
+#line 1153 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -253,7 +253,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1177 "paper/figures.nw"
+#line 1180 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -264,7 +264,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1192 "paper/figures.nw"
+#line 1195 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -274,7 +274,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1209 "paper/figures.nw"
+#line 1212 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -303,7 +303,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1251 "paper/figures.nw"
+#line 1254 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -334,7 +334,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1286 "paper/figures.nw"
+#line 1289 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -344,7 +344,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1304 "paper/figures.nw"
+#line 1307 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;

@@ -119,9 +119,9 @@ void plot_tics(FILE *f, const char *axis, double lo, double hi, double n, int fo
   double step = plot_nice((hi - lo) / n);
   plot_tics_at(f, axis, ceil(lo / step - SLACK) * step, step, hi, format);
 }
-#line 753 "paper/figures.nw"
+#line 756 "paper/figures.nw"
 const char plot_page_lines[] =
-  "dpcm = 1600.0 / Wcm; fontpt = 12\n"
+  "dpcm = 1600.0 / Wcm; fontpt = 8.2*Wcm/16.4   # 8.2 pt printed 16.4 cm wide\n"
   "sx(cm) = cm / Wcm\n"
   "sy(cm) = 1.0 - cm / Hcm\n"
   "cx(cm) = cm / ucm             # a length on the page along x1, in m\n"
@@ -141,7 +141,7 @@ const char plot_terminal_lines[] =
   "  }\n"
   "  set output out.'.'.fmt\n"
   "  unset xlabel; unset ylabel; unset title; unset key\n";
-#line 784 "paper/figures.nw"
+#line 787 "paper/figures.nw"
 void plot_widen(double *ucm, double *vex, double w, double least, double want)
 {
   double hex;
@@ -150,7 +150,7 @@ void plot_widen(double *ucm, double *vex, double w, double least, double want)
   *ucm *= hex;
   *vex /= hex;
 }
-#line 801 "paper/figures.nw"
+#line 804 "paper/figures.nw"
 /* the head of a script: the figure, the run, and the variables of both */
 void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out)
 {
@@ -165,7 +165,7 @@ void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out
   fprintf(f, "\na = %s; b = %s; gamma = %s      # the body: a < x1 < b, x2 < gamma\n",
           plot_real(p->a, 0), plot_real(p->b, 0), plot_real(p->gamma, 0));
 }
-#line 819 "paper/figures.nw"
+#line 822 "paper/figures.nw"
 void plot_place(FILE *f, const char *x, const char *w, const char *y, const char *h)
 {
   fprintf(f, "  set lmargin at screen sx(%s); set rmargin at screen sx(%s + %s)\n"

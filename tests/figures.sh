@@ -7,7 +7,9 @@
 # the keys under the panels, below their x labels, off the data; Coulomb's
 # forces, none negative, on an axis that starts at 0; the pressure of the
 # objectives cut at 1200 MPa with the peak above written at the top;
-# no two words of a figure on each other; the accuracy figure
+# no two words of a figure on each other; the results figures of
+# Section 5 (contactopt plot --results) at the same size, and the
+# article's own figures where make paper has drawn them; the accuracy figure
 # (src/fig-accuracy.gp, drawn from a made-up sweep) with a key under
 # each panel, for what that panel draws.
 . tests/lib.sh
@@ -41,12 +43,12 @@ awk 'BEGIN { print "# nmax 128"; print "# E_inf -4.19e7"
     printf "%s N%d %d %s 1e%d %s 1e%d %.9g %.3e %.3e 0 6 %g 5 converged %g\n", fam, N, N, st, t, m, o,
            -4.19e7 * (1 - err), err, same, sec, sec / 20 }' > $runs/accuracy/sweep.dat
 
-# words FIG: each word of FIG.pdf, its size at print (pt), top and bottom
-# (cm from the top of the printed page), and its text; a word's size is
-# the smaller side of its box (a word of the y axis is turned), a single
-# character's the larger
+# words FIG [CM]: each word of FIG.pdf, its size at print (pt), top and
+# bottom (cm from the top of the printed page), and its text, printed CM
+# wide (16.4 unless given); a word's size is the smaller side of its box
+# (a word of the y axis is turned), a single character's the larger
 words() { w=$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')
-  pdftotext -bbox $1.pdf - | awk -v k="$(calc '16.4 / 2.54 * 72 / w' w=$w)" '
+  pdftotext -bbox $1.pdf - | awk -v k="$(calc 'cm / 2.54 * 72 / w' cm=${2:-16.4} w=$w)" '
     /<word / { for (i = 2; i <= 5; i++) { split($i, a, "\""); v[i] = a[2] }
                t = $0; sub(/.*">/, "", t); sub(/<\/word>.*/, "", t)
                w = v[4] - v[2]; h = v[5] - v[3]
@@ -77,6 +79,39 @@ for fig in friction coulomb objectives accuracy; do
   on=$(overlaps $fig)
   check "fig-$fig: no word on another [$on]" [ -z "$on" ]
 done
+# the results figures of Section 5 (Figs. 5.2 and 5.4: contactopt plot
+# --results, the gnuplot text of paper/figures.nw), drawn from a run of
+# Example 5.1 and read the same way at the 16.4 cm they print at: no
+# text under 8 pt (sub- and superscripts 6), no word on another (the
+# marks of the points, which data may put on each other, left out)
+$BIN solve data/example-5.1.scene -o $runs/results-start > /dev/null 2>&1 &&
+  $BIN optimize data/example-5.1.scene -o $runs/results > /dev/null 2>&1 &&
+  $BIN plot $runs/results --results --start $runs/results-start --title 'Example 5.1' \
+    -o $TMP/fig-results > /dev/null 2> $TMP/err
+check "contactopt plot --results draws Example 5.1 ($(head -c 200 $TMP/err))" \
+  sh -c "[ -s $TMP/fig-results.pdf ] && [ -s $TMP/fig-results.png ]"
+words $TMP/fig-results | awk '$4 !~ /^(▷|◁|○|●|□|■|△|▽)$/' > $TMP/words-results
+small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
+  $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
+  END { if (NR < 20) print "(only", NR, "words)" }' $TMP/words-results) || small="(awk failed)"
+check "the results figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
+on=$(overlaps results)
+check "the results figure: no word on another [$on]" [ -z "$on" ]
+
+# the article's own figures (paper/article-*.gp), where make paper has
+# drawn them: the article includes them at their own size (16 cm wide)
+for f in figures/article-*.pdf; do
+  [ -f "$f" ] || { echo "# skip: no figures/article-*.pdf (make paper draws them)"; break; }
+  n=$(basename $f .pdf)
+  words ${f%.pdf} 16 | awk '$4 !~ /^(▷|◁|○|●|□|■|△|▽)$/' > $TMP/words-$n
+  small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
+    $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
+    END { if (NR < 10) print "(only", NR, "words)" }' $TMP/words-$n) || small="(awk failed)"
+  check "$n at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
+  on=$(overlaps $n)
+  check "$n: no word on another [$on]" [ -z "$on" ]
+done
+
 # below BELOW ABOVE FIG: every word BELOW is under every word ABOVE
 below() { awk -v b="$1" -v a="$2" '$4 == a && $3 > lo { lo = $3 } $4 == b && (hi == "" || $2 < hi) { hi = $2 }
   END { exit !(hi != "" && lo != "" && hi > lo) }' $TMP/words-$3; }

@@ -267,8 +267,9 @@ check "(d): the objective's range fitted to its points, the key in a band of hal
   "grep -q 'set autoscale yfix' $TMP/script.gp &&
    grep -q '^  set offsets 0.5, 0.5, graph 0.5, graph 0.05 ' $TMP/script.gp &&
    grep -q '; set key top right ' $TMP/script.gp"
-check "(d) and (h): keys 1.15 times the text (the page of 27 cm prints at 16.4 cm: 8.3 pt)" \
-  [ "$(grep -c "keyfont = sprintf(',%g', 1.15\*fsz); set key top [a-z]* .*font keyfont" $TMP/script.gp)" -eq 2 ]
+check "(d) and (h): keys at the size of the text, which prints at 8.2 pt where the page prints 16.4 cm wide" sh -c \
+  "[ \$(grep -c \"keyfont = sprintf(',%g', 1.0\\*fsz); set key top [a-z]* .*font keyfont\" $TMP/script.gp) -eq 2 ] &&
+   grep -q '; fontpt = 8.2\\*Wcm/16.4 ' $TMP/script.gp"
 script $TMP/example-5.1-opt --body
 check "optimize: the body is the start (initial/), the final shape dashed in the strip" sh -c \
   "grep -q \"^shape = '$TMP/example-5.1-opt/initial/shape.dat'; final = '$TMP/example-5.1-opt/final/shape.dat'\" $TMP/script.gp"

@@ -1,0 +1,53 @@
+#!/bin/sh
+# hard-vertex.sh OUT: Example 5.1 optimised by SLSQP and Algorithm 4.1 in
+# both plane models from four vertices of B (rise, fall, V, Lambda:
+# OUT/<start>.dat, read with design.initial = file) into
+# OUT/<start>-<model>-<method>; the table of the section "Optimisations
+# from the corners of B" (LaTeX, on standard output).  E(X^0) is the
+# energy of iteration 0 of SLSQP in plane stress, at the start projected
+# onto B.  Tangled from paper/stability.nw; do not edit.
+set -e
+bin=${BIN:-bin/contactopt}
+out=$1; ex=data/example-5.1.scene
+mkdir -p "$out"
+v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
+# the four starts on the article's mesh: C0 = 0.05, C1 = 0.025, area 0.09
+awk -v o="$out" 'BEGIN { C0 = 0.05; C1 = 0.025
+  w = 2 - sqrt(3.6); p = sqrt(0.09 * C1)
+  for (i = 0; i <= 16; i++) { x = i / 4
+    r = C1 * (x - 1.2); r = r < 0 ? 0 : r > C0 ? C0 : r
+    f = C1 * (2.8 - x); f = f < 0 ? 0 : f > C0 ? C0 : f
+    a = x < 2 ? 2 - x : x - 2
+    v = C1 * (a - w); v = v < 0 ? 0 : v > C0 ? C0 : v
+    l = p - C1 * a; l = l < 0 ? 0 : l
+    printf "%g %.17g\n", x, r > (o "/rise.dat")
+    printf "%g %.17g\n", x, f > (o "/fall.dat")
+    printf "%g %.17g\n", x, v > (o "/V.dat")
+    printf "%g %.17g\n", x, l > (o "/Lambda.dat") } }'
+noarc="-s design.arc_x1= -s design.arc_x2= -s design.arc_radius="
+# design.file is read relative to the scene's folder: the starts by
+# their full path
+dir=$(cd "$out" && pwd)
+echo "% written by src/hard-vertex.sh; do not edit"
+printf '%s\n' '\begin{tabular}{@{}lrrrrr@{}}' '\toprule' \
+  'start & $-E(X^0)$ [MJ/m] & SLSQP stress & Alg.~4.1 stress' \
+  '& SLSQP strain & Alg.~4.1 strain\\' \
+  '\midrule'
+for s in rise fall V Lambda; do
+  cells=
+  for m in plane_stress plane_strain; do
+    for o in slsqp projgrad; do
+      n=$out/$s-$m-$o
+      "$bin" optimize $ex -o $n $noarc -s design.initial=file \
+        -s design.file=$dir/$s.dat \
+        -s material.model=$m -s optimizer.method=$o > $n.log
+      cells="$cells & $(v iterations $n) / $(v evaluations $n)"
+    done
+  done
+  e=$(awk '!/^#/ { printf "%.2f", -$2 / 1e6; exit }' \
+    $out/$s-plane_stress-slsqp/history.dat)
+  name=$s; [ $s = Lambda ] && name='$\Lambda$'
+  printf '%s & %s%s\\\\\n' "$name" "$e" "$cells"
+done
+printf '%s\n' '\bottomrule' '\end{tabular}\\[2pt]' \
+  '{\footnotesize iterations / state solves; $E(X^0)$ in plane stress.}'
