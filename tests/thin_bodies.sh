@@ -272,16 +272,18 @@ case $(value blas $TMP/strip-newton) in
   done
   # Why the 1:500 strip does not converge: at the end of its run the
   # gradient's rounding in pi's units is above ten times optimizer.tol and
-  # at least a twentieth of the pi it ended at (the kernels give the gradient at
-  # the same design two values whose difference is of the order of pi
-  # there), so that no step can take pi to tol; on the 1:200 strip the
+  # at least a fortieth of the pi it ended at (the kernels give the
+  # gradient at the same design two values whose difference is of the
+  # order of pi there: a tenth to a third of it under the default,
+  # Prescott and Sandybridge kernels), so that no step can take pi to
+  # tol; on the 1:200 strip the
   # same measure lies below a hundredth of tol, and the run converges
   # (paper/newton.nw, "The end on the 1:500 strip")
   if [ -f $TMP/strip500-newton/final/shape.dat ] && [ -f $TMP/strip-newton/final/shape.dat ]; then
     s5=$(spread strip500-newton $TMP/strip-500.scene) p5=$(value projected_gradient $TMP/strip500-newton)
     s2=$(spread strip-newton $strip)
-    check "strip500-newton: the gradient's rounding at its end, $(show %.1e "$s5") in pi's units, is above 10 tol = 1e-5 and at least a twentieth of its final pi = $p5" \
-      holds 's >= 1e-5 && s >= 0.05 * p' s="$s5" p="$p5"
+    check "strip500-newton: the gradient's rounding at its end, $(show %.1e "$s5") in pi's units, is above 10 tol = 1e-5 and at least a fortieth of its final pi = $p5" \
+      holds 's >= 1e-5 && s >= 0.025 * p' s="$s5" p="$p5"
     check "strip-newton: the gradient's rounding at its end, $(show %.1e "$s2") in pi's units, is below tol / 100 = 1e-8" \
       holds 's <= 1e-8' s="$s2"
   fi
