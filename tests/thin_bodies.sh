@@ -33,6 +33,12 @@
 # 1e-2, and no model problem of its run fails; SLSQP started from each
 # Newton optimum finds no lower energy, and SLSQP from the line start
 # ends max_iter above it on all four (paper/opt.nw, "SLSQP on a thin
+# strip").  Under the Prescott and the Sandybridge kernels of OpenBLAS,
+# one thread, the Newton method's runs at 1:50, 1:200 and 1:500 end with
+# the same stop reason, E and shape; at the end of the 1:500 run the
+# gradient's own rounding, measured by the two kernels at the same
+# design, is of the order of pi and above tol: no method that reads the
+# gradient can converge there (paper/newton.nw, "The end on the 1:500
 # strip").
 . tests/lib.sh
 strip=tests/scenes/strip.scene
@@ -220,4 +226,64 @@ check "strip500-newton: no_progress at the rounding of E, pi <= 1e-2, no model p
   holds 'ok == 1 && p <= 1e-2' ok="$_ok" p="${_p:-1}"
 [ -f $TMP/strip500-newton/final/shape.dat ] && no_lower strip500-newton $TMP/strip-500.scene
 [ -f $TMP/strip500-newton/summary.dat ] && slsqp strip500-newton $TMP/strip-500.scene
+
+# ---- the optimisations under other BLAS kernels (OpenBLAS only) ----------
+# The Newton method on the strips of 1:50, 1:200 and 1:500 again under the
+# Prescott and the Sandybridge kernels, one thread: each run ends as the
+# one under the default kernels did (converged, converged, no_progress),
+# at its E to 1e-12 of it (the comparison of no_lower) and at its shape to
+# 1e-4 C0 (the comparison of converged runs in paper/opt.nw, "How it is
+# checked"); the paths differ, since the last bits of every state do.
+# kernel NAME SCENE K: the run NAME again under the kernels K, as NAME-K
+kernel() { _k=$3; env -u LD_PRELOAD OPENBLAS_CORETYPE=$_k OPENBLAS_NUM_THREADS=1 \
+    $BIN optimize $2 -o $TMP/$1-$_k --plot-files >/dev/null 2>$TMP/$1-$_k.err
+  [ -f $TMP/$1-$_k/summary.dat ] || { fail "$1-$_k: no summary.dat ($(head -c 200 $TMP/$1-$_k.err))"; return; }
+  _s=$(value stop_reason $TMP/$1) _t=$(value stop_reason $TMP/$1-$_k)
+  _a=$(value energy $TMP/$1) _b=$(value energy $TMP/$1-$_k) _c=$(awk '$1 == "C0" { print $3 }' $TMP/$1/effective.scene)
+  _d=$(paste $TMP/$1/final/shape.dat $TMP/$1-$_k/final/shape.dat | rows_max 'abs($2 - $4)' -)
+  check "$1 under $_k: $_t (as $_s) after $(value iterations $TMP/$1-$_k) iterations (against $(value iterations $TMP/$1)), E = $_b (rel. $(rel "$_b" "$_a") <= 1e-12), shape to $(show %.1e "$(calc 'd / c' d="$_d" c="$_c")") C0 <= 1e-4" \
+    holds 'same == 1 && abs(b - a) <= 1e-12 * abs(a) && d <= 1e-4 * c' \
+    same="$([ "$_s" = "$_t" ] && echo 1 || echo 0)" a="$_a" b="$_b" d="$_d" c="$_c"; }
+# gradient NAME SCENE K: dE/dX at the final shape of the run NAME under the
+# kernels K, in $TMP/NAME-grad-K (a run that converges at its start,
+# optimizer.tol = 0.99: one state solve, the gradient in multipliers.dat)
+gradient() { env -u LD_PRELOAD OPENBLAS_CORETYPE=$3 OPENBLAS_NUM_THREADS=1 $BIN optimize $2 \
+    -o $TMP/$1-grad-$3 -s optimizer.tol=0.99 -s design.initial=file \
+    -s design.file=$TMP/$1/final/shape.dat >/dev/null 2>&1; }
+# spread NAME SCENE: max_i |dE/dX_i(Prescott) - dE/dX_i(Sandybridge)| at
+# the final shape of NAME over |grad E(X0)|_inf at the scene's start: the
+# rounding of the gradient (a lower bound of it) in the units of pi, which
+# weighs the gradient with the step tau = C0 / |grad E(X0)|_inf
+spread() { gradient $1 $2 Prescott; gradient $1 $2 Sandybridge
+  $BIN optimize $2 -o $TMP/$1-grad0 -s optimizer.tol=0.99 >/dev/null 2>&1
+  _g=$(rows_max 'abs($4)' $TMP/$1-grad0/multipliers.dat)
+  _d=$(paste $TMP/$1-grad-Prescott/multipliers.dat $TMP/$1-grad-Sandybridge/multipliers.dat | rows_max 'abs($4 - $12)' -)
+  calc 'd / g' d="$_d" g="$_g"; }
+case $(value blas $TMP/strip-newton) in
+  OpenBLAS-*)
+  strip 50
+  for k in Prescott Sandybridge; do
+    [ -f $TMP/strip50-newton/summary.dat ] && kernel strip50-newton $TMP/strip-50.scene $k
+    [ -f $TMP/strip-newton/summary.dat ] && kernel strip-newton $strip $k
+    [ -f $TMP/strip500-newton/summary.dat ] && kernel strip500-newton $TMP/strip-500.scene $k
+  done
+  # Why the 1:500 strip does not converge: at the end of its run the
+  # gradient's rounding in pi's units is above ten times optimizer.tol and
+  # at least a fortieth of the pi it ended at (the kernels give the
+  # gradient at the same design two values whose difference is of the
+  # order of pi there: a tenth to a third of it under the default,
+  # Prescott and Sandybridge kernels), so that no step can take pi to
+  # tol; on the 1:200 strip the
+  # same measure lies below a hundredth of tol, and the run converges
+  # (paper/newton.nw, "The end on the 1:500 strip")
+  if [ -f $TMP/strip500-newton/final/shape.dat ] && [ -f $TMP/strip-newton/final/shape.dat ]; then
+    s5=$(spread strip500-newton $TMP/strip-500.scene) p5=$(value projected_gradient $TMP/strip500-newton)
+    s2=$(spread strip-newton $strip)
+    check "strip500-newton: the gradient's rounding at its end, $(show %.1e "$s5") in pi's units, is above 10 tol = 1e-5 and at least a fortieth of its final pi = $p5" \
+      holds 's >= 1e-5 && s >= 0.025 * p' s="$s5" p="$p5"
+    check "strip-newton: the gradient's rounding at its end, $(show %.1e "$s2") in pi's units, is below tol / 100 = 1e-8" \
+      holds 's <= 1e-8' s="$s2"
+  fi
+  ;;
+esac
 finish
