@@ -1,9 +1,9 @@
-#line 151 "paper/objective.nw"
+#line 154 "paper/objective.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
-#line 159 "paper/objective.nw"
+#line 162 "paper/objective.nw"
 const char *const objective_names[] = {"energy", "compliance", "pressure_spread",
                                        "pressure_peak", NULL};
 
@@ -23,7 +23,12 @@ const char *objective_unit(Objective_kind k)
 {
   return k == OBJECTIVE_ENERGY || k == OBJECTIVE_COMPLIANCE ? " J/m" : "";
 }
-#line 184 "paper/objective.nw"
+#line 191 "paper/objective.nw"
+int objective_fits_schur(const Objective *o)
+{
+  return o->kind == OBJECTIVE_ENERGY || o->kind == OBJECTIVE_COMPLIANCE;
+}
+#line 201 "paper/objective.nw"
 /* T_c >= 0 of each contact unknown, and omega_c its tributary length */
 static void objective_forces(const Model *md, double *T, double *w)
 {
@@ -32,7 +37,7 @@ static void objective_forces(const Model *md, double *T, double *w)
     w[c] = mesh_tributary(md->mesh, md->dofs->contact_col[c]);
   }
 }
-#line 199 "paper/objective.nw"
+#line 216 "paper/objective.nw"
 /* J_s of T, omega (nc) and S1 = sum T > 0; dT, dw its partial derivatives */
 static double spread(int nc, const double *T, const double *w, double S1,
                      double *dT, double *dw)
@@ -46,7 +51,7 @@ static double spread(int nc, const double *T, const double *w, double S1,
   }
   return L * S2 / (S1 * S1) - 1;
 }
-#line 219 "paper/objective.nw"
+#line 236 "paper/objective.nw"
 /* J_q of T, omega (nc), S1 = sum T > 0 and the exponent q >= 1 */
 static double peak(int nc, const double *T, const double *w, double S1,
                    double q, double *dT, double *dw)
@@ -62,7 +67,7 @@ static double peak(int nc, const double *T, const double *w, double S1,
   }
   return J;
 }
-#line 239 "paper/objective.nw"
+#line 256 "paper/objective.nw"
 /* J, and dT, dw (nc, may be NULL) its partial derivatives in T and omega */
 int objective_partials(const Model *md, const Objective *o, double *J,
                        double *dT, double *dw, Status *st)
@@ -95,7 +100,7 @@ int objective_value(const Model *md, const Objective *o, double *J, Status *st)
 {
   return objective_partials(md, o, J, NULL, NULL, st);
 }
-#line 275 "paper/objective.nw"
+#line 292 "paper/objective.nw"
 int objective_same_sets(const Model *md, char *held, int write)
 {
   int nc = md->dofs->nc, nt = md->dofs->nt, same = 1;

@@ -1,11 +1,11 @@
-#line 296 "paper/objective.nw"
+#line 313 "paper/objective.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
 #include "coulomb.h"
-#line 308 "paper/objective.nw"
+#line 325 "paper/objective.nw"
 /* g = dJ/dQ + A_{:H} t, t = dT on the held contact unknowns */
 static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
@@ -26,7 +26,7 @@ static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
       for (Sparse_index k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
         g[Ai[k]] += Ax[k] * dT[c];
 }
-#line 332 "paper/objective.nw"
+#line 349 "paper/objective.nw"
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
@@ -41,7 +41,7 @@ static void held_term(const Model *md, const char *held, const double *g,
     G[d->contact_col[c]] -= g[j] - Al;
   }
 }
-#line 351 "paper/objective.nw"
+#line 368 "paper/objective.nw"
 /* d (u'K_e q) / d y_m: eu, eq the strains (times d) of u and q, Du, Dq
    D times them, d = 2|T| */
 static double bilinear_height(const double gy[3], const double u[6],
@@ -56,7 +56,7 @@ static double bilinear_height(const double gy[3], const double u[6],
   return (du0 * Dq[0] + du2 * Dq[2] + dq0 * Du[0] + dq2 * Du[2]) / (2 * d)
        - uDq * gy[m] / (2 * d * d);
 }
-#line 370 "paper/objective.nw"
+#line 387 "paper/objective.nw"
 /* the strain (times d) of q on the triangle, and D times it */
 static void strain_of(const Model *md, const double gx[3], const double gy[3],
                       const double q[6], double e[3], double De[3])
@@ -94,7 +94,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
     G[node % m->ncol] += rate * dy;
   }
 }
-#line 413 "paper/objective.nw"
+#line 430 "paper/objective.nw"
 /* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
 static void tributary_term(const Mesh *m, int nc, const int *col,
                            const double *dw, double *G)
@@ -108,7 +108,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
         G[k + 1] += r, G[k] -= r;
       }
 }
-#line 433 "paper/objective.nw"
+#line 450 "paper/objective.nw"
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
@@ -124,7 +124,7 @@ static int sliding_term(const Model *md, const char *held, const double *lam,
   free(dw);
   return STATUS_OK;
 }
-#line 470 "paper/objective.nw"
+#line 487 "paper/objective.nw"
 /* eps sum_i |w_i| rho_i, rho_i = sum_j |A_ij Q_j| + |b_i| */
 static double state_rounding(const Model *md, const double *w)
 {
@@ -150,7 +150,7 @@ static double evaluation_rounding(const Model *md, Objective_kind kind, double J
   for (int i = 0; i < md->dofs->n; i++) m += fabsl((long double) md->b[i] * md->Q[i]);
   return DBL_EPSILON * (double) m;
 }
-#line 499 "paper/objective.nw"
+#line 516 "paper/objective.nw"
 /* G from the partials dT, dw already in v; kind OBJECTIVE_COUNT: a
    functional of T alone */
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
@@ -219,7 +219,7 @@ int objective_gradient_rounding(Model *md, const Objective *o, double *G,
   free(v), free(held);
   return rc;
 }
-#line 578 "paper/objective.nw"
+#line 595 "paper/objective.nw"
 int objective_gradient_fixed(const Model *md, const Objective *o,
                              const double *t, double *lam, char *held_out,
                              double *G, Status *st)

@@ -60,7 +60,7 @@ int scene_blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 2488 "paper/scene.nw"
+#line 2496 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -80,7 +80,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2511 "paper/scene.nw"
+#line 2519 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

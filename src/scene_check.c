@@ -327,7 +327,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2397 "paper/scene.nw"
+#line 2402 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies */
 static Opt_method default_method(const Scene *s)
@@ -351,6 +351,9 @@ static int read_optimizer(Loader *L, Scene *s)
   o->metric = opt_options_default(o->method).metric;
   if (o->method != OPT_NEWTON && (rc = scene_get(L, s, "optimizer", "metric")))
     return rc;
+  if (o->method == OPT_SLSQP && !scene_find(L, "optimizer", "metric")
+      && !objective_fits_schur(&o->objective))
+    o->metric = OPT_METRIC_EUCLIDEAN;
   if (o->method == OPT_PROJGRAD && o->metric == OPT_METRIC_SCHUR)
     return scene_blame(L, "schur needs optimizer.method = slsqp or mma: "
                        "Algorithm 4.1 projects in the euclidean metric");
@@ -369,7 +372,7 @@ static int read_optimizer(Loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2445 "paper/scene.nw"
+#line 2453 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Loader *L, Scene *s)
 {
@@ -386,7 +389,7 @@ static int read_objective(Loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2471 "paper/scene.nw"
+#line 2479 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {
