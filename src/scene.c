@@ -1,9 +1,9 @@
-#line 794 "paper/scene.nw"
+#line 795 "paper/scene.nw"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "scene_private.h"
-#line 829 "paper/scene.nw"
+#line 830 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Loader *L, const char *fmt, va_list ap)
@@ -22,7 +22,7 @@ int scene_fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 851 "paper/scene.nw"
+#line 852 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Loader *L, const char *override, char *buf,
                   size_t size)
@@ -30,7 +30,7 @@ void scene_origin(const Loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 862 "paper/scene.nw"
+#line 863 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
@@ -40,7 +40,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return scene_fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 875 "paper/scene.nw"
+#line 876 "paper/scene.nw"
 PRINTF_LIKE(3, 4)
 int scene_bad(Loader *L, const Entry *e, const char *fmt, ...)
 {
@@ -60,7 +60,7 @@ int scene_blame(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 2496 "paper/scene.nw"
+#line 2497 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -80,7 +80,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2519 "paper/scene.nw"
+#line 2520 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;
