@@ -113,11 +113,12 @@ for kind in pressure_spread pressure_peak; do
     in_B "$kind, no method named, $c" $d 1e-12 $B51
   done
 done
-# the suite's scenes with each pressure objective and no method named:
-# converged where the start presses; where it does not (the cantilever and
-# the clamped strip lift off at the start), the objective is undefined,
-# exit 3 with its one line
-for s in data/suite/*.scene; do
+# the other shipped scenes and the suite's with each pressure objective
+# and no method named: converged where the start presses; where it does
+# not (the cantilever and the clamped strip lift off at the start), the
+# objective is undefined, exit 3 with its one line
+for s in data/example-5.1-tresca.scene data/example-5.2.scene data/example-5.2-flat.scene \
+         data/suite/*.scene; do
   for kind in pressure_spread pressure_peak; do
     d=$TMP/su-$(basename $s .scene)-$kind
     $BIN optimize $s -o $d -s objective.kind=$kind >/dev/null 2>$TMP/err
