@@ -1,9 +1,9 @@
-#line 171 "paper/objective.nw"
+#line 174 "paper/objective.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
-#line 179 "paper/objective.nw"
+#line 182 "paper/objective.nw"
 const char *const objective_names[] = {"energy", "compliance", "pressure_spread",
                                        "pressure_peak", NULL};
 
@@ -23,7 +23,7 @@ const char *objective_unit(Objective_kind k)
 {
   return k == OBJECTIVE_ENERGY || k == OBJECTIVE_COMPLIANCE ? " J/m" : "";
 }
-#line 205 "paper/objective.nw"
+#line 208 "paper/objective.nw"
 int objective_is_energy(Objective_kind k) { return k == OBJECTIVE_ENERGY; }
 
 int objective_of_pressure(Objective_kind k)
@@ -37,7 +37,12 @@ int objective_has_kinks(const Model *md, const Objective *o)
 {
   return !objective_is_energy(o->kind) || md->problem->contact == CONTACT_COULOMB;
 }
-#line 224 "paper/objective.nw"
+#line 231 "paper/objective.nw"
+int objective_fits_schur(const Objective *o)
+{
+  return o->kind == OBJECTIVE_ENERGY || o->kind == OBJECTIVE_COMPLIANCE;
+}
+#line 241 "paper/objective.nw"
 /* T_c >= 0 of each contact unknown, and omega_c its tributary length */
 static void objective_forces(const Model *md, double *T, double *w)
 {
@@ -46,7 +51,7 @@ static void objective_forces(const Model *md, double *T, double *w)
     w[c] = mesh_tributary(md->mesh, md->dofs->contact_col[c]);
   }
 }
-#line 239 "paper/objective.nw"
+#line 256 "paper/objective.nw"
 /* J_s of T, omega (nc) and S1 = sum T > 0; dT, dw its partial derivatives */
 static double spread(int nc, const double *T, const double *w, double S1,
                      double *dT, double *dw)
@@ -60,7 +65,7 @@ static double spread(int nc, const double *T, const double *w, double S1,
   }
   return L * S2 / (S1 * S1) - 1;
 }
-#line 259 "paper/objective.nw"
+#line 276 "paper/objective.nw"
 /* J_q of T, omega (nc), S1 = sum T > 0 and the exponent q >= 1 */
 static double peak(int nc, const double *T, const double *w, double S1,
                    double q, double *dT, double *dw)
@@ -76,7 +81,7 @@ static double peak(int nc, const double *T, const double *w, double S1,
   }
   return J;
 }
-#line 279 "paper/objective.nw"
+#line 296 "paper/objective.nw"
 /* J, and dT, dw (nc, may be NULL) its partial derivatives in T and omega */
 int objective_partials(const Model *md, const Objective *o, double *J,
                        double *dT, double *dw, Status *st)
@@ -109,7 +114,7 @@ int objective_value(const Model *md, const Objective *o, double *J, Status *st)
 {
   return objective_partials(md, o, J, NULL, NULL, st);
 }
-#line 315 "paper/objective.nw"
+#line 332 "paper/objective.nw"
 int objective_same_sets(const Model *md, char *held, int write)
 {
   int nc = md->dofs->nc, nt = md->dofs->nt, same = 1;

@@ -21,6 +21,9 @@ const char *objective_name(Objective_kind k);  /* or "?" */
    its unit: " J/m", or "" for a dimensionless one */
 const char *objective_symbol(Objective_kind k);
 const char *objective_unit(Objective_kind k);
+/* 1 if the contact stiffness is the curvature of o where the body
+   presses (energy, compliance): the schur metric fits it; 0 if not */
+int objective_fits_schur(const Objective *o);
 /* J at the model's last state (E itself for energy); STATUS_NUMERIC for
    a pressure objective of a body that no contact node presses */
 int objective_value(const Model *md, const Objective *o, double *J,

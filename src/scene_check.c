@@ -1,4 +1,4 @@
-#line 1527 "paper/scene.nw"
+#line 1528 "paper/scene.nw"
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include "friction.h"
 #include "scene_private.h"
-#line 1568 "paper/scene.nw"
+#line 1569 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -43,9 +43,9 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                      "1e30] times E, where every product the solvers form is "
                      "finite", what, outside(fabs(x) * times / s->problem.E, r));
 }
-#line 1541 "paper/scene.nw"
+#line 1542 "paper/scene.nw"
 static int read_contact(Loader *L, Scene *s);
-#line 1613 "paper/scene.nw"
+#line 1614 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Loader *L, Scene *s)
 {
@@ -68,7 +68,7 @@ static int read_geometry(Loader *L, Scene *s)
     return scene_blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1645 "paper/scene.nw"
+#line 1646 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Loader *L, Scene *s)
 {
@@ -86,7 +86,7 @@ static int read_design(Loader *L, Scene *s)
     return scene_blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1674 "paper/scene.nw"
+#line 1675 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Loader *L, Scene *s)
@@ -101,7 +101,7 @@ static int read_mesh(Loader *L, Scene *s)
   if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1712 "paper/scene.nw"
+#line 1713 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : "R"),
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -111,7 +111,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    s->problem.N, s->problem.M, s->problem.R, k,
                    2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R),
                    INT_MAX / 36);
-#line 1688 "paper/scene.nw"
+#line 1689 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -124,7 +124,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1745 "paper/scene.nw"
+#line 1746 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Loader *L, Scene *s)
 {
@@ -137,7 +137,7 @@ static int check_admissible(Loader *L, Scene *s)
                    "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2113 "paper/scene.nw"
+#line 2114 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Loader *L, Scene *s)
 {
@@ -154,7 +154,7 @@ static int read_material(Loader *L, Scene *s)
   if (!(s->problem.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
   return scene_get(L, s, "material", "model");
 }
-#line 2139 "paper/scene.nw"
+#line 2140 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Loader *L, Scene *s, Side_id id)
 {
@@ -163,7 +163,7 @@ static int read_traction(Loader *L, Scene *s, Side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2161 "paper/scene.nw"
+#line 2162 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -179,7 +179,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2147 "paper/scene.nw"
+#line 2148 "paper/scene.nw"
   if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = scene_get(L, s, sec, "P2"))
@@ -190,7 +190,7 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2180 "paper/scene.nw"
+#line 2181 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Loader *L, Scene *s, Side_id id)
 {
@@ -202,7 +202,7 @@ static int read_side(Loader *L, Scene *s, Side_id id)
     return rc;
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2207 "paper/scene.nw"
+#line 2208 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Loader *L, Scene *s)
 {
@@ -217,17 +217,17 @@ static int check_held(Loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2230 "paper/scene.nw"
+#line 2231 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2221 "paper/scene.nw"
+#line 2222 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2239 "paper/scene.nw"
+#line 2240 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
   return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
                     "onto the foundation (the load that presses it down is %g N/m), "
@@ -243,9 +243,9 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2223 "paper/scene.nw"
+#line 2224 "paper/scene.nw"
 }
-#line 2258 "paper/scene.nw"
+#line 2259 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Loader *L, Scene *s)
 {
@@ -254,7 +254,7 @@ static int read_sides(Loader *L, Scene *s)
     if ((rc = read_side(L, s, (Side_id)id))) return rc;
   return 0;
 }
-#line 2283 "paper/scene.nw"
+#line 2284 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Loader *L, Scene *s)
 {
@@ -269,7 +269,7 @@ static int read_loads(Loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2301 "paper/scene.nw"
+#line 2302 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Loader *L, Scene *s)
 {
@@ -293,7 +293,7 @@ static int read_contact(Loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2333 "paper/scene.nw"
+#line 2334 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Loader *L, Scene *s)
 {
@@ -305,7 +305,7 @@ static int read_solver(Loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2361 "paper/scene.nw"
+#line 2362 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -316,7 +316,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2344 "paper/scene.nw"
+#line 2345 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -327,7 +327,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2398 "paper/scene.nw"
+#line 2404 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies
    (opt_refusal) */
@@ -353,6 +353,9 @@ static int read_optimizer(Loader *L, Scene *s)
   o->metric = opt_options_default(o->method).metric;
   if (o->method != OPT_NEWTON && (rc = scene_get(L, s, "optimizer", "metric")))
     return rc;
+  if (o->method == OPT_SLSQP && !scene_find(L, "optimizer", "metric")
+      && !objective_fits_schur(&o->objective))
+    o->metric = OPT_METRIC_EUCLIDEAN;
   if (o->method == OPT_PROJGRAD && o->metric == OPT_METRIC_SCHUR)
     return scene_blame(L, "schur needs optimizer.method = slsqp or mma: "
                        "Algorithm 4.1 projects in the euclidean metric");
@@ -371,7 +374,7 @@ static int read_optimizer(Loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2448 "paper/scene.nw"
+#line 2457 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Loader *L, Scene *s)
 {
@@ -388,7 +391,7 @@ static int read_objective(Loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2474 "paper/scene.nw"
+#line 2483 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Loader *L, Scene *s)
 {

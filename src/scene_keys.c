@@ -61,7 +61,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else status_number(d.tol, buf);
   return buf;
 }
-#line 667 "paper/scene.nw"
+#line 668 "paper/scene.nw"
 const Key scene_keys[] = {
   
 #line 514 "paper/scene.nw"
@@ -105,7 +105,7 @@ const Key scene_keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder (with -s too)"},
-#line 669 "paper/scene.nw"
+#line 670 "paper/scene.nw"
   
 #line 557 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
@@ -123,7 +123,7 @@ const Key scene_keys[] = {
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 670 "paper/scene.nw"
+#line 671 "paper/scene.nw"
   
 #line 577 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
@@ -149,7 +149,7 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 671 "paper/scene.nw"
+#line 672 "paper/scene.nw"
   
 #line 604 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
@@ -170,7 +170,7 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 672 "paper/scene.nw"
+#line 673 "paper/scene.nw"
   
 #line 625 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
@@ -189,7 +189,8 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
  "newton for the energy without Coulomb friction, slsqp otherwise"},
 {"optimizer", "metric", KEY_WORD, opt_metric_names, AT(optimizer.metric),
  "-", .by = optimizer_default, .selector = "method",
- .when = "slsqp projgrad mma", .meaning = "the metric; projgrad takes euclidean"},
+ .when = "slsqp projgrad mma",
+ .meaning = "the metric; projgrad takes euclidean, slsqp euclidean for the pressure objectives"},
 {"optimizer", "tol", KEY_REAL, .at = AT(optimizer.tol), .unit = "1",
  .by = optimizer_default, .selector = "method", .accepted = "0 < tol < 1",
  .meaning = "the projected-gradient norm to reach"},
@@ -203,19 +204,19 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "starts", KEY_INT, .at = AT(optimizer.starts), .unit = "-",
  .dflt = "1", .accepted = "1 <= starts <= 100",
  .meaning = "starts: the scene's and starts - 1 waves in B; the best kept"},
-#line 673 "paper/scene.nw"
+#line 674 "paper/scene.nw"
   
-#line 659 "paper/scene.nw"
+#line 660 "paper/scene.nw"
 {"objective", "kind", KEY_WORD, objective_names, AT(optimizer.objective.kind),
  "-", "energy", .meaning = "what the design minimises"},
 {"objective", "q", KEY_REAL, .at = AT(optimizer.objective.q), .unit = "1",
  .dflt = "8", .selector = "kind", .when = "pressure_peak",
  .accepted = "1 <= q <= 1000", .meaning = "the exponent of pressure_peak"},
-#line 674 "paper/scene.nw"
+#line 675 "paper/scene.nw"
 };
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
-#line 685 "paper/scene.nw"
+#line 686 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 const Key *scene_key_find(const char *sec, const char *key)
 {
@@ -234,7 +235,7 @@ int scene_section_known(const char *sec)
     if (strcmp(scene_keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 708 "paper/scene.nw"
+#line 709 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size)
 {
@@ -250,7 +251,7 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 727 "paper/scene.nw"
+#line 728 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Key *k, const char *w)
 {
@@ -262,7 +263,7 @@ int scene_key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 2540 "paper/scene.nw"
+#line 2549 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Key *k, char *buf, size_t size)
@@ -291,7 +292,7 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2572 "paper/scene.nw"
+#line 2581 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Key *k, char *buf, size_t size)
 {
@@ -315,7 +316,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2600 "paper/scene.nw"
+#line 2609 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -328,7 +329,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2618 "paper/scene.nw"
+#line 2627 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -352,14 +353,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2647 "paper/scene.nw"
+#line 2656 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2641 "paper/scene.nw"
+#line 2650 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }
