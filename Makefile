@@ -13,7 +13,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # model, the figures' parts, the parts of the scene and output modules),
 # which share the module's private header; and the program.
 MODULES := status resources problem scene mesh fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
- INNER   := qp_base pdas mprgp psor condense_adjoint objective_grad objective_evaluate grad_check design_project newton_ip opt_projgrad opt_slsqp opt_mma opt_newton \
+ INNER   := qp_base pdas mprgp psor condense_adjoint objective_grad objective_evaluate grad_check design_project newton_ip opt_eval opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_state plot_body plot_results \
            scene_keys scene_message scene_ini scene_value scene_check scene_shape scene_write \
            output_path output_state output_vtu output_solve output_optimize \
@@ -27,7 +27,8 @@ SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/objectives.sh src/fig-objectives.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/accuracy-numbers.sh src/fig-accuracy.gp \
            src/huge.sh src/man.sh src/completion.sh \
-           src/hard-nu.sh src/hard-units.sh src/hard-thin.sh src/hard-vertex.sh src/mprgp-table.sh
+           src/hard-nu.sh src/hard-units.sh src/hard-thin.sh src/hard-vertex.sh src/mprgp-table.sh \
+           src/depends.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
 # apart in build/san so that the two builds never mix.
@@ -70,10 +71,11 @@ endif
 # Debian packages the package needs, and the command that proves each one
 # (groff-base, man-db, mandoc, bsdextrautils: tests/install.sh renders and
 # lints the manual page; poppler-utils: tests/article.sh reads the
-# article's text and pages).
+# article's text and pages; universal-ctags: the layers of src/ that the
+# paper prints and tests/cycles.sh checks, src/depends.sh).
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
-            python3-meshio \
+            python3-meshio universal-ctags \
             groff-base man-db mandoc bsdextrautils \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended poppler-utils
@@ -341,6 +343,10 @@ out/accuracy/sweep.dat: src/accuracy.sh out/accuracy/plan.dat $(ACC_RUNS) $(ACC_
 figures/accuracy.tex: src/accuracy-table.sh out/accuracy/sweep.dat data/accuracy-once.dat
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat > $@.partial && mv $@.partial $@
+# the layers of the files of src/, read from the code (paper/overview.nw)
+figures/layers.tex: src/depends.sh $(SOURCES) src/main.c src/example.c | deps
+	@mkdir -p figures
+	sh $< layers src > $@.partial && mv $@.partial $@
 # Example 5.1 on N = 1024 (paper/stability.nw): timed, so rebuilt, not tracked
 figures/huge.tex: src/huge.sh bin/contactopt data/example-5.1.scene
 	@mkdir -p figures
@@ -387,7 +393,7 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 # first of each entry. The build fails where the pages do not set: an
 # overfull box over 20 pt, a float too large, an undefined reference, an
 # index entry twice (paper/latex-log.sh reads the log and the index).
-paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) figures/keys.tex paper/bench-state.tex \
+paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) figures/keys.tex figures/layers.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex \
                        paper/cholmod-long.tex paper/bench-levels.tex paper/bench-orderings.tex | deps

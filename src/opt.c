@@ -1,10 +1,10 @@
-#line 386 "paper/opt.nw"
+#line 395 "paper/opt.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
-#line 399 "paper/opt.nw"
+#line 408 "paper/opt.nw"
 const char *const opt_method_names[] = {"slsqp", "projgrad", "newton", "mma", NULL};
 const char *const opt_metric_names[] = {"schur", "euclidean", NULL};
 
@@ -24,7 +24,7 @@ const char *opt_metric_name(Opt_metric m)
 {
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
-#line 427 "paper/opt.nw"
+#line 436 "paper/opt.nw"
 int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
                 const char *path, Status *st)
 {
@@ -40,123 +40,7 @@ int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
                       path, objective_name(o->kind));
   return STATUS_OK;
 }
-#line 487 "paper/opt.nw"
-int opt_evaluate(Evaluator *ev, const double *X)
-{
-  if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
-  ev->have = 0;
-  double start = resources_clock();
-  int rc = model_solve_to_rounding(ev->md, X, ev->st);
-  ev->solves++;
-  double J = 0, dJ = 0;
-  ev->lifted = 0;
-  if (!rc && (rc = objective_evaluate(ev->md, &ev->o->objective, &J, ev->G, &dJ,
-                                      ev->st)))
-    ev->lifted = rc == STATUS_NUMERIC && isnan(J);  /* no contact node presses */
-  if (ev->rep)
-    ev->rep->evaluations++, ev->rep->state_seconds += resources_clock() - start;
-  if (rc) return rc;
-  memcpy(ev->X, X, ev->n * sizeof *X);
-  ev->J = J, ev->noise = dJ;
-  ev->have = 1;
-  return STATUS_OK;
-}
-#line 542 "paper/opt.nw"
-int opt_pgnorm(const Design_set *B, const double *X, const double *G,
-               double tau, double *pg, Status *st)
-{
-  double residual;                      /* ||X - P_B(X - tau G)|| / tau */
-  int rc = design_kkt(B, X, G, tau, NULL, NULL, &residual, st);
-  *pg = residual * tau / B->C0;
-  return rc;
-}
-#line 553 "paper/opt.nw"
-/* 1 if the monitor asks to stop here; its time is the caller's */
-int opt_report_iterate(Evaluator *ev, int iteration, double pg)
-{
-  double start = resources_clock();
-  Opt_progress p = { iteration, ev->J, pg, ev->solves, ev->md->report.active,
-                     ev->md->report.iterations, start - ev->start };
-  int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
-  ev->rep->monitor_seconds += resources_clock() - start;
-  memcpy(ev->Xacc, ev->X, ev->n * sizeof *ev->X);
-  ev->accepted++;
-  return stop;
-}
-#line 593 "paper/opt.nw"
-/* after the accepted iterate k, at the evaluator's design, with pi = pg:
-   the iterates in a row without measured progress; judged: the method
-   measured the step by its own test */
-int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
-{
-  int measured = k == 0 || judged || pg < 0.5 * ev->pg_best
-              || ev->J < ev->last_J - (ev->noise + ev->last_noise);
-  ev->idle = measured ? 0 : ev->idle + 1;
-  if (measured) ev->idle_J = ev->J;
-  ev->pg_last = pg;
-  if (k == 0 || pg < ev->pg_best) ev->pg_best = pg;
-  ev->last_J = ev->J, ev->last_noise = ev->noise;
-  return ev->idle;
-}
-
-/* the stop_detail of a run stopped by OPT_FEW idle iterates */
-void opt_idle_detail(Evaluator *ev)
-{
-  Objective_kind k = ev->o->objective.kind;
-  const char *J = objective_symbol(k), *u = objective_unit(k);
-  snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "the last %d iterates "
-           "lowered %s by %.1e%s in all, none by more than the rounding of %s at its "
-           "two ends (%.1e%s at the last), and none halved pi (%.2e at the last, "
-           "%.2e the smallest of the run)", ev->idle, J, ev->idle_J - ev->J, u, J,
-           ev->noise, u, ev->pg_last, ev->pg_best);
-}
-#line 624 "paper/opt.nw"
-const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
-{
-  double pg;
-  if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) return NULL;
-  int stop = opt_report_iterate(ev, k, pg), idle = opt_idle_iterates(ev, k, pg, 0);
-  memcpy(bestX, ev->X, ev->n * sizeof *ev->X);
-  ev->rep->iterations = k;
-  ev->rep->pgnorm = pg;
-  if (pg <= ev->o->tol) return "converged";
-  if (stop) return "interrupted";
-  if (k >= ev->o->max_iter) return "max_iter";
-  if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
-  return NULL;
-}
-#line 877 "paper/opt.nw"
-/* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
-void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
-{
-  double d = B->delta / B->C0;
-  for (unsigned i = 0; i < n; i++) {
-    c[2 * i] = -X[i] / B->C0;                       /* X_i >= 0 */
-    c[2 * i + 1] = X[i] / B->C0 - 1;                /* X_i <= C0 */
-  }
-  for (unsigned i = 0; i + 1 < n; i++) {
-    double rise = (X[i + 1] - X[i]) / B->C0;
-    c[2 * n + 2 * i] = rise - d;                    /* rising at most C1 h */
-    c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
-  }
-}
-#line 896 "paper/opt.nw"
-/* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
-void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
-{
-  for (unsigned j = 0; j < ny; j++) {
-    for (unsigned i = 0; i < n; i++) {
-      grad[2 * i * ny + j] = -R[i * ny + j];
-      grad[(2 * i + 1) * ny + j] = R[i * ny + j];
-    }
-    for (unsigned i = 0; i + 1 < n; i++) {
-      double rise = R[(i + 1) * ny + j] - R[i * ny + j];
-      grad[(2 * n + 2 * i) * ny + j] = rise;
-      grad[(2 * n + 2 * i + 1) * ny + j] = -rise;
-    }
-  }
-}
-#line 2073 "paper/opt.nw"
+#line 2082 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Evaluator *ev, double *X)
@@ -182,11 +66,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 2112 "paper/opt.nw"
+#line 2121 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 2098 "paper/opt.nw"
+#line 2107 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -197,14 +81,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 2129 "paper/opt.nw"
+#line 2138 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 2180 "paper/opt.nw"
+#line 2189 "paper/opt.nw"
 int opt_start_design(const Design_set *B, int k, double *X, Status *st)
 {
   int N = B->N, j = (k + 1) / 2;
@@ -213,7 +97,7 @@ int opt_start_design(const Design_set *B, int k, double *X, Status *st)
   for (int i = 0; i <= N; i++) X[i] = c + s * a * cos(j * pi * i / N);
   return design_project(B, X, X, NULL, st);
 }
-#line 2261 "paper/opt.nw"
+#line 2270 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -230,7 +114,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2284 "paper/opt.nw"
+#line 2293 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -243,7 +127,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2312 "paper/opt.nw"
+#line 2321 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -273,7 +157,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 2352 "paper/opt.nw"
+#line 2361 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st)

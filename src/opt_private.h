@@ -1,9 +1,9 @@
-#line 310 "paper/opt.nw"
+#line 319 "paper/opt.nw"
 #ifndef CONTACTOPT_OPT_PRIVATE_H
 #define CONTACTOPT_OPT_PRIVATE_H
 #include "resources.h"
 #include "opt.h"
-#line 451 "paper/opt.nw"
+#line 460 "paper/opt.nw"
 typedef struct {
   Model *md;              /* the state at the last design evaluated */
   const Design_set *B;
@@ -32,7 +32,7 @@ typedef struct {
   int lifted;             /* the last evaluation failed: the body lifts off */
 } Evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
-#line 315 "paper/opt.nw"
+#line 324 "paper/opt.nw"
 /* solve the state at X, then E and grad E, unless X was the last design */
 int opt_evaluate(Evaluator *ev, const double *X);
 /* report the accepted iterate at the evaluator's design; 1 if the
