@@ -195,8 +195,11 @@ $(B)/tests/%: tests/%.c $(OBJ) tests/check.h
 # make check: every test program and script by tests/run, JOBS at a time
 # (default: the cores; make check JOBS=1 runs them one after another), the
 # log in build/tests.log whatever JOBS is.  That src/ matches paper/*.nw
-# (make tangle-check) is one of the tests, tests/tangle.sh.
-check: $(PROGRAM) $(B)/example $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) $(RUNS)
+# (make tangle-check) is one of the tests, tests/tangle.sh.  The
+# benchmarks' programs are built too, so that a change of an interface
+# they call fails here, not in make bench or make paper.
+check: $(PROGRAM) $(B)/example $(TEST_PROGS) $(FAULT_SHIM) $(UNKNOWN_CPU) $(RUNS) \
+       build/bench/bench_cholmod build/bench/walltime build/bench/orderings
 	@BIN=$(PROGRAM) TESTS=$(B)/tests UNKNOWN_CPU=$(UNKNOWN_CPU) JOBS=$(JOBS) sh tests/run
 
 # make check-kernels: what a user's other machine would meet. The test

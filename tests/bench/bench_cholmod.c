@@ -34,7 +34,7 @@
      N dofs setup cold cold_steps analyse factor_solve ratio maxrss_MiB
        warm warm_steps grad grad/warm residual adjoint_compliance
        adjoint_spread adjoint_peak
-   the last three the times of objective_gradient (the adjoint) of the
+   the last three the times of objective_evaluate's gradient (the adjoint) of the
    three objectives besides the energy, after the same warm solves.
    with ratio = (setup + cold) / (analyse + factor_solve).  Any failure:
    a message on stderr and exit status 1. */
@@ -128,7 +128,7 @@ static double timed_adjoint(Model *md, Objective_kind k, double *G)
   Objective o = objective_default();
   o.kind = k;
   double t = now();
-  if (objective_gradient(md, &o, G, &st)) die("objective_gradient", st.msg);
+  if (objective_evaluate(md, &o, NULL, G, NULL, &st)) die("objective_evaluate", st.msg);
   return now() - t;
 }
 
@@ -147,7 +147,7 @@ typedef struct {
   double residual;             /* of CHOLMOD's solve, normalised */
   double rss;                  /* peak resident set after the cold solve, MiB */
   double warm, grad;           /* warm model_solve, grad_energy (s) */
-  double adjoint[3];           /* objective_gradient of compliance,
+  double adjoint[3];           /* objective_evaluate's gradient of compliance,
                                   pressure_spread, pressure_peak (s) */
   int warm_steps;              /* PDAS steps of that warm solve */
 } Times;
