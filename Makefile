@@ -20,7 +20,7 @@ MODULES := status resources problem scene mesh fem qp condense friction held mod
            design_set
 # A header of no module: the index type of CHOLMOD's arrays (paper/fem.nw).
 HEADERS := sparse
-PRIVATE := qp_private qp_inline pdas mprgp psor opt_private plot_private design_private newton_private scene_private output_private
+PRIVATE := qp_private qp_inline model_private pdas mprgp psor opt_private plot_private design_private newton_private scene_private output_private
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \

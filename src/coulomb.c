@@ -1,77 +1,82 @@
-#line 324 "paper/coulomb.nw"
+#line 343 "paper/coulomb.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
 #include "coulomb.h"
-#line 174 "paper/coulomb.nw"
+#line 188 "paper/coulomb.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
 static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
                            double *slip);
 static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
                           const double *b, double *slip);
-static int coulomb_goes_on(const Model *md, int rounding, double before);
-static int coulomb_failed(const Model *md, int stalled, double mark, Status *st);
+static int coulomb_goes_on(const Coulomb_fixed_point *fp, int rounding,
+                           double before);
+static int coulomb_failed(const Model *md, const Coulomb_fixed_point *fp,
+                          int stalled, double mark, Status *st);
 static double coulomb_change(const double *old, const double *T, int nc);
-#line 197 "paper/coulomb.nw"
+#line 213 "paper/coulomb.nw"
 int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
-                        int rounding, Status *st)
+                        double *slip, int rounding, Coulomb_fixed_point *fp,
+                        Status *st)
 {
-  const Problem *p = md->problem;
-  int nc = md->dofs->nc, rc, steps = 0, stalled = 0;
+  const Problem *p = model_problem(md);
+  const Dofs *d = model_dofs(md);
+  int nc = d->nc, rc, stalled = 0;
   double *Tn = malloc((nc + 1) * sizeof *Tn), mark = INFINITY;
+  fp->steps = 0;
   if (!Tn) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
-  memset(md->slip, 0, (md->dofs->nt + 1) * sizeof *md->slip);
+  memset(slip, 0, (d->nt + 1) * sizeof *slip);
   if (!friction_side_holds(p, 0))
-    coulomb_start(p, md->mesh, md->dofs, md->b, md->slip);
+    coulomb_start(p, model_mesh(md), d, model_load(md), slip);
   rc = state(md, st);
-  md->fixed_point_iterations = 0, md->fixed_point_residual = INFINITY;
+  fp->iterations = 0, fp->residual = INFINITY;
   double before = INFINITY;           /* the change of the round before */
-  while (!rc && coulomb_goes_on(md, rounding, before)
-         && md->fixed_point_iterations < p->max_fixed_point
+  while (!rc && coulomb_goes_on(fp, rounding, before)
+         && fp->iterations < p->max_fixed_point
          && stalled < COULOMB_STALL) {
-    before = md->fixed_point_residual;
-    memcpy(Tn, md->T, nc * sizeof *Tn);
-    coulomb_bounds(p, md->dofs, Tn, md->slip);
-    steps += md->report.iterations;
+    before = fp->residual;
+    memcpy(Tn, model_forces(md), nc * sizeof *Tn);
+    coulomb_bounds(p, d, Tn, slip);
+    fp->steps += model_report(md)->iterations;
     rc = state(md, st);
-    md->fixed_point_iterations++;
-    md->fixed_point_residual = coulomb_change(Tn, md->T, nc);
-    if (md->fixed_point_residual <= mark / 2) mark = md->fixed_point_residual, stalled = 0;
+    fp->iterations++;
+    fp->residual = coulomb_change(Tn, model_forces(md), nc);
+    if (fp->residual <= mark / 2) mark = fp->residual, stalled = 0;
     else stalled++;
   }
   free(Tn);
-  md->report.iterations += steps;
-  if (!rc && md->fixed_point_residual > md->fixed_point_tol)
-    rc = coulomb_failed(md, stalled, mark, st);
+  if (!rc && fp->residual > fp->tol)
+    rc = coulomb_failed(md, fp, stalled, mark, st);
   return rc;
 }
-#line 239 "paper/coulomb.nw"
-static int coulomb_goes_on(const Model *md, int rounding, double before)
+#line 257 "paper/coulomb.nw"
+static int coulomb_goes_on(const Coulomb_fixed_point *fp, int rounding,
+                           double before)
 {
-  double r = md->fixed_point_residual;
-  if (r > md->fixed_point_tol) return 1;
+  double r = fp->residual;
+  if (r > fp->tol) return 1;
   return rounding && r > 0 && r <= before / 2;
 }
-#line 249 "paper/coulomb.nw"
-static int coulomb_failed(const Model *md, int stalled, double mark, Status *st)
+#line 268 "paper/coulomb.nw"
+static int coulomb_failed(const Model *md, const Coulomb_fixed_point *fp,
+                          int stalled, double mark, Status *st)
 {
   if (stalled >= COULOMB_STALL)
     return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point stopped "
       "converging: the change of the normal forces did not halve in its last "
       "%d of %d iterations (from %.3g to %.3g relative, > solver.tol = %.3g); "
       "successive approximations converge only for a small enough friction "
-      "(here %g)", stalled, md->fixed_point_iterations, mark,
-      md->fixed_point_residual, md->fixed_point_tol, md->problem->friction);
+      "(here %g)", stalled, fp->iterations, mark, fp->residual, fp->tol,
+      model_problem(md)->friction);
   return status_set(st, STATUS_NUMERIC, "coulomb: the fixed point did not "
     "converge in %d iterations (contact.max_fixed_point): the normal forces "
     "still change by %.3g relative > solver.tol = %.3g; successive "
     "approximations converge only for a small enough friction (here %g)",
-    md->fixed_point_iterations, md->fixed_point_residual,
-    md->fixed_point_tol, md->problem->friction);
+    fp->iterations, fp->residual, fp->tol, model_problem(md)->friction);
 }
-#line 269 "paper/coulomb.nw"
+#line 288 "paper/coulomb.nw"
 static double coulomb_change(const double *old, const double *T, int nc)
 {
   double diff = 0, size = 0;
@@ -80,7 +85,7 @@ static double coulomb_change(const double *old, const double *T, int nc)
     size = fmax(size, fmax(fabs(T[c]), fabs(old[c])));
   return diff == 0 ? 0 : diff / size;
 }
-#line 286 "paper/coulomb.nw"
+#line 305 "paper/coulomb.nw"
 static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
                            double *slip)
 {
@@ -91,7 +96,7 @@ static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
     slip[k] = here ? p->friction * fmax(T[c], 0) : 0;
   }
 }
-#line 304 "paper/coulomb.nw"
+#line 323 "paper/coulomb.nw"
 static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
                           const double *b, double *slip)
 {
@@ -102,7 +107,7 @@ static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
     length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
   for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
 }
-#line 421 "paper/coulomb.nw"
+#line 441 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
@@ -121,34 +126,36 @@ static void work_free(Coulomb_work *w)
 
 static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
 {
-  size_t n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
+  const Dofs *d = model_dofs(md);
+  size_t n = d->n, nc = d->nc, nt = d->nt;
   *w = (Coulomb_work) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
                         malloc((nt + 1) * sizeof(int)), malloc((nt + 1) * sizeof(int)),
                         malloc((nt + 1) * sizeof(double)),
                         malloc((nt * nt + 1) * sizeof(double)),
                         calloc(nc + 1, sizeof(double)),
-                        malloc(md->mesh->ncol * sizeof(double)) };
+                        malloc(model_mesh(md)->ncol * sizeof(double)) };
   if (w->lam && w->held && w->k && w->c && w->v && w->S && w->mu && w->G2)
     return STATUS_OK;
   work_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
-#line 336 "paper/coulomb.nw"
+#line 355 "paper/coulomb.nw"
 /* the m pairs (k[a], c[a]) of a sliding tangential unknown k and the
    normal unknown c at its node, held with T_c > 0; returns m */
 static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
+  const double *T = model_forces(md);
   int c = 0, m = 0;
   for (int k = 0; k < d->nt; k++) {
     while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
     if (c < d->nc && d->contact_col[c] == d->tangent_col[k] && held[c]
-        && !held[d->nc + k] && md->T[c] > 0 && md->T[d->nc + k] != 0)
+        && !held[d->nc + k] && T[c] > 0 && T[d->nc + k] != 0)
       kk[m] = k, cc[m++] = c;
   }
   return m;
 }
-#line 358 "paper/coulomb.nw"
+#line 378 "paper/coulomb.nw"
 /* (A q)_j, A stored with both triangles */
 static double row_times(const cholmod_sparse *A, int j, const double *q)
 {
@@ -164,22 +171,22 @@ static double row_times(const cholmod_sparse *A, int j, const double *q)
 static int coulomb_sensitivity(const Model *md, int m, const int *kk,
                                const int *cc, double *S, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
   double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
   if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
   int rc = STATUS_OK;
   for (int b = 0; !rc && b < m; b++) {
     int t = d->tangent[kk[b]];
-    e[t] = md->T[d->nc + kk[b]] > 0 ? 1 : -1;     /* -sigma = sign T_t */
-    rc = qp_adjoint(md->solver, e, q, NULL, st);
+    e[t] = model_forces(md)[d->nc + kk[b]] > 0 ? 1 : -1;     /* -sigma = sign T_t */
+    rc = qp_adjoint(model_solver(md), e, q, NULL, st);
     e[t] = 0;
     for (int a = 0; !rc && a < m; a++)
-      S[(size_t) a * m + b] = row_times(md->A, d->contact[cc[a]], q);
+      S[(size_t) a * m + b] = row_times(model_stiffness(md), d->contact[cc[a]], q);
   }
   free(e);
   return rc;
 }
-#line 394 "paper/coulomb.nw"
+#line 414 "paper/coulomb.nw"
 /* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
 static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
 {
@@ -202,17 +209,18 @@ static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
   gsl_permutation_free(p);
   return rc;
 }
-#line 459 "paper/coulomb.nw"
+#line 480 "paper/coulomb.nw"
 /* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
                         Coulomb_work *w)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
+  const double *Q = model_state(md), *T = model_forces(md);
   for (int a = 0; a < m; a++) {
     int t = d->tangent[w->k[a]];
-    double sigma = md->T[d->nc + w->k[a]] > 0 ? -1 : 1;
-    w->v[a] = md->problem->friction * (objective_is_energy(o->kind) * fabs(md->Q[t])
+    double sigma = T[d->nc + w->k[a]] > 0 ? -1 : 1;
+    w->v[a] = model_problem(md)->friction * (objective_is_energy(o->kind) * fabs(Q[t])
                                        - sigma * w->lam[t]);
   }
 }
@@ -220,7 +228,7 @@ static void coulomb_rhs(const Model *md, const Objective *o, int m,
 static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
                          double *G, Status *st)
 {
-  double F = md->problem->friction;
+  double F = model_problem(md)->friction;
   int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, NULL, st);
   int m = rc ? 0 : coulomb_pairs(md, w->held, w->k, w->c);
   if (rc || m == 0 || F == 0) return rc;
@@ -230,7 +238,7 @@ static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
   for (int a = 0; a < m; a++) w->mu[w->c[a]] = w->v[a];
   if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, NULL, st)))
     return rc;
-  for (int i = 0; i < md->mesh->ncol; i++) G[i] += w->G2[i];
+  for (int i = 0; i < model_mesh(md)->ncol; i++) G[i] += w->G2[i];
   return STATUS_OK;
 }
 

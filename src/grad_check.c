@@ -1,9 +1,9 @@
-#line 286 "paper/grad.nw"
+#line 289 "paper/grad.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grad.h"
-#line 294 "paper/grad.nw"
+#line 297 "paper/grad.nw"
 Grad_check *grad_check_new(int N, Status *st)
 {
   if (N < 1) {
@@ -41,7 +41,7 @@ void grad_check_free(Grad_check *gc)
   free(gc->G);
   free(gc);
 }
-#line 337 "paper/grad.nw"
+#line 340 "paper/grad.nw"
 /* the objective checked: gc's, E where it names none */
 static Objective grad_objective(const Grad_check *gc)
 {
@@ -58,7 +58,7 @@ static int energy_with(Model *md, Grad_check *gc, int i, double x, double *E,
   Objective o = grad_objective(gc);
   X[i] = x;
   int rc = model_solve_to_rounding(md, X, st);
-  *E = md->energy;
+  *E = model_energy(md);
   if (!rc) rc = objective_value(md, &o, E, st);
   if (!rc && objective_has_kinks(md, &o) && !objective_same_sets(md, gc->held, 0))
     gc->crossed[i] = 1;
@@ -73,26 +73,26 @@ static int grad_difference(Model *md, Grad_check *gc, int i, double s,
   int rc;
   if (x0 - s >= 0) {
     
-#line 377 "paper/grad.nw"
+#line 380 "paper/grad.nw"
 double Em, Ep;
 if (!(rc = energy_with(md, gc, i, x0 - s, &Em, st))
     && !(rc = energy_with(md, gc, i, x0 + s, &Ep, st)))
   *fd = (Ep - Em) / (2 * s);
-#line 368 "paper/grad.nw"
+#line 371 "paper/grad.nw"
   } else {
     
-#line 384 "paper/grad.nw"
+#line 387 "paper/grad.nw"
 double E0, E1, E2;
 if (!(rc = energy_with(md, gc, i, x0, &E0, st))
     && !(rc = energy_with(md, gc, i, x0 + s, &E1, st))
     && !(rc = energy_with(md, gc, i, x0 + 2 * s, &E2, st)))
   *fd = (-3 * E0 + 4 * E1 - E2) / (2 * s);
-#line 370 "paper/grad.nw"
+#line 373 "paper/grad.nw"
   }
   X[i] = x0;
   return rc;
 }
-#line 392 "paper/grad.nw"
+#line 395 "paper/grad.nw"
 /* the steps of the differences, relative to C0: 1e-2, 1e-3, ..., 1e-6 */
 #define FOR_EACH_STEP(step) \
   for (double step = 1e-2; step >= 1e-6 * 0.999; step /= 10)
@@ -104,14 +104,14 @@ static int grad_check_node(Model *md, Grad_check *gc, int i, double Gmax,
   gc->fd[i] = NAN;
   FOR_EACH_STEP(step) {
     double fd;
-    int rc = grad_difference(md, gc, i, step * md->problem->C0, &fd, st);
+    int rc = grad_difference(md, gc, i, step * model_problem(md)->C0, &fd, st);
     if (rc) return rc;
     double e = fabs(fd - gc->G[i]) / (Gmax > 0 ? Gmax : 1);
     if (e < gc->err[i]) { gc->err[i] = e; gc->fd[i] = fd; }
   }
   return STATUS_OK;
 }
-#line 414 "paper/grad.nw"
+#line 417 "paper/grad.nw"
 long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X)
 {
   long n = 2;
@@ -119,7 +119,7 @@ long grad_check_solves(const Grad_check *gc, const Problem *p, const double *X)
     FOR_EACH_STEP(step) n += X[gc->check[k]] - step * p->C0 >= 0 ? 2 : 3;
   return n;
 }
-#line 428 "paper/grad.nw"
+#line 431 "paper/grad.nw"
 /* gc->G at the design just solved by the objective's front door: (4.8),
    or another objective's gradient with the held sets it belongs to */
 static int grad_at(Model *md, Grad_check *gc, Status *st)
@@ -127,7 +127,7 @@ static int grad_at(Model *md, Grad_check *gc, Status *st)
   Objective o = grad_objective(gc);
   if (objective_has_kinks(md, &o)) {
     free(gc->held);
-    gc->held = malloc((size_t) md->dofs->nc + md->dofs->nt + 1);
+    gc->held = malloc((size_t) model_dofs(md)->nc + model_dofs(md)->nt + 1);
     if (!gc->held) return status_set(st, STATUS_MEMORY, "gradcheck: out of memory");
     memset(gc->crossed, 0, (size_t) gc->N + 1);
     objective_same_sets(md, gc->held, 1);
@@ -140,9 +140,9 @@ int grad_check(Model *md, const double *X, Grad_check *gc,
 {
   int rc, n = gc->N + 1;
   double Gmax = 0;
-  if (gc->N != md->problem->N)
+  if (gc->N != model_problem(md)->N)
     return status_set(st, STATUS_INPUT, "gradcheck: made for N = %d, the "
-                      "model has N = %d", gc->N, md->problem->N);
+                      "model has N = %d", gc->N, model_problem(md)->N);
   if (gc->ncheck < 1 || gc->ncheck > n)
     return status_set(st, STATUS_INPUT, "gradcheck: %d nodes to check", gc->ncheck);
   for (int k = 0; k < gc->ncheck; k++)

@@ -184,9 +184,9 @@ static int command_solve(Run *r, Status *st)
   if ((rc = finish(r, &o, output_solve(&o, &r->run, md, r->s.alpha0, st), st)))
     return rc;
   printf("%s: E = %.10g J/m, KKT residual %.2e after %d %s iterations, "
-         "%d of %d contact nodes active, %.3f s -> %s/\n", r->s.path, md->energy,
-         md->report.kkt, md->report.iterations, r->run.state_solver,
-         md->report.active, md->dofs->nc, md->seconds, r->dir);
+         "%d of %d contact nodes active, %.3f s -> %s/\n", r->s.path, model_energy(md),
+         model_report(md)->kkt, model_report(md)->iterations, r->run.state_solver,
+         model_report(md)->active, model_dofs(md)->nc, model_seconds(md), r->dir);
   return STATUS_OK;
 }
 #line 525 "paper/main.nw"
@@ -197,7 +197,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   int rc = model_solve_to_rounding(r->md, r->s.alpha0, st);
   if (rc || (rc = model_solve_to_rounding(r->md, r->s.alpha0, st))) return rc;
   long solves = grad_check_solves(gc, p, r->s.alpha0);
-  double t = r->md->seconds, total = solves * t;
+  double t = model_seconds(r->md), total = solves * t;
   printf("gradcheck: %d of %d nodes, %ld state solves of about %.2g s: about %.0f s\n",
          gc->ncheck, p->N + 1, solves, t, ceil(total));
   fflush(stdout);
@@ -325,7 +325,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
   if (levels < 2) return STATUS_OK;
   model_release(r->md);        /* the coarse models do not add to its factor */
   int rc = opt_coarse_start(&r->s.problem, &r->s.solver, &r->s.optimizer,
-                            levels, X, r->md, coarse_monitor, r->md->cm, c, st);
+                            levels, X, r->md, coarse_monitor, model_cholmod(r->md), c, st);
   c->levels = levels;
   if (!rc && c->stop_reason[0])
     printf("%s: coarse to fine: interrupted after %d evaluation%s, %.2f s; "

@@ -1,16 +1,15 @@
-#line 159 "paper/model.nw"
+#line 232 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "resources.h"
 #include "held.h"
-#include "model.h"
-#include "coulomb.h"
-#line 154 "paper/model.nw"
-static int model_state(Model *md, Status *st);
+#include "model_private.h"
+#line 227 "paper/model.nw"
+static int model_solve_state(Model *md, Status *st);
 static int model_pressed(const Model *md, Status *st);
-#line 172 "paper/model.nw"
+#line 244 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -25,32 +24,32 @@ Model *model_new(const Problem *p, const Qp_options *solver,
     return NULL;
   }
   
-#line 192 "paper/model.nw"
+#line 264 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
 md->lo = malloc((nc ? nc : 1) * sizeof *md->lo);
 md->T = calloc(nc + nt + 1, sizeof *md->T);
 md->slip = calloc(nt + 1, sizeof *md->slip);
-md->fixed_point_tol = solver->tol;
+md->fixed_point.tol = solver->tol;
 if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   model_free(md);
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 186 "paper/model.nw"
+#line 258 "paper/model.nw"
   
-#line 207 "paper/model.nw"
+#line 279 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 187 "paper/model.nw"
+#line 259 "paper/model.nw"
   return md;
 }
-#line 230 "paper/model.nw"
+#line 302 "paper/model.nw"
 static int model_solve_with(Model *md, const double *X, int rounding,
                             Status *st)
 {
@@ -68,8 +67,12 @@ static int model_solve_with(Model *md, const double *X, int rounding,
                        md->checked ? STATUS_NUMERIC : STATUS_INPUT, st)))
     return rc;
   md->checked = 1;
-  rc = md->problem->contact == CONTACT_COULOMB
-       ? coulomb_fixed_point(md, model_state, rounding, st) : model_state(md, st);
+  if (md->problem->contact != CONTACT_COULOMB) rc = model_solve_state(md, st);
+  else {
+    rc = coulomb_fixed_point(md, model_solve_state, md->slip, rounding,
+                             &md->fixed_point, st);
+    md->report.iterations += md->fixed_point.steps;
+  }
   md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
   if (md->dofs->nt) {
     md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
@@ -88,8 +91,8 @@ int model_solve_to_rounding(Model *md, const double *X, Status *st)
 {
   return model_solve_with(md, X, 1, st);
 }
-#line 271 "paper/model.nw"
-static int model_state(Model *md, Status *st)
+#line 347 "paper/model.nw"
+static int model_solve_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved || md->guessed ? md->Q : NULL,
                     md->Q, md->T, &md->report, st);
@@ -97,7 +100,7 @@ static int model_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK, md->guessed = 0;
   return rc;
 }
-#line 284 "paper/model.nw"
+#line 360 "paper/model.nw"
 static int model_pressed(const Model *md, Status *st)
 {
   if (!held_lift_free(md->problem)) return 0;
@@ -107,7 +110,7 @@ static int model_pressed(const Model *md, Status *st)
                     "ended with no node pressed onto the foundation, and no side "
                     "holds u2");
 }
-#line 308 "paper/model.nw"
+#line 384 "paper/model.nw"
 void model_contact_gaps(const Model *md, double *g)
 {
   for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
@@ -123,12 +126,12 @@ void model_guess_contact(Model *md, const double *X, const double *g)
   }
   md->guessed = 1;
 }
-#line 337 "paper/model.nw"
+#line 413 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-#line 345 "paper/model.nw"
+#line 421 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -142,7 +145,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-#line 364 "paper/model.nw"
+#line 440 "paper/model.nw"
 void model_release(Model *md)
 {
   if (md) qp_release(md->solver);
@@ -158,7 +161,7 @@ void model_free(Model *md)
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 406 "paper/model.nw"
+#line 482 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -171,17 +174,17 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 425 "paper/model.nw"
+#line 501 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 418 "paper/model.nw"
+#line 494 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 491 "paper/model.nw"
+#line 567 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
   const Dofs *d = md->dofs;
@@ -191,21 +194,21 @@ int model_summary(const Model *md, Model_summary *sum, Status *st)
   memset(sum, 0, sizeof *sum);
   fem_reactions(md->mesh, d, &md->hooke, md->problem, md->Q, r);
   
-#line 512 "paper/model.nw"
+#line 588 "paper/model.nw"
 for (int k = 0; k < d->ndof; k++) {
   int side = d->unknown[k] < 0 ? fem_reaction_side(md->mesh, md->problem, k) : -1;
   if (side >= 0) sum->reaction[side][k % 2] += r[k];
 }
-#line 500 "paper/model.nw"
+#line 576 "paper/model.nw"
   free(r);
   
-#line 519 "paper/model.nw"
+#line 595 "paper/model.nw"
 for (int c = 0; c < d->nc; c++)
   if (md->Q[d->contact[c]] <= md->lo[c]) {
     sum->pressure_max = fmax(sum->pressure_max, model_pressure(md, c));
     sum->contact_length += mesh_tributary(md->mesh, d->contact_col[c]);
   }
-#line 502 "paper/model.nw"
+#line 578 "paper/model.nw"
   for (int t = 0; t < md->mesh->ntri; t++) {
     double s[5];
     model_stress(md, t, s);
@@ -213,7 +216,7 @@ for (int c = 0; c < d->nc; c++)
   }
   return STATUS_OK;
 }
-#line 546 "paper/model.nw"
+#line 622 "paper/model.nw"
 void model_stress(const Model *md, int t, double s[5])
 {
   long double e[3], sigma[3];
@@ -225,14 +228,14 @@ void model_stress(const Model *md, int t, double s[5])
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
-#line 565 "paper/model.nw"
+#line 641 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 579 "paper/model.nw"
+#line 655 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -244,7 +247,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 596 "paper/model.nw"
+#line 672 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {
@@ -256,3 +259,24 @@ double model_energy_rounding(const Model *md)
   long double U = md->energy - md->friction_energy + W;
   return DBL_EPSILON * (double) (fabsl(U) + Wabs + fabs(md->friction_energy));
 }
+#line 688 "paper/model.nw"
+const Problem *model_problem(const Model *md) { return md->problem; }
+cholmod_common *model_cholmod(const Model *md) { return md->cm; }
+const Mesh *model_mesh(const Model *md) { return md->mesh; }
+const Dofs *model_dofs(const Model *md) { return md->dofs; }
+const Hooke *model_hooke(const Model *md) { return &md->hooke; }
+const cholmod_sparse *model_stiffness(const Model *md) { return md->A; }
+const double *model_load(const Model *md) { return md->b; }
+const double *model_bounds(const Model *md) { return md->lo; }
+const Qp *model_qp(const Model *md) { return &md->qp; }
+const Qp_workspace *model_solver(const Model *md) { return md->solver; }
+const double *model_state(const Model *md) { return md->Q; }
+const double *model_forces(const Model *md) { return md->T; }
+const double *model_slip(const Model *md) { return md->slip; }
+double model_energy(const Model *md) { return md->energy; }
+double model_friction_energy(const Model *md) { return md->friction_energy; }
+int model_fixed_point_iterations(const Model *md) { return md->fixed_point.iterations; }
+double model_fixed_point_residual(const Model *md) { return md->fixed_point.residual; }
+const Qp_report *model_report(const Model *md) { return &md->report; }
+double model_seconds(const Model *md) { return md->seconds; }
+int model_solved(const Model *md) { return md->solved; }

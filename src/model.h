@@ -1,4 +1,4 @@
-#line 39 "paper/model.nw"
+#line 48 "paper/model.nw"
 #ifndef CONTACTOPT_MODEL_H
 #define CONTACTOPT_MODEL_H
 #include "sparse.h"
@@ -9,37 +9,10 @@
 #include "qp.h"
 #include "friction.h"
 
-#line 57 "paper/model.nw"
-typedef struct {
-  const Problem *problem; /* the problem (not owned) */
-  cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
-  Mesh *mesh;           /* moved to the last design solved */
-  Dofs *dofs;           /* unknowns and contact DOFs I */
-  Hooke hooke;          /* Hooke's law of the problem's plane model */
-  cholmod_sparse *A;    /* A(X), n x n */
-  double *b;            /* n: F(X) + P(X) */
-  double *lo;           /* nc: the bounds -X_i of the contact DOFs */
-  Qp qp;                /* the state problem (4.3) over A, b, lo */
-  Qp_workspace *solver; /* its solver, reused from design to design */
-  double *Q;            /* n: the state Q(X) */
-  double *T;            /* nc + nt: the contact forces T_i >= 0, then
-                           (friction) the tangential ones */
-  double *slip;         /* nt: the slip bounds of friction (N/m) */
-  double energy;        /* E(X) = 1/2 Q'AQ - (F+P)'Q + friction_energy */
-  double friction_energy; /* sum slip_k |u1_k|; 0 without friction */
-  int fixed_point_iterations; /* Coulomb: Tresca solves after the first */
-  double fixed_point_residual; /* Coulomb: the last relative change of T */
-  Qp_report report;     /* of the last state solve (Coulomb: iterations
-                           summed over the fixed point) */
-  double seconds;       /* wall time of the last model_solve */
-  int solved;           /* Q holds a state: warm start the next solve */
-  int checked;          /* held_check passed once: the scene's design */
-  int guessed;          /* Q's contact unknowns hold a guess (below):
-                           warm start the next solve from it */
-  double fixed_point_tol; /* Coulomb: the solver's tol, relative */
-} Model;
+#line 67 "paper/model.nw"
+typedef struct Model Model;
 
-#line 467 "paper/model.nw"
+#line 543 "paper/model.nw"
 /* what a summary says of the state at the last design solved */
 typedef struct {
   double reaction[SIDE_COUNT][2]; /* N/m: the force of each side on the
@@ -51,7 +24,7 @@ typedef struct {
   double von_mises_max;   /* Pa: the largest von Mises stress of a triangle */
 } Model_summary;
 
-#line 88 "paper/model.nw"
+#line 161 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -88,11 +61,54 @@ void model_guess_contact(Model *md, const double *X, const double *g);
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
-#line 480 "paper/model.nw"
+#line 556 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
    triangle t at the last state solved [Pa when E is] */
 void model_stress(const Model *md, int t, double s[5]);
 /* the summary of the last state solved; STATUS_MEMORY if memory runs out */
 int model_summary(const Model *md, Model_summary *sum, Status *st);
-#line 52 "paper/model.nw"
+
+#line 76 "paper/model.nw"
+/* the problem the model was built for */
+const Problem *model_problem(const Model *md);
+/* CHOLMOD's workspace the model was built with */
+cholmod_common *model_cholmod(const Model *md);
+/* the mesh, moved to the last design solved */
+const Mesh *model_mesh(const Model *md);
+/* the unknowns and the contact DOFs I */
+const Dofs *model_dofs(const Model *md);
+/* Hooke's law of the problem's plane model */
+const Hooke *model_hooke(const Model *md);
+/* A(X), n x n, both triangles stored */
+const cholmod_sparse *model_stiffness(const Model *md);
+/* n: the load F(X) + P(X) */
+const double *model_load(const Model *md);
+/* nc: the bounds -X_i of the contact DOFs */
+const double *model_bounds(const Model *md);
+/* the state problem (4.3) over A, b and the bounds */
+const Qp *model_qp(const Model *md);
+/* the state problem's solver, at the last state solved */
+const Qp_workspace *model_solver(const Model *md);
+/* n: the state Q(X) */
+const double *model_state(const Model *md);
+/* nc + nt: the contact forces T_i >= 0, then the tangential ones */
+const double *model_forces(const Model *md);
+/* nt: the slip bounds of friction (N/m) of the last state solved */
+const double *model_slip(const Model *md);
+/* E(X) = 1/2 Q'AQ - (F+P)'Q + the work of friction */
+double model_energy(const Model *md);
+/* the work of friction, sum slip_k |u1_k|; 0 without friction */
+double model_friction_energy(const Model *md);
+/* Coulomb: the Tresca solves of the fixed point after the first */
+int model_fixed_point_iterations(const Model *md);
+/* Coulomb: the last relative change of the normal forces T */
+double model_fixed_point_residual(const Model *md);
+/* the last state solve's report (Coulomb: iterations summed over the
+   fixed point) */
+const Qp_report *model_report(const Model *md);
+/* the wall time of the last model_solve, s */
+double model_seconds(const Model *md);
+/* 1 when the last solve found a state */
+int model_solved(const Model *md);
+#line 63 "paper/model.nw"
 #endif

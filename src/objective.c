@@ -35,7 +35,7 @@ int objective_has_exponent(Objective_kind k) { return k == OBJECTIVE_PEAK; }
 
 int objective_has_kinks(const Model *md, const Objective *o)
 {
-  return !objective_is_energy(o->kind) || md->problem->contact == CONTACT_COULOMB;
+  return !objective_is_energy(o->kind) || model_problem(md)->contact == CONTACT_COULOMB;
 }
 #line 231 "paper/objective.nw"
 int objective_fits_schur(const Objective *o)
@@ -46,12 +46,14 @@ int objective_fits_schur(const Objective *o)
 /* T_c >= 0 of each contact unknown, and omega_c its tributary length */
 static void objective_forces(const Model *md, double *T, double *w)
 {
-  for (int c = 0; c < md->dofs->nc; c++) {
-    T[c] = md->Q[md->dofs->contact[c]] <= md->lo[c] ? fmax(md->T[c], 0) : 0;
-    w[c] = mesh_tributary(md->mesh, md->dofs->contact_col[c]);
+  const Dofs *d = model_dofs(md);
+  const double *Q = model_state(md), *lo = model_bounds(md), *Tm = model_forces(md);
+  for (int c = 0; c < d->nc; c++) {
+    T[c] = Q[d->contact[c]] <= lo[c] ? fmax(Tm[c], 0) : 0;
+    w[c] = mesh_tributary(model_mesh(md), d->contact_col[c]);
   }
 }
-#line 256 "paper/objective.nw"
+#line 258 "paper/objective.nw"
 /* J_s of T, omega (nc) and S1 = sum T > 0; dT, dw its partial derivatives */
 static double spread(int nc, const double *T, const double *w, double S1,
                      double *dT, double *dw)
@@ -65,7 +67,7 @@ static double spread(int nc, const double *T, const double *w, double S1,
   }
   return L * S2 / (S1 * S1) - 1;
 }
-#line 276 "paper/objective.nw"
+#line 278 "paper/objective.nw"
 /* J_q of T, omega (nc), S1 = sum T > 0 and the exponent q >= 1 */
 static double peak(int nc, const double *T, const double *w, double S1,
                    double q, double *dT, double *dw)
@@ -81,22 +83,25 @@ static double peak(int nc, const double *T, const double *w, double S1,
   }
   return J;
 }
-#line 296 "paper/objective.nw"
+#line 298 "paper/objective.nw"
 /* J, and dT, dw (nc, may be NULL) its partial derivatives in T and omega */
 int objective_partials(const Model *md, const Objective *o, double *J,
                        double *dT, double *dw, Status *st)
 {
-  int nc = md->dofs->nc, code = STATUS_OK;
+  const Dofs *d = model_dofs(md);
+  const double *Q = model_state(md), *lo = model_bounds(md);
+  int nc = d->nc, code = STATUS_OK;
   double *v = malloc(4 * ((size_t) nc + 1) * sizeof *v), S1 = 0;
   if (!v) return status_set(st, STATUS_MEMORY, "objective: out of memory");
   double *T = v, *w = v + nc + 1, *gT = dT ? dT : w + nc + 1, *gw = dw ? dw : gT + nc + 1;
   memset(gT, 0, nc * sizeof *gT), memset(gw, 0, nc * sizeof *gw);
   objective_forces(md, T, w);
   for (int c = 0; c < nc; c++) S1 += T[c];
-  if (o->kind == OBJECTIVE_ENERGY) *J = md->energy;
+  if (o->kind == OBJECTIVE_ENERGY) *J = model_energy(md);
   else if (o->kind == OBJECTIVE_COMPLIANCE) {
     long double W = 0;
-    for (int i = 0; i < md->dofs->n; i++) W += (long double) md->b[i] * md->Q[i];
+    const double *b = model_load(md);
+    for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
     *J = (double) W;
   } else if (!(S1 > 0))
     code = status_set(st, STATUS_NUMERIC, "objective: %s is undefined: no "
@@ -105,7 +110,7 @@ int objective_partials(const Model *md, const Objective *o, double *J,
   else *J = o->kind == OBJECTIVE_SPREAD ? spread(nc, T, w, S1, gT, gw)
                                         : peak(nc, T, w, S1, o->q, gT, gw);
   for (int c = 0; c < nc; c++)     /* a free node's T is 0 on these sets */
-    if (md->Q[md->dofs->contact[c]] > md->lo[c]) gT[c] = 0;
+    if (Q[d->contact[c]] > lo[c]) gT[c] = 0;
   free(v);
   return code;
 }
@@ -114,13 +119,14 @@ int objective_value(const Model *md, const Objective *o, double *J, Status *st)
 {
   return objective_partials(md, o, J, NULL, NULL, st);
 }
-#line 332 "paper/objective.nw"
+#line 337 "paper/objective.nw"
 int objective_same_sets(const Model *md, char *held, int write)
 {
-  int nc = md->dofs->nc, nt = md->dofs->nt, same = 1;
+  const Dofs *d = model_dofs(md);
+  const double *Q = model_state(md), *lo = model_bounds(md);
+  int nc = d->nc, nt = d->nt, same = 1;
   for (int k = 0; k < nc + nt; k++) {
-    char h = k < nc ? md->Q[md->dofs->contact[k]] <= md->lo[k]
-                    : md->Q[md->dofs->tangent[k - nc]] == 0;
+    char h = k < nc ? Q[d->contact[k]] <= lo[k] : Q[d->tangent[k - nc]] == 0;
     if (write) held[k] = h; else same &= held[k] == h;
   }
   return same;

@@ -76,7 +76,7 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
     if (rc && ev.lifted && ev.accepted) rc = opt_lift_off(&ev, X);
   }
-  if (!rc) rep->energy = md->energy;
+  if (!rc) rep->energy = model_energy(md);
   rep->seconds = resources_clock() - ev.start;
   free(ev.X);
   return rc;

@@ -39,8 +39,8 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
 int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 {
   double start = resources_clock();
-  Opt_progress p = { iteration, ev->J, pg, ev->solves, ev->md->report.active,
-                     ev->md->report.iterations, start - ev->start };
+  Opt_progress p = { iteration, ev->J, pg, ev->solves, model_report(ev->md)->active,
+                     model_report(ev->md)->iterations, start - ev->start };
   int stop = ev->monitor && ev->monitor(&p, ev->X, ev->data);
   ev->rep->monitor_seconds += resources_clock() - start;
   memcpy(ev->Xacc, ev->X, ev->n * sizeof *ev->X);

@@ -134,7 +134,7 @@ int opt_newton(Evaluator *ev, double *X)
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
   nr.g = nr.v + mm, nr.r = nr.g + n, nr.d = nr.r + n, nr.trial = nr.d + n, nr.Xk = nr.trial + n;
-  nr.mdl = (Newton_model) { n, m, ev->md->dofs->contact_col, nr.Xk, ev->B, nr.g,
+  nr.mdl = (Newton_model) { n, m, model_dofs(ev->md)->contact_col, nr.Xk, ev->B, nr.g,
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   

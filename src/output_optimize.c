@@ -1,13 +1,13 @@
-#line 1645 "paper/output.nw"
+#line 1648 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1657 "paper/output.nw"
+#line 1660 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1508 "paper/output.nw"
+#line 1509 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const double *J, const Output_start *start)
 {
@@ -19,10 +19,10 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1725 "paper/output.nw"
+#line 1728 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
-  const Mesh *m = h->md->mesh;
+  const Mesh *m = model_mesh(h->md);
   char name[64], path[80];
   for (int i = 0; i < m->ncol; i++)
     if (m->xy[2 * i + 1] != X[i]) {
@@ -40,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1664 "paper/output.nw"
+#line 1667 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -85,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1753 "paper/output.nw"
+#line 1756 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -119,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1791 "paper/output.nw"
+#line 1794 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -132,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1814 "paper/output.nw"
+#line 1817 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -151,23 +151,23 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1836 "paper/output.nw"
+#line 1839 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
   int rc = output_state(o, "initial", md, X, st);
   if (rc) return rc;
-  start->energy = md->energy;
+  start->energy = model_energy(md);
   start->cv = model_pressure_cv(md);
   start->moved = moved;
   return output_objectives(md, q, &start->J, st);
 }
-#line 1855 "paper/output.nw"
+#line 1858 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
 {
-  const Problem *p = md->problem;
+  const Problem *p = model_problem(md);
   Model_summary ms;
   Objective_values J;
   FILE *f = model_summary(md, &ms, st)
@@ -187,17 +187,17 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
   
-#line 1899 "paper/output.nw"
+#line 1902 "paper/output.nw"
 if (p && (!strcmp(run->optimizer, "slsqp") || !strcmp(run->optimizer, "mma")))
   fprintf(f, "subproblem_seconds %.6f\n", r->subproblem_seconds);
-#line 1879 "paper/output.nw"
+#line 1882 "paper/output.nw"
   
-#line 1907 "paper/output.nw"
+#line 1910 "paper/output.nw"
 if (r->starts > 1)
   fprintf(f, "starts %d\nstarts_best %d\nstarts_min %.15g\nstarts_max %.15g\n"
           "starts_evaluations %d\nstarts_seconds %.6f\n", r->starts, r->starts_best,
           r->starts_min, r->starts_max, r->starts_evaluations, r->starts_seconds);
-#line 1880 "paper/output.nw"
+#line 1883 "paper/output.nw"
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   if (r->levels > 1)
     fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",
@@ -205,7 +205,7 @@ if (r->starts > 1)
   fprintf(f, "contact_pressure_cv_initial %.6f\ncontact_pressure_cv_final %.6f\n",
           start->cv, model_pressure_cv(md));
   fprintf(f, "active_contact_nodes %d\nkkt_residual %.3e\narea_multiplier %.15g\n",
-          md->report.active, md->report.kkt, mu);
+          model_report(md)->active, model_report(md)->kkt, mu);
   output_reactions(f, md, &ms);
   output_objectives_summary(f, run->objective, J.value, start);
   output_friction(f, md);

@@ -34,7 +34,7 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st);
 /* solution.vtu in the sub-folder sub: the state of md at X */
 int output_vtu(Output *o, const char *sub, const Model *md, const double *X,
                Status *st);
-#line 1425 "paper/output.nw"
+#line 1426 "paper/output.nw"
 /* the lines of a summary that the friction law adds (none without) */
 void output_friction(FILE *f, const Model *md);
 /* the lines of a summary of the model's state: the reactions of its held

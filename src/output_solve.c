@@ -1,14 +1,14 @@
-#line 1415 "paper/output.nw"
+#line 1416 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1444 "paper/output.nw"
+#line 1445 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
-  const Problem *p = md->problem;
+  const Problem *p = model_problem(md);
   Model_summary ms;
   Objective_values J;
   int rc = output_state(o, "", md, X, st);
@@ -20,25 +20,25 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "scene %s\nstate_solver %s\nmodel %s\n", run->scene,
           run->state_solver, problem_model_name(p->model));
   fprintf(f, "N %d\nM %d\nR %d\ntriangles %d\ndofs %d\ncontact_nodes %d\n",
-          p->N, p->M, p->R, md->mesh->ntri, md->dofs->n, md->dofs->nc);
-  fprintf(f, "energy %.15g\n", md->energy);
+          p->N, p->M, p->R, model_mesh(md)->ntri, model_dofs(md)->n, model_dofs(md)->nc);
+  fprintf(f, "energy %.15g\n", model_energy(md));
   for (int k = 0; objective_names[k]; k++)     /* E: above; undefined: no line */
     if (!objective_is_energy(k) && !isnan(J.value[k]))
       fprintf(f, "%s %.15g\n", objective_names[k], J.value[k]);
-  fprintf(f, "kkt_residual %.3e\niterations %d\n", md->report.kkt, md->report.iterations);
-  fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", md->report.active,
-          md->seconds);
+  fprintf(f, "kkt_residual %.3e\niterations %d\n", model_report(md)->kkt, model_report(md)->iterations);
+  fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", model_report(md)->active,
+          model_seconds(md));
   output_reactions(f, md, &ms);
   output_friction(f, md);
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1488 "paper/output.nw"
+#line 1489 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
   for (int s = 0; s < SIDE_COUNT; s++) {
-    Bc_kind kind = md->problem->side[s].kind;
+    Bc_kind kind = model_problem(md)->side[s].kind;
     if (kind == BC_CLAMPED || kind == BC_ROLLER)
       fprintf(f, "reaction_%s_x1 %.15g\nreaction_%s_x2 %.15g\n", side[s],
               ms->reaction[s][0], side[s], ms->reaction[s][1]);
@@ -47,7 +47,7 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1526 "paper/output.nw"
+#line 1527 "paper/output.nw"
 int output_objectives(const Model *md, double q, Objective_values *J, Status *st)
 {
   for (int k = 0; objective_names[k]; k++) {
@@ -59,30 +59,32 @@ int output_objectives(const Model *md, double q, Objective_values *J, Status *st
   }
   return STATUS_OK;
 }
-#line 1544 "paper/output.nw"
+#line 1545 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
-  const Problem *p = md->problem;
+  const Problem *p = model_problem(md);
   char v[STATUS_NUMBER];
   if (p->contact == CONTACT_FRICTIONLESS) return;
   fprintf(f, "contact %s\n", problem_contact_name(p->contact));
   if (p->contact == CONTACT_TRESCA)
     fprintf(f, "slip_bound %s\n", status_number(p->slip_bound, v));
   else fprintf(f, "friction %s\n", status_number(p->friction, v));
-  fprintf(f, "friction_energy %.15g\n", md->friction_energy);
+  fprintf(f, "friction_energy %.15g\n", model_friction_energy(md));
   if (p->contact == CONTACT_COULOMB)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
-            md->fixed_point_iterations, md->fixed_point_residual);
+            model_fixed_point_iterations(md), model_fixed_point_residual(md));
 }
-#line 1563 "paper/output.nw"
+#line 1564 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
   snprintf(tmp, sizeof tmp, "%s.partial", path);
   FILE *f = fopen(tmp, "w");
   if (!f) return output_errno(st, errno, path, "cannot write");
-  int ok = cholmod_l_write_sparse(f, md->A, NULL, NULL, md->cm) >= 0;
-  int memory = !ok && md->cm->status == CHOLMOD_OUT_OF_MEMORY;
+  /* CHOLMOD's prototype wants a writable A; it only reads it */
+  cholmod_sparse *A = (cholmod_sparse *) model_stiffness(md);
+  int ok = cholmod_l_write_sparse(f, A, NULL, NULL, model_cholmod(md)) >= 0;
+  int memory = !ok && model_cholmod(md)->status == CHOLMOD_OUT_OF_MEMORY;
   ok = !ferror(f) && ok;    /* CHOLMOD does not check every fprintf */
   ok = !fclose(f) && ok;
   if (ok && rename(tmp, path)) {
@@ -97,7 +99,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1597 "paper/output.nw"
+#line 1600 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
@@ -109,7 +111,7 @@ static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
           objective_symbol(J), unit, unit);
   for (int k = 0; k < gc->ncheck; k++) {
     int i = gc->check[k];
-    fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, md->mesh->xy[2 * i],
+    fprintf(f, "%d %.10g %.15g %.15g %.3e\n", i, model_mesh(md)->xy[2 * i],
             gc->G[i], gc->fd[i], gc->err[i]);
   }
   return output_close(o, f, st);
@@ -118,7 +120,7 @@ static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st)
 {
-  const Problem *p = md->problem;
+  const Problem *p = model_problem(md);
   Objective J = gc->objective ? *gc->objective : objective_default();
   double value;
   int rc = objective_value(md, &J, &value, st);
@@ -128,7 +130,7 @@ int output_gradcheck(Output *o, const Output_run *run, const Model *md,
   fprintf(f, "scene %s\nmodel %s\nN %d\nenergy %.15g\n"
              "objective %s\nobjective_value %.15g\n"
              "max_relative_error %.3e\nworst_node %d\nnodes_checked %d\n",
-          run->scene, problem_model_name(p->model), p->N, md->energy,
+          run->scene, problem_model_name(p->model), p->N, model_energy(md),
           objective_name(J.kind), value,
           gc->err[gc->worst], gc->worst, gc->ncheck);
   output_friction(f, md);

@@ -8,32 +8,32 @@ static int output_shape(Output *o, const char *sub, const Model *md,
   FILE *f = output_open_in(o, sub, "shape.dat", st);
   if (!f) return st->code;
   fprintf(f, "# x1[m] alpha[m]\n");
-  for (int i = 0; i < md->mesh->ncol; i++)
-    fprintf(f, "%.10g %.15g\n", md->mesh->xy[2 * i], X[i]);
+  for (int i = 0; i < model_mesh(md)->ncol; i++)
+    fprintf(f, "%.10g %.15g\n", model_mesh(md)->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
 #line 1035 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
   FILE *f = output_open_in(o, sub, "contact.dat", st);
   if (!f) return st->code;
   fprintf(f, "# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]%s\n",
           d->nt ? " u1[m] Tt[N/m]" : "");
   for (int c = 0, k = 0; c < d->nc; c++) {
     int i = d->contact_col[c];
-    double u2 = md->Q[d->contact[c]];
-    fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g", md->mesh->xy[2 * i],
-            X[i], u2, u2 + X[i], md->T[c],
+    double u2 = model_state(md)[d->contact[c]];
+    fprintf(f, "%.10g %.15g %.15g %.15g %.15g %.15g", model_mesh(md)->xy[2 * i],
+            X[i], u2, u2 + X[i], model_forces(md)[c],
             model_pressure(md, c));
     
 #line 1059 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
-  fprintf(f, " %.15g %.15g", here ? md->Q[d->tangent[k]] : 0.0,
-          here ? md->T[d->nc + k] : 0.0);
+  fprintf(f, " %.15g %.15g", here ? model_state(md)[d->tangent[k]] : 0.0,
+          here ? model_forces(md)[d->nc + k] : 0.0);
 }
 #line 1050 "paper/output.nw"
     fputc('\n', f);
@@ -44,7 +44,7 @@ if (d->nt) {
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
-  const Mesh *m = md->mesh;
+  const Mesh *m = model_mesh(md);
   FILE *f = output_open_in(o, sub, "nodes.dat", st);
   if (!f) return st->code;
   fprintf(f, "# node column row x1[m] x2[m] u1[m] u2[m]\n");
@@ -58,7 +58,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
-  const Mesh *m = md->mesh;
+  const Mesh *m = model_mesh(md);
   FILE *f = output_open_in(o, sub, "triangles.dat", st);
   if (!f) return st->code;
   fprintf(f, "# x1[m] x2[m] u1[m] u2[m]: each triangle closed, blank-separated\n");
@@ -72,7 +72,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 1395 "paper/output.nw"
+#line 1396 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {

@@ -33,15 +33,15 @@ static size_t vtu_bytes(const Vtu_array *a)
 #line 1209 "paper/output.nw"
 double output_u(const Model *md, int node, int c)
 {
-  int k = md->dofs->unknown[2 * node + c];
-  return k < 0 ? 0.0 : md->Q[k];
+  int k = model_dofs(md)->unknown[2 * node + c];
+  return k < 0 ? 0.0 : model_state(md)[k];
 }
 #line 1223 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
   (void) which;
-  for (int k = 0; k < s->md->mesh->nnodes; k++) {
+  for (int k = 0; k < model_mesh(s->md)->nnodes; k++) {
     v[3 * k] = output_u(s->md, k, 0);
     v[3 * k + 1] = output_u(s->md, k, 1);
     v[3 * k + 2] = 0;
@@ -51,12 +51,12 @@ static void vtu_displacement(const Vtu_state *s, int which, void *values)
 /* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
 static void vtu_contact(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = s->md->dofs;
+  const Dofs *d = model_dofs(s->md);
   double *v = values;
-  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
+  memset(v, 0, model_mesh(s->md)->nnodes * sizeof *v);
   for (int c = 0; c < d->nc; c++) {
     int i = d->contact_col[c];
-    v[i] = which == 0 ? s->md->Q[d->contact[c]] + s->X[i]
+    v[i] = which == 0 ? model_state(s->md)[d->contact[c]] + s->X[i]
                       : model_pressure(s->md, c);
   }
 }
@@ -65,39 +65,40 @@ static void vtu_contact_node(const Vtu_state *s, int which, void *values)
 {
   uint8_t *v = values;
   (void) which;
-  memset(v, 0, s->md->mesh->nnodes);
-  for (int c = 0; c < s->md->dofs->nc; c++) v[s->md->dofs->contact_col[c]] = 1;
+  const Dofs *d = model_dofs(s->md);
+  memset(v, 0, model_mesh(s->md)->nnodes);
+  for (int c = 0; c < d->nc; c++) v[d->contact_col[c]] = 1;
 }
 
 /* the nodal friction force T_t [N/m], 0 where u1 is held */
 static void vtu_tangential(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = s->md->dofs;
+  const Dofs *d = model_dofs(s->md);
   double *v = values;
   (void) which;
-  memset(v, 0, s->md->mesh->nnodes * sizeof *v);
-  for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = s->md->T[d->nc + k];
+  memset(v, 0, model_mesh(s->md)->nnodes * sizeof *v);
+  for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = model_forces(s->md)[d->nc + k];
 }
-#line 1272 "paper/output.nw"
+#line 1273 "paper/output.nw"
 static void vtu_stress(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
-  for (int t = 0; t < s->md->mesh->ntri; t++) v[t] = s->stress[5 * t + which];
+  for (int t = 0; t < model_mesh(s->md)->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 1284 "paper/output.nw"
+#line 1285 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
-  const double *xy = s->md->mesh->xy;
+  const double *xy = model_mesh(s->md)->xy;
   double *v = values;
   (void) which;
-  for (int k = 0; k < s->md->mesh->nnodes; k++)
+  for (int k = 0; k < model_mesh(s->md)->nnodes; k++)
     v[3 * k] = xy[2 * k], v[3 * k + 1] = xy[2 * k + 1], v[3 * k + 2] = 0;
 }
 
 /* which 0: the connectivity, 3 vertices per triangle; 1: the offsets */
 static void vtu_cells(const Vtu_state *s, int which, void *values)
 {
-  const Mesh *m = s->md->mesh;
+  const Mesh *m = model_mesh(s->md);
   int32_t *v = values;
   for (int t = 0; t < m->ntri; t++)
     if (which == 1) v[t] = 3 * (t + 1);
@@ -107,7 +108,7 @@ static void vtu_cells(const Vtu_state *s, int which, void *values)
 static void vtu_types(const Vtu_state *s, int which, void *values)
 {
   (void) which;
-  memset(values, 5, s->md->mesh->ntri);   /* VTK_TRIANGLE */
+  memset(values, 5, model_mesh(s->md)->ntri);   /* VTK_TRIANGLE */
 }
 #line 1182 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
@@ -115,13 +116,13 @@ static const char *const vtu_stress_names[5] =
 
 static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
 {
-  size_t np = md->mesh->nnodes, nt = md->mesh->ntri, d = sizeof(double);
+  size_t np = model_mesh(md)->nnodes, nt = model_mesh(md)->ntri, d = sizeof(double);
   int n = 0;
   a[n++] = (Vtu_array) { "PointData", "displacement", "Float64", 3, np, d, 0, vtu_displacement };
   a[n++] = (Vtu_array) { "PointData", "gap", "Float64", 1, np, d, 0, vtu_contact };
   a[n++] = (Vtu_array) { "PointData", "pressure", "Float64", 1, np, d, 1, vtu_contact };
   a[n++] = (Vtu_array) { "PointData", "contact_node", "UInt8", 1, np, 1, 0, vtu_contact_node };
-  if (md->dofs->nt)
+  if (model_dofs(md)->nt)
     a[n++] = (Vtu_array) { "PointData", "tangential_force", "Float64", 1, np, d,
                            0, vtu_tangential };
   for (int k = 0; k < 5; k++)
@@ -132,7 +133,7 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 1313 "paper/output.nw"
+#line 1314 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -159,7 +160,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 1344 "paper/output.nw"
+#line 1345 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -171,12 +172,12 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1361 "paper/output.nw"
+#line 1362 "paper/output.nw"
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
   int n = vtu_arrays(md, a);
-  size_t most = 0, nt = md->mesh->ntri;
+  size_t most = 0, nt = model_mesh(md)->ntri;
   for (int k = 0; k < n; k++) most = vtu_bytes(&a[k]) > most ? vtu_bytes(&a[k]) : most;
   Vtu_state s = { md, X, malloc(5 * nt * sizeof(double)) };
   void *values = malloc(most);
@@ -185,12 +186,12 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
     return status_set(st, STATUS_MEMORY, "solution.vtu: out of memory");
   }
   for (size_t t = 0; t < nt; t++) model_stress(md, (int) t, s.stress + 5 * t);
-  vtu_header(f, md->mesh, a, n);
+  vtu_header(f, model_mesh(md), a, n);
   vtu_data(f, &s, a, n, values);
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1382 "paper/output.nw"
+#line 1383 "paper/output.nw"
 int output_vtu(Output *o, const char *sub, const Model *md,
                const double *X, Status *st)
 {

@@ -25,11 +25,11 @@
    contact number c, the contact diagonals multiplied by 1 + shift */
 static gsl_matrix *dense_schur(const Model *md, double shift)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
   int n = d->n, nc = d->nc, ni = n - nc, *is_c = calloc(n, sizeof *is_c), *pos = malloc(n * sizeof *pos);
   gsl_matrix *A = gsl_matrix_calloc(n, n);
-  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
-  const double *Ax = md->A->x;
+  const Sparse_index *Ap = model_stiffness(md)->p, *Ai = model_stiffness(md)->i;
+  const double *Ax = model_stiffness(md)->x;
   for (int j = 0; j < n; j++)
     for (Sparse_index k = Ap[j]; k < Ap[j + 1]; k++) gsl_matrix_set(A, Ai[k], j, Ax[k]);
   for (int c = 0; c < nc; c++) {
@@ -74,7 +74,7 @@ static void compare(const char *path, int N, Qp_method state)
   cs.s.solver = qp_options_default(state);
   case_model(&cs);
   Model *md = cs.md;
-  int n1 = N + 1, nc = md->dofs->nc;
+  int n1 = N + 1, nc = model_dofs(md)->nc;
   double *S = malloc((size_t) n1 * n1 * sizeof *S), err = 0, scale = 0;
   const char *sn = qp_method_name(state);
   check(case_solve(&cs) == 0, "%s N = %d %s: solve", path, N, sn);
@@ -83,7 +83,8 @@ static void compare(const char *path, int N, Qp_method state)
   gsl_matrix *ref = dense_schur(md, 1e-6);
   for (int c = 0; c < nc; c++)
     for (int e = 0; e < nc; e++) {
-      double v = S[(size_t) md->dofs->contact_col[c] * n1 + md->dofs->contact_col[e]];
+      const int *col = model_dofs(md)->contact_col;
+      double v = S[(size_t) col[c] * n1 + col[e]];
       err = fmax(err, fabs(v - gsl_matrix_get(ref, c, e)));
       scale = fmax(scale, fabs(gsl_matrix_get(ref, c, e)));
     }
@@ -108,7 +109,7 @@ static void floating(void)
   case_solve(&cs);
   Model *md = cs.md;
   gsl_matrix *S = dense_schur(md, 0);
-  int nc = md->dofs->nc;
+  int nc = model_dofs(md)->nc;
   double rigid = 0, scale = 0;
   for (int r = 0; r < nc; r++) {
     double sum = 0;
@@ -142,7 +143,8 @@ static void analysis_fails(void)
   void *(*c)(size_t, size_t) = SuiteSparse_config.calloc_func;
   SuiteSparse_config.malloc_func = no_malloc, SuiteSparse_config.calloc_func = no_calloc;
   st.code = STATUS_OK, st.msg[0] = 0;
-  Condense *cd = condense_alloc(md->A, md->dofs->nc, md->dofs->contact, NULL, &cs.cm, &st);
+  const Dofs *d = model_dofs(md);
+  Condense *cd = condense_alloc(model_stiffness(md), d->nc, d->contact, NULL, &cs.cm, &st);
   SuiteSparse_config.malloc_func = m, SuiteSparse_config.calloc_func = c;
   check(!cd && st.code == STATUS_MEMORY && strstr(st.msg, "CHOLMOD failed to analyse A: out of memory "
         "(CHOLMOD status -2, CHOLMOD_OUT_OF_MEMORY)"),

@@ -60,8 +60,8 @@ static void differences(const char *F, const Objective *o)
   Case c;
   const char *name = o ? objective_name(o->kind) : "J_F";
   if (!check(open_coulomb(&c, F, 0, NULL) == 0, "F = %s: solved: %s", F, c.st.msg)) return;
-  int n = c.s.problem.N + 1, its = c.md->fixed_point_iterations, kept;
-  double res = c.md->fixed_point_residual, Gs[64], fixed_err = 0;
+  int n = c.s.problem.N + 1, its = model_fixed_point_iterations(c.md), kept;
+  double res = model_fixed_point_residual(c.md), Gs[64], fixed_err = 0;
   Objective e = objective_default();
   int rc = objective_gradient_fixed(c.md, o ? o : &e, NULL, NULL, NULL, Gs, NULL, &c.st);
   Grad_check *gc = grad_check_new(c.s.problem.N, &c.st);

@@ -35,22 +35,23 @@ static void test_no_friction(const char *refine)
   open_case(&f, 1, ov0), open_case(&t, 3, ovt), open_case(&c, 3, ovc);
   if (check(!f.rc && !t.rc && !c.rc, "refine %s: the three solves succeed: %s%s%s",
             refine, f.st.msg, t.st.msg, c.st.msg)) {
-    int n = f.md->dofs->n, nc = f.md->dofs->nc;
-    double Q = max_abs(f.md->Q, n), T = max_abs(f.md->T, nc), E = fabs(f.md->energy);
+    int n = model_dofs(f.md)->n, nc = model_dofs(f.md)->nc;
+    double Q = max_abs(model_state(f.md), n), T = max_abs(model_forces(f.md), nc),
+           E = fabs(model_energy(f.md));
     for (Case *x = &t; x; x = x == &t ? &c : NULL) {
       const char *law = x == &t ? "tresca g = 0" : "coulomb F = 0";
-      check(fabs(x->md->energy - f.md->energy) <= 1e-12 * E
-            && max_diff(x->md->Q, f.md->Q, n) <= 1e-12 * Q
-            && max_diff(x->md->T, f.md->T, nc) <= 1e-12 * T,
+      check(fabs(model_energy(x->md) - model_energy(f.md)) <= 1e-12 * E
+            && max_diff(model_state(x->md), model_state(f.md), n) <= 1e-12 * Q
+            && max_diff(model_forces(x->md), model_forces(f.md), nc) <= 1e-12 * T,
             "refine %s: %s is frictionless (4.3): E %.1e, Q %.1e, T %.1e relative", refine,
-            law, fabs(x->md->energy - f.md->energy) / E,
-            max_diff(x->md->Q, f.md->Q, n) / Q, max_diff(x->md->T, f.md->T, nc) / T);
-      check(x->md->dofs->nt > 0 && x->md->friction_energy == 0
-            && max_abs(x->md->T + nc, x->md->dofs->nt) <= 1e-12 * T,
+            law, fabs(model_energy(x->md) - model_energy(f.md)) / E,
+            max_diff(model_state(x->md), model_state(f.md), n) / Q, max_diff(model_forces(x->md), model_forces(f.md), nc) / T);
+      check(model_dofs(x->md)->nt > 0 && model_friction_energy(x->md) == 0
+            && max_abs(model_forces(x->md) + nc, model_dofs(x->md)->nt) <= 1e-12 * T,
             "refine %s: %s: %d tangential unknowns, no friction force, no work",
-            refine, law, x->md->dofs->nt);
+            refine, law, model_dofs(x->md)->nt);
     }
-    check(f.md->dofs->nt == 0, "refine %s: frictionless: no tangential unknown "
+    check(model_dofs(f.md)->nt == 0, "refine %s: frictionless: no tangential unknown "
           "is listed", refine);
   }
   close_case(&f), close_case(&t), close_case(&c);
@@ -185,17 +186,18 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
   if (!check(open_case(&k, 6, ov) == 0, "N = 4, %s, P1 = %s, g = %s: solved: %s",
              bcs, P1, g, k.st.msg)) { close_case(&k); return; }
   Model *md = k.md;
-  Enum e = { md->dofs->n, md->dofs->nc, md->dofs->nt, gsl_matrix_calloc(md->dofs->n, md->dofs->n),
-             md->b, md->lo, md->slip, md->dofs->contact, md->dofs->tangent,
-             malloc(md->dofs->n * sizeof(double)),
-             malloc((md->dofs->nc + md->dofs->nt) * sizeof(double)), 0, 0,
+  const Dofs *d = model_dofs(md);
+  Enum e = { d->n, d->nc, d->nt, gsl_matrix_calloc(d->n, d->n),
+             model_load(md), model_bounds(md), model_slip(md), d->contact, d->tangent,
+             malloc(d->n * sizeof(double)),
+             malloc((d->nc + d->nt) * sizeof(double)), 0, 0,
              0, INFINITY, INFINITY, 0 };
-  const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
-  const double *Ax = md->A->x;
+  const Sparse_index *Ap = model_stiffness(md)->p, *Ai = model_stiffness(md)->i;
+  const double *Ax = model_stiffness(md)->x;
   for (int j = 0; j < e.n; j++)
     for (Sparse_index q = Ap[j]; q < Ap[j + 1]; q++) gsl_matrix_set(e.A, Ai[q], j, Ax[q]);
   int m = e.nc + e.nt;
-  double Tmax = max_abs(md->T, m), umax = max_abs(md->Q, e.n);
+  double Tmax = max_abs(model_forces(md), m), umax = max_abs(model_state(md), e.n);
   enumerate(&e, 1e-9 * Tmax, 1e-9 * umax);
   check(e.rc_refused < 1e-12 && e.rc_kept >= 10 * RCOND_MIN, "N = 4, %s, "
         "P1 = %s, g = %s: the %d combinations refused as singular have rcond "
@@ -212,11 +214,11 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
       J += e.x[i] * (0.5 * Ax_i - e.b[i]);
     }
     for (int t = 0; t < e.nt; t++) J += e.slip[t] * fabs(e.x[e.it[t]]);
-    check(fabs(J - md->energy) <= 1e-10 * fabs(J)
-          && max_diff(e.T, md->T, m) <= 1e-10 * max_abs(e.T, m),
+    check(fabs(J - model_energy(md)) <= 1e-10 * fabs(J)
+          && max_diff(e.T, model_forces(md), m) <= 1e-10 * max_abs(e.T, m),
           "N = 4, %s, P1 = %s, g = %s: E and the forces (normal and tangential) "
           "are those of the enumeration: %.1e, %.1e", bcs, P1, g,
-          fabs(J - md->energy) / fabs(J), max_diff(e.T, md->T, m) / max_abs(e.T, m));
+          fabs(J - model_energy(md)) / fabs(J), max_diff(e.T, model_forces(md), m) / max_abs(e.T, m));
     for (int t = 0; t < e.nt; t++) {
       int s = fabs(e.x[e.it[t]]) > 1e-9 * umax;
       *slip += s, *stick += !s;
@@ -253,12 +255,12 @@ static void test_monotone(void)
     Case c;
     ok &= open_case(&c, 3, ov) == 0;
     if (!c.rc) {
-      mono &= c.md->energy >= last - 1e-12 * fabs(last);
-      last = c.md->energy;
-      double kkt = qp_kkt(&c.md->qp, c.md->Q, NULL);
-      check(kkt <= c.s.solver.tol && c.md->report.kkt <= c.s.solver.tol,
+      mono &= model_energy(c.md) >= last - 1e-12 * fabs(last);
+      last = model_energy(c.md);
+      double kkt = qp_kkt(model_qp(c.md), model_state(c.md), NULL);
+      check(kkt <= c.s.solver.tol && model_report(c.md)->kkt <= c.s.solver.tol,
             "g = %s: qp_kkt with stick and slip %.1e <= tol (solver: %.1e)",
-            g[k], kkt, c.md->report.kkt);
+            g[k], kkt, model_report(c.md)->kkt);
     }
     close_case(&c);
   }
@@ -270,15 +272,16 @@ static void test_large_g(void)
   char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=1e12" };
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "g = 1e12: solved: %s", c.st.msg)) {
-    const Dofs *d = c.md->dofs;
+    const Dofs *d = model_dofs(c.md);
+    const double *Q = model_state(c.md), *lo = model_bounds(c.md),
+                 *T = model_forces(c.md), *slip = model_slip(c.md);
     int touching = 0, stuck = 0;
     for (int k = 0, j = 0; k < d->nt; k++) {
       while (j < d->nc && d->contact_col[j] < d->tangent_col[k]) j++;
       if (j == d->nc || d->contact_col[j] != d->tangent_col[k]) continue;
-      if (c.md->Q[d->contact[j]] <= c.md->lo[j] && c.md->T[j] > 0) {
+      if (Q[d->contact[j]] <= lo[j] && T[j] > 0) {
         touching++;
-        stuck += c.md->Q[d->tangent[k]] == 0
-              && fabs(c.md->T[d->nc + k]) < c.md->slip[k];
+        stuck += Q[d->tangent[k]] == 0 && fabs(T[d->nc + k]) < slip[k];
       }
     }
     check(touching > 0 && stuck == touching, "g = 1e12: every node in contact "
@@ -296,11 +299,11 @@ static void test_scale(void)
   Case a, b;
   open_case(&a, 3, ov1), open_case(&b, 5, ov2);
   if (check(!a.rc && !b.rc, "scaled by 1e7: both solved"))
-    check(a.md->report.iterations == b.md->report.iterations
-          && fabs(b.md->energy / 1e7 - a.md->energy) <= 1e-9 * fabs(a.md->energy),
+    check(model_report(a.md)->iterations == model_report(b.md)->iterations
+          && fabs(model_energy(b.md) / 1e7 - model_energy(a.md)) <= 1e-9 * fabs(model_energy(a.md)),
           "scaled by 1e7: %d and %d Newton steps, E / 1e7 to %.1e",
-          a.md->report.iterations, b.md->report.iterations,
-          fabs(b.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy));
+          model_report(a.md)->iterations, model_report(b.md)->iterations,
+          fabs(model_energy(b.md) / 1e7 - model_energy(a.md)) / fabs(model_energy(a.md)));
   close_case(&a), close_case(&b);
 }
 
@@ -312,25 +315,25 @@ static void test_coulomb(const char *F)
   snprintf(pf, sizeof pf, "contact.friction=%s", F);
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "coulomb F = %s: converged: %s", F, c.st.msg)) {
-    const Dofs *d = c.md->dofs;
-    double f = atof(F), Tmax = max_abs(c.md->T, d->nc), umax = max_abs(c.md->Q, d->n);
+    const Dofs *d = model_dofs(c.md);
+    double f = atof(F), Tmax = max_abs(model_forces(c.md), d->nc), umax = max_abs(model_state(c.md), d->n);
     double over = 0, miss = 0;
     int slipping = 0;
     for (int k = 0, j = 0; k < d->nt; k++) {
       while (j < d->nc && d->contact_col[j] < d->tangent_col[k]) j++;
-      double Tn = j < d->nc && d->contact_col[j] == d->tangent_col[k] ? c.md->T[j] : 0;
-      double Tt = fabs(c.md->T[d->nc + k]);
+      double Tn = j < d->nc && d->contact_col[j] == d->tangent_col[k] ? model_forces(c.md)[j] : 0;
+      double Tt = fabs(model_forces(c.md)[d->nc + k]);
       over = fmax(over, Tt - f * Tn);
-      if (fabs(c.md->Q[d->tangent[k]]) > 1e-9 * umax)
+      if (fabs(model_state(c.md)[d->tangent[k]]) > 1e-9 * umax)
         slipping++, miss = fmax(miss, fabs(Tt - f * Tn));
     }
     check(over <= 1e-8 * Tmax && miss <= 1e-8 * Tmax && slipping > 0,
           "coulomb F = %s: |Tt| <= F Tn to %.1e, equality at the %d slipping "
           "nodes to %.1e (of max T), after %d fixed-point iterations", F,
-          over / Tmax, slipping, miss / Tmax, c.md->fixed_point_iterations);
-    check(c.md->fixed_point_residual <= c.s.solver.tol,
+          over / Tmax, slipping, miss / Tmax, model_fixed_point_iterations(c.md));
+    check(model_fixed_point_residual(c.md) <= c.s.solver.tol,
           "coulomb F = %s: the normal forces changed by %.1e <= tol at the end",
-          F, c.md->fixed_point_residual);
+          F, model_fixed_point_residual(c.md));
   }
   close_case(&c);
 }
@@ -346,10 +349,10 @@ static void test_gradcheck(const char *g, const char *shape)
     close_case(&c);
     return;
   }
-  const Dofs *d = c.md->dofs;
+  const Dofs *d = model_dofs(c.md);
   int stick = 0, slip = 0;
   for (int k = 0; k < d->nt; k++) {
-    double u = fabs(c.md->Q[d->tangent[k]]);
+    double u = fabs(model_state(c.md)[d->tangent[k]]);
     stick += u == 0, slip += u > 0;
   }
   Grad_check *gc = grad_check_new(c.s.problem.N, &c.st);
@@ -367,12 +370,12 @@ static void one_sided(Model *md, double *X, int i, double h, double d[4])
 {
   Status st;
   double x0 = X[i], E0;
-  model_solve(md, X, &st), E0 = md->energy;
+  model_solve(md, X, &st), E0 = model_energy(md);
   for (int k = 0; k < 4; k++) {
     double s = (k % 2 ? -1 : 1) * (k < 2 ? h : h / 10);
     X[i] = x0 + s;
     model_solve(md, X, &st);
-    d[k] = (md->energy - E0) / s;
+    d[k] = (model_energy(md) - E0) / s;
   }
   X[i] = x0;
   model_solve(md, X, &st);
@@ -386,10 +389,10 @@ static void test_threshold(void)
   Case c;
   if (!check(open_case(&c, 2, ov) == 0, "threshold: solved")) { close_case(&c); return; }
   Problem *p = &c.s.problem;
-  const Dofs *d = c.md->dofs;
+  const Dofs *d = model_dofs(c.md);
   int k = -1;
   for (int j = 0; j + 1 < d->nt; j++)      /* a stick node beside a slipping one */
-    if (c.md->Q[d->tangent[j]] == 0 && c.md->Q[d->tangent[j + 1]] != 0) k = j;
+    if (model_state(c.md)[d->tangent[j]] == 0 && model_state(c.md)[d->tangent[j + 1]] != 0) k = j;
   if (!check(k >= 0, "threshold: a sticking node beside a slipping one")) {
     close_case(&c);
     return;
@@ -398,17 +401,17 @@ static void test_threshold(void)
   for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; it++) {
     p->slip_bound = 0.5 * (lo + hi);
     model_solve(c.md, c.s.alpha0, &c.st);
-    if (c.md->Q[d->tangent[k]] == 0) hi = p->slip_bound; else lo = p->slip_bound;
+    if (model_state(c.md)[d->tangent[k]] == 0) hi = p->slip_bound; else lo = p->slip_bound;
   }
   p->slip_bound = hi;
   model_solve(c.md, c.s.alpha0, &c.st);
   int i = d->tangent_col[k], N = p->N;
   double *G = malloc((N + 1) * sizeof *G), *X = malloc((N + 1) * sizeof *X), D[4];
   grad_energy(c.md, G, &c.st);
-  double Tt = fabs(c.md->T[d->nc + k]), Gmax = max_abs(G, N + 1);
-  check(c.md->Q[d->tangent[k]] == 0 && Tt >= (1 - 1e-6) * c.md->slip[k],
+  double Tt = fabs(model_forces(c.md)[d->nc + k]), Gmax = max_abs(G, N + 1);
+  check(model_state(c.md)[d->tangent[k]] == 0 && Tt >= (1 - 1e-6) * model_slip(c.md)[k],
         "threshold: node %d sticks with |Tt| = g omega to %.1e (g = %.12g Pa)", i,
-        1 - Tt / c.md->slip[k], p->slip_bound);
+        1 - Tt / model_slip(c.md)[k], p->slip_bound);
   memcpy(X, c.s.alpha0, (N + 1) * sizeof *X);
   double h = 1e-4 * p->C0;
   one_sided(c.md, X, i, h, D);

@@ -19,7 +19,7 @@ static double energy(Model *md, double *X)
 {
   Status st;
   if (model_solve(md, X, &st)) { printf("# %s\n", st.msg); return NAN; }
-  return md->energy;
+  return model_energy(md);
 }
 
 static void weakly_active(const char *path, Plane_model model)
@@ -38,28 +38,28 @@ static void weakly_active(const char *path, Plane_model model)
   memcpy(X, cs.s.alpha0, (P->N + 1) * sizeof *X);
   energy(md, X);
   int i = -1, c = -1;                 /* the last free node before the zone */
-  for (int k = 0; k < md->dofs->nc; k++) {
-    int col = md->dofs->contact_col[k];
-    if (md->Q[md->dofs->contact[k]] > -X[col] && k + 1 < md->dofs->nc
-        && md->Q[md->dofs->contact[k + 1]] <= -X[col + 1]) { i = col; c = k; }
+  for (int k = 0; k < model_dofs(md)->nc; k++) {
+    int col = model_dofs(md)->contact_col[k];
+    if (model_state(md)[model_dofs(md)->contact[k]] > -X[col] && k + 1 < model_dofs(md)->nc
+        && model_state(md)[model_dofs(md)->contact[k + 1]] <= -X[col + 1]) { i = col; c = k; }
   }
   if (!check(i >= 0, "%s: a free node next to the contact zone", path)) return;
   double hi = X[i], lo = 0;             /* free at hi, pressing at lo = 0 */
   for (int it = 0; it < 200 && hi - lo > 1e-15 * P->C0; it++) {
     X[i] = 0.5 * (lo + hi);
     energy(md, X);
-    if (md->Q[md->dofs->contact[c]] > -X[i]) hi = X[i]; else lo = X[i];
+    if (model_state(md)[model_dofs(md)->contact[c]] > -X[i]) hi = X[i]; else lo = X[i];
   }
   X[i] = hi;
   energy(md, X);
   grad_energy(md, G, &st);
-  double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0, Gmax = 0;
-  for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
+  double gap = model_state(md)[model_dofs(md)->contact[c]] + X[i], Tmax = 0, Gmax = 0;
+  for (int k = 0; k < model_dofs(md)->nc; k++) Tmax = fmax(Tmax, model_forces(md)[k]);
   for (int k = 0; k <= P->N; k++) Gmax = fmax(Gmax, fabs(G[k]));
-  check(gap <= 1e-12 * P->C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+  check(gap <= 1e-12 * P->C0 && fabs(model_forces(md)[c]) <= 1e-6 * Tmax,
         "%s: node %d touches (gap %.1e m) with force %.1e max T (4.6): weakly active",
-        path, i, gap, fabs(md->T[c]) / Tmax);
-  double x0 = X[i], E0 = md->energy, h = 1e-5 * P->C0, Ep, Ep2, Em, Em2;
+        path, i, gap, fabs(model_forces(md)[c]) / Tmax);
+  double x0 = X[i], E0 = model_energy(md), h = 1e-5 * P->C0, Ep, Ep2, Em, Em2;
   X[i] = x0 + h; Ep = energy(md, X);
   X[i] = x0 + 2 * h; Ep2 = energy(md, X);
   X[i] = x0 - h; Em = energy(md, X);
@@ -116,9 +116,9 @@ static void check_grad_check(const char *path)
   if (cs.s.alpha0[0] == 0)
     check(gc->err[0] < 1e-6, "%s: node 0 on the foundation (alpha_0 = 0), "
           "one-sided difference of (4.8): error %.2e", path, gc->err[0]);
-  check(fabs(md->energy - fresh->energy) <= 1e-12 * fabs(fresh->energy),
+  check(fabs(model_energy(md) - model_energy(fresh)) <= 1e-12 * fabs(model_energy(fresh)),
         "%s: the model is left solved at alpha0 (E %.15g, fresh %.15g)", path,
-        md->energy, fresh->energy);
+        model_energy(md), model_energy(fresh));
   Grad_check *other = grad_check_new(N / 2, &st);
   check(grad_check(md, cs.s.alpha0, other, NULL, NULL, &st) == STATUS_INPUT,
         "%s: a check made for another N is refused: %s", path, st.msg);

@@ -61,8 +61,8 @@ static void curvature(void)
   int ok = !design_project(&B, s->alpha0, X, NULL, &st)
            && !opt_minimize(md, &B, &s->optimizer, X, NULL, NULL, &r, &st)
            && !model_solve(md, X, &st) && !model_contact_stiffness(md, S, &st);
-  for (int c = 0; ok && c < md->dofs->nc; c++)
-    active += md->Q[md->dofs->contact[c]] <= md->lo[c] && md->T[c] > 0;
+  for (int c = 0; ok && c < model_dofs(md)->nc; c++)
+    active += model_state(md)[model_dofs(md)->contact[c]] <= model_bounds(md)[c] && model_forces(md)[c] > 0;
   ok = ok && !fd_hessian(md, X, n, 1e-7 * s->problem.C0, H);
   if (check(ok, "5.1: optimum by Algorithm 4.1, S and the difference Hessian of (4.8) (%d nodes in contact)", active)) {
     gsl_matrix_view Hv = gsl_matrix_view_array(H, n, n), Sv = gsl_matrix_view_array(S, n, n);
@@ -101,9 +101,9 @@ static void energy_agreement(const char *path, int N)
   Model *b = a ? solve_cold(s, QP_CGSSOR, s->alpha0, &cs.cm, &st) : NULL;
   if (check(a && b, "%s N = %d: pdas and cgssor converge to kkt 1e-12%s%s", path,
             N, a && b ? "" : ": ", a && b ? "" : st.msg)) {
-    double rel = fabs(a->energy - b->energy) / fabs(a->energy);
+    double rel = fabs(model_energy(a) - model_energy(b)) / fabs(model_energy(a));
     check(rel <= 1e-15, "%s N = %d: E of pdas %.17g and of cgssor %.17g agree "
-          "to %.1e <= 1e-15", path, N, a->energy, b->energy, rel);
+          "to %.1e <= 1e-15", path, N, model_energy(a), model_energy(b), rel);
   }
   model_free(a), model_free(b);
   close_case(&cs);

@@ -40,10 +40,10 @@ static void open_pair(Case c[2], int n, char **ov)
 /* nodes in contact (Q = lo, exactly) and sticking (u1 = 0, exactly) */
 static void count_held(const Model *md, int *contact, int *stick)
 {
-  const Dofs *d = md->dofs;
+  const Dofs *d = model_dofs(md);
   *contact = *stick = 0;
-  for (int c = 0; c < d->nc; c++) *contact += md->Q[d->contact[c]] == md->lo[c];
-  for (int k = 0; k < d->nt; k++) *stick += md->Q[d->tangent[k]] == 0;
+  for (int c = 0; c < d->nc; c++) *contact += model_state(md)[d->contact[c]] == model_bounds(md)[c];
+  for (int k = 0; k < d->nt; k++) *stick += model_state(md)[d->tangent[k]] == 0;
 }
 
 /* cgssor's state is pdas's: energy, forces, contact and stick, residual */
@@ -53,19 +53,19 @@ static void compare(Case c[2], const char *what)
              c[0].st.msg, c[1].st.msg))
     return;
   const Model *p = c[0].md, *m = c[1].md;
-  int nk = p->dofs->nc + p->dofs->nt, cp, sp, cm, sm;
-  double E = fabs(m->energy - p->energy) / fabs(p->energy);
-  double T = max_diff(m->T, p->T, nk) / max_abs(p->T, nk);
+  int nk = model_dofs(p)->nc + model_dofs(p)->nt, cp, sp, cm, sm;
+  double E = fabs(model_energy(m) - model_energy(p)) / fabs(model_energy(p));
+  double T = max_diff(model_forces(m), model_forces(p), nk) / max_abs(model_forces(p), nk);
   check(E <= 1e-10 && T <= 1e-8, "%s: E to %.1e, the %d normal and "
         "tangential forces to %.1e of max|T| (%d pdas, %d cgssor steps)", what,
-        E, nk, T, p->report.iterations, m->report.iterations);
+        E, nk, T, model_report(p)->iterations, model_report(m)->iterations);
   count_held(p, &cp, &sp), count_held(m, &cm, &sm);
   check(cp == cm && sp == sm && cp > 0, "%s: the same %d nodes in contact and "
         "%d sticking, held exactly (cgssor: %d, %d)", what, cp, sp, cm, sm);
-  double kkt = qp_kkt(&m->qp, m->Q, NULL);
-  check(kkt <= c[1].s.solver.tol && m->report.kkt <= c[1].s.solver.tol,
+  double kkt = qp_kkt(model_qp(m), model_state(m), NULL);
+  check(kkt <= c[1].s.solver.tol && model_report(m)->kkt <= c[1].s.solver.tol,
         "%s: cgssor: qp_kkt %.1e <= tol (reported %.1e)", what, kkt,
-        m->report.kkt);
+        model_report(m)->kkt);
 }
 
 /* given friction; *mixed += 1 if cgssor's state both sticks and slips */
@@ -79,9 +79,9 @@ static void test_tresca(const char *g, const char *refine, int *mixed)
   open_pair(c, 3, ov);
   compare(c, what);
   if (!c[1].rc) {
-    const Dofs *d = c[1].md->dofs;
+    const Dofs *d = model_dofs(c[1].md);
     int slip = 0;
-    for (int k = 0; k < d->nt; k++) slip += c[1].md->Q[d->tangent[k]] != 0;
+    for (int k = 0; k < d->nt; k++) slip += model_state(c[1].md)[d->tangent[k]] != 0;
     *mixed += slip > 0 && slip < d->nt;
   }
   close_case(&c[0]), close_case(&c[1]);
@@ -97,9 +97,9 @@ static void test_coulomb(const char *refine)
   open_pair(c, 3, ov);
   compare(c, what);
   if (!c[0].rc && !c[1].rc)
-    check(c[1].md->fixed_point_residual <= c[1].s.solver.tol,
+    check(model_fixed_point_residual(c[1].md) <= c[1].s.solver.tol,
           "%s: cgssor: the fixed point converged in %d iterations (pdas %d)",
-          what, c[1].md->fixed_point_iterations, c[0].md->fixed_point_iterations);
+          what, model_fixed_point_iterations(c[1].md), model_fixed_point_iterations(c[0].md));
   close_case(&c[0]), close_case(&c[1]);
 }
 
@@ -112,10 +112,10 @@ static void test_g_zero(void)
   Case f, c;
   open_case(&f, 1, ov0), open_case(&c, 4, ov1);
   if (check(!f.rc && !c.rc, "g = 0: solved: %s%s", f.st.msg, c.st.msg)) {
-    int nc = f.md->dofs->nc;
-    double E = fabs(c.md->energy - f.md->energy) / fabs(f.md->energy);
-    double T = max_diff(c.md->T, f.md->T, nc) / max_abs(f.md->T, nc);
-    double Tt = max_abs(c.md->T + nc, c.md->dofs->nt) / max_abs(f.md->T, nc);
+    int nc = model_dofs(f.md)->nc;
+    double E = fabs(model_energy(c.md) - model_energy(f.md)) / fabs(model_energy(f.md));
+    double T = max_diff(model_forces(c.md), model_forces(f.md), nc) / max_abs(model_forces(f.md), nc);
+    double Tt = max_abs(model_forces(c.md) + nc, model_dofs(c.md)->nt) / max_abs(model_forces(f.md), nc);
     check(E <= 1e-10 && T <= 1e-8 && Tt <= 1e-8,
           "g = 0: cgssor gives the frictionless state (4.3): E to %.1e, T to %.1e, "
           "tangential forces %.1e of max|T|", E, T, Tt);
@@ -149,13 +149,13 @@ static void test_scale(const char *g, const char *refine)
   open_case(&a, 6, ov1), open_case(&b, 6, ov2), open_case(&c, 6, ov3);
   if (check(!a.rc && !b.rc && !c.rc, "g = %s, refine %s, scaled by 2^24 and "
             "1e7: solved: %s%s%s", g, refine, a.st.msg, b.st.msg, c.st.msg)) {
-    int na = a.md->report.iterations, nb = b.md->report.iterations;
-    check(na == nb && b.md->energy == two24 * a.md->energy,
+    int na = model_report(a.md)->iterations, nb = model_report(b.md)->iterations;
+    check(na == nb && model_energy(b.md) == two24 * model_energy(a.md),
           "g = %s, refine %s, scaled by 2^24: %d and %d cgssor steps, E "
-          "exactly 2^24 times (%.17g)", g, refine, na, nb, b.md->energy / two24);
-    double dE = fabs(c.md->energy / 1e7 - a.md->energy) / fabs(a.md->energy);
+          "exactly 2^24 times (%.17g)", g, refine, na, nb, model_energy(b.md) / two24);
+    double dE = fabs(model_energy(c.md) / 1e7 - model_energy(a.md)) / fabs(model_energy(a.md));
     check(dE <= 1e-10, "g = %s, refine %s, scaled by 1e7: E / 1e7 to %.1e "
-          "(%d and %d steps)", g, refine, dE, na, c.md->report.iterations);
+          "(%d and %d steps)", g, refine, dE, na, model_report(c.md)->iterations);
   }
   close_case(&a), close_case(&b), close_case(&c);
 }
@@ -167,11 +167,11 @@ static void test_warm(void)
                  "solver.state=cgssor" };
   Case c;
   if (check(open_case(&c, 4, ov) == 0, "warm: solved: %s", c.st.msg)) {
-    int cold = c.md->report.iterations;
+    int cold = model_report(c.md)->iterations;
     int rc = model_solve(c.md, c.s.alpha0, &c.st);
-    check(rc == 0 && c.md->report.iterations == 0 && cold > 0,
+    check(rc == 0 && model_report(c.md)->iterations == 0 && cold > 0,
           "warm: from its solution, %d steps (cold: %d)",
-          c.md->report.iterations, cold);
+          model_report(c.md)->iterations, cold);
   }
   close_case(&c);
 }
@@ -185,9 +185,9 @@ static void test_singular(void)
   Case c[2];
   open_pair(c, 3, ov);
   if (check(!c[0].rc, "rollers: pdas solves: %s", c[0].st.msg)) {
-    int nc = c[0].md->dofs->nc;
+    int nc = model_dofs(c[0].md)->nc;
     double *S = malloc((size_t) nc * nc * sizeof *S), s1 = 0, smax = 0;
-    int rc = qp_schur(c[0].md->solver, 0, S, &c[0].st);
+    int rc = qp_schur(model_solver(c[0].md), 0, S, &c[0].st);
     for (int i = 0; i < nc; i++) {
       double r = 0;
       for (int j = 0; j < nc; j++) r += S[(size_t) i * nc + j], smax = fmax(smax, fabs(S[(size_t) i * nc + j]));
@@ -221,7 +221,7 @@ static void test_max_iter(void)
   Case c;
   open_case(&c, 5, ov);
   int finite = c.md != NULL;
-  for (int i = 0; finite && i < c.md->dofs->n; i++) finite = isfinite(c.md->Q[i]);
+  for (int i = 0; finite && i < model_dofs(c.md)->n; i++) finite = isfinite(model_state(c.md)[i]);
   check(c.rc == STATUS_NUMERIC && strstr(c.st.msg, "not converged") && finite,
         "max_iter = 1: %s", c.st.msg);
   close_case(&c);
@@ -242,13 +242,13 @@ static void test_tol_below_rounding(const char *tol)
   ov[3] = "solver.state=pdas";
   open_case(&p, 6, ov);
   if (check(!c.rc && !p.rc, "tol = %s: cgssor converges (%d steps, kkt %.1e) "
-            "and pdas (%d, kkt %.1e)%s%s", tol, c.md ? c.md->report.iterations : -1,
-            c.md ? c.md->report.kkt : NAN, p.md ? p.md->report.iterations : -1,
-            p.md ? p.md->report.kkt : NAN, c.st.msg, p.st.msg)) {
-    int nk = c.md->dofs->nc + c.md->dofs->nt;
-    double E = fabs(c.md->energy - p.md->energy) / fabs(p.md->energy);
-    double T = max_diff(c.md->T, p.md->T, nk) / max_abs(p.md->T, nk);
-    check(c.md->report.kkt == 0 && E <= 1e-14 && T <= 1e-10, "tol = %s: "
+            "and pdas (%d, kkt %.1e)%s%s", tol, c.md ? model_report(c.md)->iterations : -1,
+            c.md ? model_report(c.md)->kkt : NAN, p.md ? model_report(p.md)->iterations : -1,
+            p.md ? model_report(p.md)->kkt : NAN, c.st.msg, p.st.msg)) {
+    int nk = model_dofs(c.md)->nc + model_dofs(c.md)->nt;
+    double E = fabs(model_energy(c.md) - model_energy(p.md)) / fabs(model_energy(p.md));
+    double T = max_diff(model_forces(c.md), model_forces(p.md), nk) / max_abs(model_forces(p.md), nk);
+    check(model_report(c.md)->kkt == 0 && E <= 1e-14 && T <= 1e-10, "tol = %s: "
           "cgssor's state exact to rounding (kkt 0), E to %.1e and the forces "
           "to %.1e of pdas's", tol, E, T);
   }

@@ -38,7 +38,7 @@ static int run(const char *dir, Model *md, const Problem *p, const double *X,
   if (rc) { output_history_free(h); return rc; }
   rc = output_history_vtu(h, &o, md, st);
   for (int k = 0; !rc && k < iterations; k++) {
-    Opt_progress pr = { k, md->energy, 1, k + 1, 0, 1, 0 };
+    Opt_progress pr = { k, model_energy(md), 1, k + 1, 0, 1, 0 };
     output_history_add(h, &pr, bad && k == iterations - 1 ? bad : X);
   }
   if (!rc) rc = output_history(&o, p, h, st);

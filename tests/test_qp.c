@@ -86,7 +86,7 @@ static void test_psor_refused(void)
             c.st.msg)) {
     Qp_options opt = qp_options_default(QP_PSOR);
     Status st = { STATUS_OK, "" };
-    Qp_workspace *w = qp_alloc(&c.md->qp, &opt, &c.cm, &st);
+    Qp_workspace *w = qp_alloc(model_qp(c.md), &opt, &c.cm, &st);
     check(!w && st.code == STATUS_INPUT && strstr(st.msg, "psor")
           && strstr(st.msg, "pdas or cgssor"), "psor: refused: %s", st.msg);
     qp_free(w);

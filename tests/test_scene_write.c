@@ -58,7 +58,7 @@ static double energy(const Scene *s, const char *what)
   if (!(md = model_new(&s->problem, &s->solver, &cm, &st))
       || model_solve(md, s->alpha0, &st))
     check(0, "%s: the state is solved: %s", what, st.msg);
-  else e = md->energy;
+  else e = model_energy(md);
   model_free(md);
   cholmod_l_finish(&cm);
   return e;

@@ -37,17 +37,17 @@ static inline int weakly_active(Model *md, const Scene *s, double *X, int *i, in
 {
   Status st;
   *i = *c = -1;
-  for (int k = 0; k + 1 < md->dofs->nc; k++) {
-    int col = md->dofs->contact_col[k];
-    if (md->Q[md->dofs->contact[k]] > -X[col]
-        && md->Q[md->dofs->contact[k + 1]] <= -X[col + 1]) *i = col, *c = k;
+  for (int k = 0; k + 1 < model_dofs(md)->nc; k++) {
+    int col = model_dofs(md)->contact_col[k];
+    if (model_state(md)[model_dofs(md)->contact[k]] > -X[col]
+        && model_state(md)[model_dofs(md)->contact[k + 1]] <= -X[col + 1]) *i = col, *c = k;
   }
   if (*i < 0) return 0;
   double hi = X[*i], lo = 0;          /* free at hi, pressing at lo = 0 */
   for (int it = 0; it < 200 && hi - lo > 1e-15 * s->problem.C0; it++) {
     X[*i] = 0.5 * (lo + hi);
     if (model_solve(md, X, &st)) return 0;
-    if (md->Q[md->dofs->contact[*c]] > -X[*i]) hi = X[*i]; else lo = X[*i];
+    if (model_state(md)[model_dofs(md)->contact[*c]] > -X[*i]) hi = X[*i]; else lo = X[*i];
   }
   X[*i] = hi;
   return !model_solve(md, X, &st);
@@ -64,24 +64,24 @@ static inline void agree(Scene *s, const char *tag, const double *X,
     if (!check(ref != NULL, "%s: pdas converges%s%s", tag, ref ? "" : ": ",
                ref ? "" : st.msg)) return;
   } else if (!ref) return;                 /* test_pdas.c says so */
-  int n = ref->dofs->n;
+  int n = model_dofs(ref)->n;
   double umax = 0;
-  for (int j = 0; j < n; j++) umax = fmax(umax, fabs(ref->Q[j]));
+  for (int j = 0; j < n; j++) umax = fmax(umax, fabs(model_state(ref)[j]));
   if (m == QP_PDAS)
-    check(ref->report.kkt <= s->solver.tol, "%s: pdas KKT residual of (4.3) "
-          "%.1e <= %.0e after %d iterations", tag, ref->report.kkt,
-          s->solver.tol, ref->report.iterations);
+    check(model_report(ref)->kkt <= s->solver.tol, "%s: pdas KKT residual of (4.3) "
+          "%.1e <= %.0e after %d iterations", tag, model_report(ref)->kkt,
+          s->solver.tol, model_report(ref)->iterations);
   else {
     Model *md = solve_cold(s, m, X, cm, &st);
     if (check(md != NULL, "%s: %s converges%s%s", tag, weakly_name[m],
               md ? "" : ": ", md ? "" : st.msg)) {
       double du = 0;
-      for (int j = 0; j < n; j++) du = fmax(du, fabs(md->Q[j] - ref->Q[j]));
-      check(fabs(md->energy - ref->energy) <= 1e-9 * fabs(ref->energy)
+      for (int j = 0; j < n; j++) du = fmax(du, fabs(model_state(md)[j] - model_state(ref)[j]));
+      check(fabs(model_energy(md) - model_energy(ref)) <= 1e-9 * fabs(model_energy(ref))
             && du <= 1e-6 * umax, "%s: %s agrees with pdas on the state (4.3) "
             "(E %.1e, Q %.1e relative) after %d iterations", tag, weakly_name[m],
-            fabs(md->energy - ref->energy) / fabs(ref->energy), du / umax,
-            md->report.iterations);
+            fabs(model_energy(md) - model_energy(ref)) / fabs(model_energy(ref)), du / umax,
+            model_report(md)->iterations);
       model_free(md);
     }
   }
@@ -111,12 +111,12 @@ static inline void weakly_active_node(const char *path, Plane_model model,
   int i = -1, c = -1, found = md && weakly_active(md, s, X, &i, &c);
   if (pdas ? check(found, "%s %s: a weakly active design found by bisection "
                    "(pdas warm starts throughout)", path, mname) : found) {
-    double gap = md->Q[md->dofs->contact[c]] + X[i], Tmax = 0;
-    for (int k = 0; k < md->dofs->nc; k++) Tmax = fmax(Tmax, md->T[k]);
+    double gap = model_state(md)[model_dofs(md)->contact[c]] + X[i], Tmax = 0;
+    for (int k = 0; k < model_dofs(md)->nc; k++) Tmax = fmax(Tmax, model_forces(md)[k]);
     if (pdas)
-      check(fabs(gap) <= 1e-12 * s->problem.C0 && fabs(md->T[c]) <= 1e-6 * Tmax,
+      check(fabs(gap) <= 1e-12 * s->problem.C0 && fabs(model_forces(md)[c]) <= 1e-6 * Tmax,
             "%s %s: node %d touches (gap %.1e m) with force %.1e max T (4.6)",
-            path, mname, i, gap, fabs(md->T[c]) / Tmax);
+            path, mname, i, gap, fabs(model_forces(md)[c]) / Tmax);
     char tag[600];
     double x0 = X[i];
     for (int side = -1; side <= 1; side++) {

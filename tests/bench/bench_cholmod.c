@@ -117,7 +117,7 @@ static double timed_solve(Model *md, const double *X, int *steps)
   Status st;
   double t = now();
   if (model_solve(md, X, &st)) die("model_solve", st.msg);
-  *steps = md->report.iterations;
+  *steps = model_report(md)->iterations;
   return now() - t;
 }
 
@@ -167,7 +167,7 @@ static Model *measure_cold(const Scene *s, cholmod_common *cm, Times *T)
     setup = now() - t;
     cold = timed_solve(md, s->alpha0, &T->cold_steps);
     if (k == 0) T->rss = maxrss_mib();    /* before CHOLMOD's own factor */
-    T->residual = cholmod_reference(md->A, md->b, cm, &a, &f);
+    T->residual = cholmod_reference(model_stiffness(md), model_load(md), cm, &a, &f);
     if (!(T->residual < 1e-10)) die("CHOLMOD", "the residual of its solve is not small");
     T->setup = fmin(T->setup, setup), T->cold = fmin(T->cold, cold);
     T->analyse = fmin(T->analyse, a), T->factor_solve = fmin(T->factor_solve, f);
@@ -259,7 +259,7 @@ int main(int argc, char **argv)
   Model *md = measure_cold(&s, &cm, &T);
   measure_warm(&s, md, &T);
   printf("%d %d %.6f %.6f %d %.6f %.6f %.3f %.1f %.6f %d %.3e %.4f %.1e %.3e %.3e %.3e\n",
-         s.problem.N, (int) md->A->nrow, T.setup, T.cold, T.cold_steps, T.analyse,
+         s.problem.N, (int) model_stiffness(md)->nrow, T.setup, T.cold, T.cold_steps, T.analyse,
          T.factor_solve, (T.setup + T.cold) / (T.analyse + T.factor_solve),
          T.rss, T.warm, T.warm_steps, T.grad, T.grad / T.warm, T.residual,
          T.adjoint[0], T.adjoint[1], T.adjoint[2]);
