@@ -5,9 +5,12 @@
 # OUT/<start>-<model>-<method>; the table of the section "Optimisations
 # from the corners of B" (LaTeX, on standard output).  E(X^0) is the
 # energy of iteration 0 of SLSQP in plane stress, at the start projected
-# onto B.  Tangled from paper/stability.nw; do not edit.
+# onto B.  hard-vertex.sh --starts OUT writes the four starts alone
+# (tests/hard_cases.sh optimises from them).  Tangled from
+# paper/stability.nw; do not edit.
 set -e
 bin=${BIN:-bin/contactopt}
+starts=; [ "$1" = --starts ] && { starts=1; shift; }
 out=$1; ex=data/example-5.1.scene
 mkdir -p "$out"
 v() { awk -v k="$1" '$1 == k { print $2; exit }' "$2/summary.dat"; }
@@ -24,6 +27,7 @@ awk -v o="$out" 'BEGIN { C0 = 0.05; C1 = 0.025
     printf "%g %.17g\n", x, f > (o "/fall.dat")
     printf "%g %.17g\n", x, v > (o "/V.dat")
     printf "%g %.17g\n", x, l > (o "/Lambda.dat") } }'
+[ -z "$starts" ] || exit 0
 noarc="-s design.arc_x1= -s design.arc_x2= -s design.arc_radius="
 # design.file is read relative to the scene's folder: the starts by
 # their full path

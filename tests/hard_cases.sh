@@ -347,15 +347,7 @@ done
 # end converged at a KKT point; in plane stress at the optimum of
 # data/reference/example-5.1.dat (an independent run: Algorithm 4.1, the
 # state by cgssor), in plane strain all at the same energy.
-awk 'BEGIN { C0 = 0.05; C1 = 0.025; w = 2 - sqrt(3.6); p = sqrt(0.09 * C1)
-  for (i = 0; i <= 16; i++) { x = i / 4
-    r = C1 * (x - 1.2); r = r < 0 ? 0 : r > C0 ? C0 : r
-    f = C1 * (2.8 - x); f = f < 0 ? 0 : f > C0 ? C0 : f
-    a = x < 2 ? 2 - x : x - 2
-    v = C1 * (a - w); v = v < 0 ? 0 : v > C0 ? C0 : v
-    l = p - C1 * a; l = l < 0 ? 0 : l
-    printf "%g %.17g\n", x, r > "'$TMP/rise.dat'"; printf "%g %.17g\n", x, f > "'$TMP/fall.dat'"
-    printf "%g %.17g\n", x, v > "'$TMP/V.dat'"; printf "%g %.17g\n", x, l > "'$TMP/Lambda.dat'" } }'
+sh src/hard-vertex.sh --starts "$TMP"   # rise.dat, fall.dat, V.dat, Lambda.dat
 ref=$(value energy_final data/reference/example-5.1.dat)
 for model in plane_stress plane_strain; do
   for start in rise fall V Lambda; do
