@@ -77,10 +77,10 @@ Hooke fem_hooke(const Problem *p)
 {
   Hooke H;
   double (*D)[3] = H.D;
-  double mu = p->E / (2 * (1 + p->nu));
+  double mu = p->young / (2 * (1 + p->nu));
   double lambda = p->model == MODEL_PLANE_STRAIN
-    ? p->E * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
-    : p->E * p->nu / (1 - p->nu * p->nu);
+    ? p->young * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
+    : p->young * p->nu / (1 - p->nu * p->nu);
   memset(D, 0, 9 * sizeof D[0][0]);
   D[0][0] = D[1][1] = lambda + 2 * mu;
   D[0][1] = D[1][0] = lambda;

@@ -41,7 +41,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
    Q, constant on it; returns 2|T| */
 double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
                            int t, long double e[3]);
-/* s = D e, the stress (s11, s22, s12) of the strain e [Pa when E is] */
+/* s = D e, the stress (s11, s22, s12) of the strain e [Pa when Young's modulus is] */
 void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]);
 #line 109 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Hooke *H,
@@ -56,7 +56,7 @@ double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
                   const double *b, const double *Q);
 #line 725 "paper/fem.nw"
 /* r (ndof) = K u - f at the held DOFs, the force of the sides on the
-   body [N/m when E is in Pa]; 0 at the unknowns */
+   body [N/m when Young's modulus is in Pa]; 0 at the unknowns */
 void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
                    const Problem *p, const double *Q, double *r);
 /* the side whose reaction the held DOF k takes, -1 if no side holds it */

@@ -90,7 +90,7 @@ void model_release(Model *md);
 void model_free(Model *md);
 #line 480 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
-   triangle t at the last state solved [Pa when E is] */
+   triangle t at the last state solved [Pa when Young's modulus is] */
 void model_stress(const Model *md, int t, double s[5]);
 /* the summary of the last state solved; STATUS_MEMORY if memory runs out */
 int model_summary(const Model *md, Model_summary *sum, Status *st);

@@ -1,8 +1,8 @@
-#line 87 "paper/problem.nw"
+#line 89 "paper/problem.nw"
 #ifndef CONTACTOPT_PROBLEM_H
 #define CONTACTOPT_PROBLEM_H
 
-#line 102 "paper/problem.nw"
+#line 104 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
@@ -15,12 +15,12 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Side;
-#line 119 "paper/problem.nw"
+#line 121 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
-#line 128 "paper/problem.nw"
+#line 130 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Contact_law;
-#line 133 "paper/problem.nw"
+#line 135 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -31,8 +31,9 @@ typedef struct {
   /* the mesh: M moving rows of cells up to C0prime, R fixed ones above */
   int M, R;
   double C0prime;
-  /* the material: isotropic, unit thickness, E in N/m^2 */
-  double E, nu;
+  /* the material: isotropic, unit thickness, Young's modulus in N/m^2
+     (the scene's key E) and Poisson's ratio */
+  double young, nu;
   Plane_model model;
   /* the conditions of the sides: Gamma_D and Gamma_P */
   Side side[SIDE_COUNT];
@@ -48,7 +49,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 179 "paper/problem.nw"
+#line 182 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
@@ -57,5 +58,5 @@ const char *problem_bc_name(Bc_kind k);
 const char *problem_contact_name(Contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
-#line 96 "paper/problem.nw"
+#line 98 "paper/problem.nw"
 #endif

@@ -38,10 +38,10 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
   char r[STATUS_NUMBER];
-  if (x == 0 || in_window(x * times, s->problem.E)) return 0;
+  if (x == 0 || in_window(x * times, s->problem.young)) return 0;
   return scene_blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                      "1e30] times E, where every product the solvers form is "
-                     "finite", what, outside(fabs(x) * times / s->problem.E, r));
+                     "finite", what, outside(fabs(x) * times / s->problem.young, r));
 }
 #line 1542 "paper/scene.nw"
 static int read_contact(Loader *L, Scene *s);
@@ -143,8 +143,8 @@ static int read_material(Loader *L, Scene *s)
 {
   int rc;
   if ((rc = scene_get(L, s, "material", "E"))) return rc;
-  if (!(s->problem.E > 0)) return scene_blame(L, "Young's modulus must be > 0");
-  if (!in_window(s->problem.E, 1))
+  if (!(s->problem.young > 0)) return scene_blame(L, "Young's modulus must be > 0");
+  if (!in_window(s->problem.young, 1))
     return scene_blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
                        "product the solvers form is finite");
   if ((rc = scene_get(L, s, "material", "nu"))) return rc;

@@ -117,7 +117,7 @@ const Key scene_keys[] = {
  .meaning = "top of the moving rows of cells"},
 {"mesh", "refine", KEY_INT, .at = AT_DEFAULT, .unit = "-", .dflt = "1",
  .accepted = ">= 1", .meaning = "multiplies N, M and R: a finer mesh"},
-{"material", "E", KEY_REAL, .at = AT(problem.E), .unit = "Pa",
+{"material", "E", KEY_REAL, .at = AT(problem.young), .unit = "Pa",
  .accepted = "1e-30 <= E <= 1e30", .meaning = "Young's modulus"},
 {"material", "nu", KEY_REAL, .at = AT(problem.nu), .unit = "1",
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
