@@ -102,13 +102,13 @@ static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
     length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
   for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
 }
-#line 421 "paper/coulomb.nw"
+#line 422 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
   int *k, *c;   /* m <= nt: the pairs of coulomb_pairs */
-  double *v;    /* m: F dJ/ds_k, then mu */
-  double *S;    /* m x m: dT/ds, then I - F dT/ds */
+  double *v;    /* m: friction dJ/ds_k, then mu */
+  double *S;    /* m x m: dT/ds, then I - friction dT/ds */
   double *mu;   /* nc: mu on the normal unknowns */
   double *G2;   /* N + 1: the gradient of mu'T at fixed bounds */
 } Coulomb_work;
@@ -180,14 +180,15 @@ static int coulomb_sensitivity(const Model *md, int m, const int *kk,
   return rc;
 }
 #line 394 "paper/coulomb.nw"
-/* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
-static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
+/* v (m) := mu, (I - friction S)' mu = v, by LU; S is overwritten */
+static int coulomb_multiplier(int m, double friction, double *S, double *v,
+                              Status *st)
 {
-  for (int a = 0; a < m; a++)                  /* S := (I - F S)' */
+  for (int a = 0; a < m; a++)                  /* S := (I - friction S)' */
     for (int b = 0; b <= a; b++) {
       double x = S[(size_t) a * m + b], y = S[(size_t) b * m + a];
-      S[(size_t) a * m + b] = (a == b) - F * y;
-      S[(size_t) b * m + a] = (a == b) - F * x;
+      S[(size_t) a * m + b] = (a == b) - friction * y;
+      S[(size_t) b * m + a] = (a == b) - friction * x;
     }
   gsl_matrix_view M = gsl_matrix_view_array(S, m, m);
   gsl_vector_view x = gsl_vector_view_array(v, m);
@@ -202,8 +203,8 @@ static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
   gsl_permutation_free(p);
   return rc;
 }
-#line 459 "paper/coulomb.nw"
-/* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
+#line 460 "paper/coulomb.nw"
+/* v[a] = friction dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
                         Coulomb_work *w)
@@ -220,13 +221,13 @@ static void coulomb_rhs(const Model *md, const Objective *o, int m,
 static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
                          double *G, Status *st)
 {
-  double F = md->problem->friction;
+  double friction = md->problem->friction;
   int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, NULL, st);
   int m = rc ? 0 : coulomb_pairs(md, w->held, w->k, w->c);
-  if (rc || m == 0 || F == 0) return rc;
+  if (rc || m == 0 || friction == 0) return rc;
   coulomb_rhs(md, o, m, w);
   if ((rc = coulomb_sensitivity(md, m, w->k, w->c, w->S, st))
-      || (rc = coulomb_multiplier(m, F, w->S, w->v, st))) return rc;
+      || (rc = coulomb_multiplier(m, friction, w->S, w->v, st))) return rc;
   for (int a = 0; a < m; a++) w->mu[w->c[a]] = w->v[a];
   if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, NULL, st)))
     return rc;

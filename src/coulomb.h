@@ -7,14 +7,14 @@
 
 /* the state of a Coulomb problem at the model's design, by successive
    approximations: state (the model's one state solve) under the bounds
-   F T of the last normal forces, to solver.tol; rounding 1: on past it
-   to the rounding of the forces (for a gradient).  STATUS_NUMERIC when
+   friction T of the last normal forces, to solver.tol; rounding 1: on
+   past it to the rounding of the forces (for a gradient).  STATUS_NUMERIC when
    it stops short, or state's status. */
 int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
                         int rounding, Status *st);
 /* G (N+1) = dJ/dX of the objective o at the Coulomb state the model
-   solved last, through its fixed point s = F T on the state's contact,
-   stick and slip sets */
+   solved last, through its fixed point s = friction T on the state's
+   contact, stick and slip sets */
 int coulomb_gradient(const Model *md, const Objective *o, double *G,
                      Status *st);
 #endif

@@ -329,7 +329,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
 static void fem_assemble_load(const Mesh *m, const Dofs *d, const Problem *p,
                               int held, double *b)
 {
-  if (p->has_body_force) fem_add_body_force(m, d, p->F, held, b);
+  if (p->has_body_force) fem_add_body_force(m, d, p->body_force, held, b);
   for (int side = 0; side < SIDE_COUNT; side++)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], held, b);

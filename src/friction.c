@@ -45,7 +45,7 @@ int friction_side_holds(const Problem *p, int component)
 /* L = the total load (L1, L2) of a body of this area, N/m */
 static void total_load(const Problem *p, double area, double L[2])
 {
-  for (int j = 0; j < 2; j++) L[j] = p->F[j] * area;
+  for (int j = 0; j < 2; j++) L[j] = p->body_force[j] * area;
   for (int id = 0; id < SIDE_COUNT; id++)
     if (p->side[id].kind == BC_TRACTION)
       for (int j = 0; j < 2; j++)

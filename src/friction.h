@@ -24,7 +24,7 @@ int friction_side_holds(const Problem *p, int component);
 /* what friction can hold sideways against the horizontal load */
 typedef struct {
   double capacity;  /* N/m: the largest total tangential force: g (b - a),
-                       F W, or 0 without friction */
+                       friction W, or 0 without friction */
   double load;      /* N/m: |L1|, the total horizontal load */
   double vertical;  /* N/m: W, the total load that presses the body down */
 } Friction_hold;

@@ -48,7 +48,7 @@ static void grad_element(const Model *md, int t, double *G)
     if (rate == 0) continue;
     double de_dy = grad_element_height(gy, q, e, De, d, v);
     if (md->problem->has_body_force)
-      de_dy -= grad_body_force(md->problem->F, q, gy[v]);
+      de_dy -= grad_body_force(md->problem->body_force, q, gy[v]);
     G[node % m->ncol] += rate * de_dy;
   }
 }

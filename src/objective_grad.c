@@ -72,7 +72,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
                            const double *v, double *G)
 {
   const Mesh *m = md->mesh;
-  const double *F = md->problem->F;
+  const double *F = md->problem->body_force;
   double xy[6], q[6], ue[6], ve[6], gx[3], gy[3], eq[3], Dq[3], eu[3], Du[3];
   fem_element_xy(m, t, xy);
   fem_element_q(m, md->dofs, md->Q, t, q);

@@ -268,8 +268,8 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
-  plot_enhanced_number(p->F[0], f1, sizeof f1);
-  plot_enhanced_number(p->F[1], f2, sizeof f2);
+  plot_enhanced_number(p->body_force[0], f1, sizeof f1);
+  plot_enhanced_number(p->body_force[1], f2, sizeof f2);
   fprintf(f, "  set label 'body force ({/:Italic F}_1, {/:Italic F}_2) = (%s, %s) N/m^3' "
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");

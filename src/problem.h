@@ -1,8 +1,8 @@
-#line 89 "paper/problem.nw"
+#line 94 "paper/problem.nw"
 #ifndef CONTACTOPT_PROBLEM_H
 #define CONTACTOPT_PROBLEM_H
 
-#line 104 "paper/problem.nw"
+#line 109 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
@@ -15,12 +15,12 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Side;
-#line 121 "paper/problem.nw"
+#line 126 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
-#line 130 "paper/problem.nw"
+#line 135 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Contact_law;
-#line 135 "paper/problem.nw"
+#line 140 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -38,18 +38,18 @@ typedef struct {
   /* the conditions of the sides: Gamma_D and Gamma_P */
   Side side[SIDE_COUNT];
   /* the body force F = (F1, F2), N/m^3, constant */
-  double F[2];
+  double body_force[2];
   int has_body_force;  /* F != 0: only then is its load assembled */
   /* the foundation {x2 <= 0}: frictionless, given friction with the slip
-     bound g (Pa), or Coulomb friction with the coefficient F */
+     bound g (Pa), or Coulomb friction with the coefficient friction */
   Contact_law contact;
   double slip_bound;   /* CONTACT_TRESCA: g >= 0 */
-  double friction;     /* CONTACT_COULOMB: F >= 0 */
+  double friction;     /* CONTACT_COULOMB: the coefficient, >= 0 */
   int max_fixed_point; /* CONTACT_COULOMB: the most rounds of its fixed
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 182 "paper/problem.nw"
+#line 187 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
@@ -58,5 +58,5 @@ const char *problem_bc_name(Bc_kind k);
 const char *problem_contact_name(Contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
-#line 98 "paper/problem.nw"
+#line 103 "paper/problem.nw"
 #endif

@@ -261,11 +261,11 @@ static int read_loads(Loader *L, Scene *s)
   int rc;
   double w = s->problem.b - s->problem.a;
   if ((rc = scene_get(L, s, "body_force", "F1"))
-      || (rc = check_load(L, s, s->problem.F[0], w, "|F1| (b - a)"))
+      || (rc = check_load(L, s, s->problem.body_force[0], w, "|F1| (b - a)"))
       || (rc = scene_get(L, s, "body_force", "F2"))
-      || (rc = check_load(L, s, s->problem.F[1], w, "|F2| (b - a)")))
+      || (rc = check_load(L, s, s->problem.body_force[1], w, "|F2| (b - a)")))
     return rc;
-  s->problem.has_body_force = s->problem.F[0] != 0 || s->problem.F[1] != 0;
+  s->problem.has_body_force = s->problem.body_force[0] != 0 || s->problem.body_force[1] != 0;
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }

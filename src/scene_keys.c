@@ -152,10 +152,10 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 #line 672 "paper/scene.nw"
   
 #line 604 "paper/scene.nw"
-{"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
+{"body_force", "F1", KEY_REAL, .at = AT(problem.body_force[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
-{"body_force", "F2", KEY_REAL, .at = AT(problem.F[1]), .unit = "N/m^3",
+{"body_force", "F2", KEY_REAL, .at = AT(problem.body_force[1]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F2| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x2 component"},
 {"contact", "model", KEY_WORD, problem_contact_names, AT(problem.contact),

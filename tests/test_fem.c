@@ -253,7 +253,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
   s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Side) { left, 0, 0, { 0, 0 } };
   s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Side) { right, 0, 0, { 0, 0 } };
   s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Side) { top, 0, 0, { 0, 0 } };
-  s.F[0] = 3e7, s.F[1] = -2e8, s.has_body_force = 1;
+  s.body_force[0] = 3e7, s.body_force[1] = -2e8, s.has_body_force = 1;
   Status st = { 0, "" };
   cholmod_common cm;
   test_start(&cm);
@@ -275,7 +275,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
     area += 0.25 * (X[i] + X[i - 1]) / 2;
   area = 1 * 4 - area;
   for (int c = 0; c < 2; c++) {
-    want[c] = s.F[c] * area;
+    want[c] = s.body_force[c] * area;
     if (top == BC_TRACTION) want[c] += load.P[c] * 4;
     if (left == BC_TRACTION || right == BC_TRACTION) want[c] += side_load.P[c] * 0.6;
   }

@@ -45,7 +45,7 @@ static void test_example_5_1(void)
   check(s.problem.side[SIDE_TOP].kind == BC_TRACTION && s.problem.side[SIDE_TOP].from == 2
         && s.problem.side[SIDE_TOP].to == 4 && s.problem.side[SIDE_TOP].P[0] == 0
         && s.problem.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
-  check(s.problem.F[0] == 0 && s.problem.F[1] == 0 && !s.problem.has_body_force, "5.1: F = 0");
+  check(s.problem.body_force[0] == 0 && s.problem.body_force[1] == 0 && !s.problem.has_body_force, "5.1: F = 0");
   check(s.solver.method == QP_PDAS && s.solver.tol == 1e-10 && s.solver.max_iter == 100
         && s.solver.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
   check(strcmp(s.initial, "arc") == 0, "5.1: initial = arc");
@@ -116,7 +116,7 @@ static void test_overrides(void)
             "-s with blanks around the names: %s", st.msg)) {
     check(s.solver.method == QP_PSOR && s.solver.max_iter == 100000,
           "psor: the default max_iter is 100000");
-    check(s.problem.has_body_force && s.problem.F[1] == -7.8e4, "a body force sets has_body_force");
+    check(s.problem.has_body_force && s.problem.body_force[1] == -7.8e4, "a body force sets has_body_force");
     scene_free(&s);
   }
   if (check(scene_load(&s, "data/example-5.1.scene", 3, cgssor, &st) == 0
