@@ -108,18 +108,18 @@ static int model_pressed(const Model *md, Status *st)
                     "holds u2");
 }
 #line 308 "paper/model.nw"
-void model_contact_gaps(const Model *md, double *g)
+void model_contact_gaps(const Model *md, double *gap)
 {
-  for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
+  for (int i = 0; i <= md->problem->N; i++) gap[i] = NAN;
   for (int c = 0; c < md->dofs->nc; c++)
-    g[md->dofs->contact_col[c]] = md->Q[md->dofs->contact[c]] - md->lo[c];
+    gap[md->dofs->contact_col[c]] = md->Q[md->dofs->contact[c]] - md->lo[c];
 }
 
-void model_guess_contact(Model *md, const double *X, const double *g)
+void model_guess_contact(Model *md, const double *X, const double *gap)
 {
   for (int c = 0; c < md->dofs->nc; c++) {
     int i = md->dofs->contact_col[c];
-    if (!isnan(g[i])) md->Q[md->dofs->contact[c]] = -X[i] + fmax(g[i], 0);
+    if (!isnan(gap[i])) md->Q[md->dofs->contact[c]] = -X[i] + fmax(gap[i], 0);
   }
   md->guessed = 1;
 }

@@ -78,12 +78,12 @@ const int *model_contact_columns(const Model *md);
 int model_contact_state(Model *md, double *S, double *v, double *T, Status *st);
 /* the rounding of E at the last design solved (see the optimiser) */
 double model_energy_rounding(const Model *md);
-/* g (N+1): the gap Q_c - lo_c of the last state solved at the design node
-   of each contact unknown c, NaN at the other nodes */
-void model_contact_gaps(const Model *md, double *g);
-/* the start of the next solve: the contact unknowns at the gaps g (N+1,
+/* gap (N+1): the gap Q_c - lo_c of the last state solved at the design
+   node of each contact unknown c, NaN at the other nodes */
+void model_contact_gaps(const Model *md, double *gap);
+/* the start of the next solve: the contact unknowns at the gaps gap (N+1,
    NaN: left as they are) over the design X; for PDAS (see below) */
-void model_guess_contact(Model *md, const double *X, const double *g);
+void model_guess_contact(Model *md, const double *X, const double *gap);
 /* frees the factor of the last state, which is kept; the next solve
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);

@@ -12,7 +12,7 @@ typedef struct {
   Newton_model mdl;       /* the model at the iterate */
   int n, m;               /* design nodes, contact unknowns */
   double rho;             /* the trust in the model, see above */
-  double *S, *f, *g, *r, *v0;   /* m*m, m, n, n, m: the model's data */
+  double *S, *f, *grad, *r, *v0;   /* m*m, m, n, n, m: the model's data */
   double *d, *v, *trial;  /* n, m, n: its solution and the trial design */
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
   double Ek, noisek;      /* E and its rounding delta E at the iterate */
@@ -32,11 +32,11 @@ static int newton_model_at(Newton_run *nr)
   double mean = 0, Gmax = 0;
   const int *col = model_contact_columns(ev->md);
   if ((rc = model_contact_state(ev->md, nr->S, nr->v0, nr->f, ev->st))) return rc;
-  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), nr->g[i] = ev->G[i];
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), nr->grad[i] = ev->G[i];
   for (int c = 0; c < m; c++) {                          /* nr->f holds T */
     double sq = 0;
     for (int e = 0; e < m; e++) sq += nr->S[(size_t) c * m + e] * nr->v0[e];
-    nr->g[col[c]] += nr->f[c];
+    nr->grad[col[c]] += nr->f[c];
     nr->f[c] = sq - nr->f[c];
     mean += nr->S[(size_t) c * m + c] / m;
   }
@@ -133,12 +133,13 @@ int opt_newton(Evaluator *ev, double *X)
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
-  nr.g = nr.v + mm, nr.r = nr.g + n, nr.d = nr.r + n, nr.trial = nr.d + n, nr.Xk = nr.trial + n;
-  nr.mdl = (Newton_model) { n, m, ev->md->dofs->contact_col, nr.Xk, ev->B, nr.g,
+  nr.grad = nr.v + mm, nr.r = nr.grad + n, nr.d = nr.r + n;
+  nr.trial = nr.d + n, nr.Xk = nr.trial + n;
+  nr.mdl = (Newton_model) { n, m, ev->md->dofs->contact_col, nr.Xk, ev->B, nr.grad,
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 2047 "paper/opt.nw"
+#line 2048 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.solver), free(nr.S);
   return rc;
@@ -146,7 +147,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 2026 "paper/opt.nw"
+#line 2027 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))
