@@ -111,26 +111,26 @@ typedef struct {
   double *S;    /* m x m: dT/ds, then I - friction dT/ds */
   double *mu;   /* nc: mu on the normal unknowns */
   double *G2;   /* N + 1: the gradient of mu'T at fixed bounds */
-} Coulomb_work;
+} Coulomb_scratch;
 
-static void work_free(Coulomb_work *w)
+static void scratch_free(Coulomb_scratch *w)
 {
   free(w->lam), free(w->held), free(w->k), free(w->c);
   free(w->v), free(w->S), free(w->mu), free(w->G2);
 }
 
-static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
+static int scratch_alloc(const Model *md, Coulomb_scratch *w, Status *st)
 {
   size_t n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
-  *w = (Coulomb_work) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
-                        malloc((nt + 1) * sizeof(int)), malloc((nt + 1) * sizeof(int)),
-                        malloc((nt + 1) * sizeof(double)),
-                        malloc((nt * nt + 1) * sizeof(double)),
-                        calloc(nc + 1, sizeof(double)),
-                        malloc(md->mesh->ncol * sizeof(double)) };
+  *w = (Coulomb_scratch) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
+                           malloc((nt + 1) * sizeof(int)), malloc((nt + 1) * sizeof(int)),
+                           malloc((nt + 1) * sizeof(double)),
+                           malloc((nt * nt + 1) * sizeof(double)),
+                           calloc(nc + 1, sizeof(double)),
+                           malloc(md->mesh->ncol * sizeof(double)) };
   if (w->lam && w->held && w->k && w->c && w->v && w->S && w->mu && w->G2)
     return STATUS_OK;
-  work_free(w);
+  scratch_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
 #line 336 "paper/coulomb.nw"
@@ -207,7 +207,7 @@ static int coulomb_multiplier(int m, double friction, double *S, double *v,
 /* v[a] = friction dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
-                        Coulomb_work *w)
+                        Coulomb_scratch *w)
 {
   const Dofs *d = md->dofs;
   for (int a = 0; a < m; a++) {
@@ -218,8 +218,8 @@ static void coulomb_rhs(const Model *md, const Objective *o, int m,
   }
 }
 
-static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
-                         double *G, Status *st)
+static int coulomb_terms(const Model *md, const Objective *o,
+                         Coulomb_scratch *w, double *G, Status *st)
 {
   double friction = md->problem->friction;
   int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, NULL, st);
@@ -237,10 +237,10 @@ static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
 
 int coulomb_gradient(const Model *md, const Objective *o, double *G, Status *st)
 {
-  Coulomb_work w;
-  int rc = work_alloc(md, &w, st);
+  Coulomb_scratch w;
+  int rc = scratch_alloc(md, &w, st);
   if (rc) return rc;
   rc = coulomb_terms(md, o, &w, G, st);
-  work_free(&w);
+  scratch_free(&w);
   return rc;
 }

@@ -169,8 +169,8 @@ static int gradient_terms(const Model *md, Objective_kind kind, double *v,
   return STATUS_OK;
 }
 
-/* the work vectors of gradient_terms: 5 n, then dT and dw (nc + 1 each) */
-static int gradient_work(const Model *md, double **v, char **held, Status *st)
+/* the scratch vectors of gradient_terms: 5 n, then dT and dw (nc + 1 each) */
+static int gradient_scratch(const Model *md, double **v, char **held, Status *st)
 {
   size_t n = md->dofs->n, nk = md->dofs->nc + md->dofs->nt;
   *v = calloc(5 * n + 2 * nk + 2, sizeof **v);
@@ -188,7 +188,7 @@ int objective_gradient_fixed(const Model *md, const Objective *o,
     return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
   double *v, J;
   char *held;
-  int rc = gradient_work(md, &v, &held, st), n = md->dofs->n, nc = md->dofs->nc;
+  int rc = gradient_scratch(md, &v, &held, st), n = md->dofs->n, nc = md->dofs->nc;
   if (rc) return rc;
   double *dT = v + 5 * n, *dw = dT + nc + 1;
   if (o) rc = objective_partials(md, o, &J, dT, dw, st);

@@ -15,15 +15,15 @@ typedef struct {
   double *X0;             /* n: the design at y = 0, in B */
   double *R;              /* n x ny, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is J / sigma */
-  double *S, *Z;          /* n x n, n x ny: work of the metric */
+  double *S, *Z;          /* n x n, n x ny: scratch of the metric */
   gsl_matrix *A;          /* n x 2n: the area's and the faces' normals */
   Design_multipliers *mult;  /* of the iterate's KKT conditions */
   char *fixed, *faces;    /* 4n - 2 each: the faces fixed at the start, at
                              the last iterate (1 each, in opt_constraints' order) */
-  double *X, *w;          /* n each: work */
+  double *X, *w;          /* n each: scratch */
   int *rows, nrows;       /* 4n - 2: the inequalities that vary with y, as
                              many as nrows, passed to NLopt (below) */
-  double *c;              /* 4n - 2: work, all inequalities */
+  double *c;              /* 4n - 2: scratch, all inequalities */
   double best, best_noise;  /* the lowest J of an iterate, its rounding */
   double *bestX;          /* n: the last accepted iterate */
   int k;                  /* accepted iterates so far */
@@ -251,22 +251,22 @@ int opt_mma(Evaluator *ev, double *X)
 {
   int n = ev->n, rc = STATUS_OK;
   size_t nn = (size_t) n * n;
-  double *work = malloc((3 * nn + 12 * (size_t) n + 2) * sizeof *work);
+  double *scratch = malloc((3 * nn + 12 * (size_t) n + 2) * sizeof *scratch);
   Mma q = { .ev = ev, .n = n, .best = HUGE_VAL, .bestX = X,
             .fixed = malloc(8 * (size_t) n), .A = gsl_matrix_alloc(n, 2 * n),
             .mult = design_multipliers_new(ev->B, ev->st),
             .rows = malloc(4 * (size_t) n * sizeof(int)) };
-  if (!work || !q.fixed || !q.A || !q.mult || !q.rows)
+  if (!scratch || !q.fixed || !q.A || !q.mult || !q.rows)
     rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (int more = !rc; more && !rc; ) {
-    q.S = work, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
+    q.S = scratch, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
     q.X = q.X0 + n, q.w = q.X + n, q.faces = q.fixed + 4 * n;
     double *y = q.w + n, *tol = y + n;          /* n - 1 and 4n - 2 */
     q.c = tol + 4 * n;                          /* 4n - 2 */
     if ((rc = opt_evaluate(ev, X)) || (rc = mma_setup(&q, X))) break;
     rc = mma_run(&q, y, tol, &more);
   }
-  free(work), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
+  free(scratch), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
 #line 1592 "paper/opt.nw"
@@ -331,7 +331,7 @@ q->fresh = q->stalled = 0;
 static void mma_varying(Mma *q)
 {
   int m = 4 * q->n - 2;
-  double top = 0, *g = q->X;         /* ny <= n: the row, in work */
+  double top = 0, *g = q->X;         /* ny <= n: the row, in scratch */
   for (int k = 0; k < m; k++) top = fmax(top, mma_row(q, k, g));
   q->nrows = 0;
   for (int k = 0; k < m; k++)

@@ -8,10 +8,10 @@ typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
-} Projgrad_work;
+} Projgrad_scratch;
 
 #line 679 "paper/opt.nw"
-static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
+static int projgrad_step(Evaluator *ev, double *t, Projgrad_scratch *w,
                          int *accepted)
 {
   int n = ev->n, rc;
@@ -40,9 +40,9 @@ int opt_projgrad(Evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
   double t = ev->tau, pg;
-  double *work = malloc(4 * n * sizeof *work);
-  Projgrad_work w = { work, work + n, work + 2 * n, work + 3 * n };
-  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  double *scratch = malloc(4 * n * sizeof *scratch);
+  Projgrad_scratch w = { scratch, scratch + n, scratch + 2 * n, scratch + 3 * n };
+  if (!scratch) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (;; k++) {
     if ((rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) break;
     int stop = opt_report_iterate(ev, k, pg);
@@ -69,6 +69,6 @@ if (why) {
   }
   ev->rep->iterations = k;
   memcpy(X, ev->X, n * sizeof *X);
-  free(work);
+  free(scratch);
   return rc;
 }

@@ -180,10 +180,10 @@ gsl_vector_free(g);
 int opt_slsqp(Evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
-  double *work = malloc(((size_t) n * n + 2 * n + m) * sizeof *work);
+  double *scratch = malloc(((size_t) n * n + 2 * n + m) * sizeof *scratch);
   Slsqp q = { ev, NULL, { n, NULL, NULL, 1 }, HUGE_VAL, 0, X, 0, 0, 0, 0 };
-  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
-  q.metric.R = work, q.metric.X0 = work + (size_t) n * n;
+  if (!scratch) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  q.metric.R = scratch, q.metric.X0 = scratch + (size_t) n * n;
   double *y = q.metric.X0 + n, *tol = y + n, f;
   for (int more = 1; more; ) {
     memcpy(q.metric.X0, X, n * sizeof *X);
@@ -228,6 +228,6 @@ q.fresh = q.stalled = 0;
 (void) f;
 #line 1147 "paper/opt.nw"
   }
-  free(work);
+  free(scratch);
   return rc;
 }

@@ -94,10 +94,10 @@ static double rcond(gsl_matrix *M)
 {
   size_t n = M->size1;
   gsl_matrix *V = gsl_matrix_alloc(n, n);
-  gsl_vector *sv = gsl_vector_alloc(n), *work = gsl_vector_alloc(n);
-  int bad = gsl_linalg_SV_decomp(M, V, sv, work);
+  gsl_vector *sv = gsl_vector_alloc(n), *scratch = gsl_vector_alloc(n);
+  int bad = gsl_linalg_SV_decomp(M, V, sv, scratch);
   double rc = bad ? 0 : gsl_vector_get(sv, n - 1) / gsl_vector_get(sv, 0);
-  gsl_matrix_free(V), gsl_vector_free(sv), gsl_vector_free(work);
+  gsl_matrix_free(V), gsl_vector_free(sv), gsl_vector_free(scratch);
   return rc == rc ? rc : 0;                      /* NaN: singular */
 }
 
