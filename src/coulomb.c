@@ -7,9 +7,9 @@
 #line 174 "paper/coulomb.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
-static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+static void coulomb_bounds(const Problem *p, const Fem_dofs *d, const double *T,
                            double *slip);
-static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+static void coulomb_start(const Problem *p, const Mesh *m, const Fem_dofs *d,
                           const double *b, double *slip);
 static int coulomb_goes_on(const Model *md, int rounding, double before);
 static int coulomb_failed(const Model *md, int stalled, double mark, Status *st);
@@ -81,7 +81,7 @@ static double coulomb_change(const double *old, const double *T, int nc)
   return diff == 0 ? 0 : diff / size;
 }
 #line 286 "paper/coulomb.nw"
-static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+static void coulomb_bounds(const Problem *p, const Fem_dofs *d, const double *T,
                            double *slip)
 {
   int c = 0;
@@ -92,7 +92,7 @@ static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
   }
 }
 #line 304 "paper/coulomb.nw"
-static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+static void coulomb_start(const Problem *p, const Mesh *m, const Fem_dofs *d,
                           const double *b, double *slip)
 {
   double W = 0, length = 0;
@@ -138,7 +138,7 @@ static int scratch_alloc(const Model *md, Coulomb_scratch *w, Status *st)
    normal unknown c at its node, held with T_c > 0; returns m */
 static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   int c = 0, m = 0;
   for (int k = 0; k < d->nt; k++) {
     while (c < d->nc && d->contact_col[c] < d->tangent_col[k]) c++;
@@ -164,7 +164,7 @@ static double row_times(const cholmod_sparse *A, int j, const double *q)
 static int coulomb_sensitivity(const Model *md, int m, const int *kk,
                                const int *cc, double *S, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
   if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
   int rc = STATUS_OK;
@@ -209,7 +209,7 @@ static int coulomb_multiplier(int m, double friction, double *S, double *v,
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
                         Coulomb_scratch *w)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   for (int a = 0; a < m; a++) {
     int t = d->tangent[w->k[a]];
     double sigma = md->T[d->nc + w->k[a]] > 0 ? -1 : 1;

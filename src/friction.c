@@ -2,21 +2,21 @@
 #include <math.h>
 #include "friction.h"
 #line 400 "paper/friction.nw"
-void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
+void friction_tresca_bounds(const Problem *p, const Mesh *m, const Fem_dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
 #line 409 "paper/friction.nw"
-double friction_work(const Dofs *d, const double *slip, const double *Q)
+double friction_work(const Fem_dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
 #line 421 "paper/friction.nw"
-void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
+void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
                        const double *Q, double *G)
 {
   const double *xy = m->xy;

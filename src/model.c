@@ -161,7 +161,7 @@ void model_free(Model *md)
 #line 406 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   int nc = d->nc, N1 = md->problem->N + 1, rc;
   if (nc == 0)                         /* every contact node held: nothing to see */
     return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
@@ -184,7 +184,7 @@ for (int c = 0; c < nc; c++)
 #line 491 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   double *r = malloc(d->ndof * sizeof *r);
   if (!r) return status_set(st, STATUS_MEMORY, "summary: out of memory "
                             "for the reactions of %d DOFs", d->ndof);

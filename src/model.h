@@ -14,7 +14,7 @@ typedef struct {
   const Problem *problem; /* the problem (not owned) */
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
   Mesh *mesh;           /* moved to the last design solved */
-  Dofs *dofs;           /* unknowns and contact DOFs I */
+  Fem_dofs *dofs;           /* unknowns and contact DOFs I */
   Hooke hooke;          /* Hooke's law of the problem's plane model */
   cholmod_sparse *A;    /* A(X), n x n */
   double *b;            /* n: F(X) + P(X) */

@@ -9,7 +9,7 @@
 static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int i = 0; i < d->n; i++)
@@ -29,7 +29,7 @@ static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   const Sparse_index *Ap = md->A->p, *Ai = md->A->i;
   const double *Ax = md->A->x;
   for (int c = 0; c < d->nc; c++) {
@@ -111,7 +111,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   double *dw = malloc(((size_t) d->nt + 1) * sizeof *dw);
   if (!dw) return status_set(st, STATUS_MEMORY, "objective: out of memory");
   for (int k = 0; k < d->nt; k++) {
@@ -144,7 +144,7 @@ static double state_rounding(const Model *md, const double *w)
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
                           char *held, double *G, double *dJ, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   int n = d->n, nc = d->nc, rc;
   double *AQ = v, *g = AQ + n, *lam = g + n, *u = lam + n, *vb = u + n;
   double *dT = vb + n, *dw = dT + nc + 1;

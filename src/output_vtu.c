@@ -51,7 +51,7 @@ static void vtu_displacement(const Vtu_state *s, int which, void *values)
 /* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
 static void vtu_contact(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = s->md->dofs;
+  const Fem_dofs *d = s->md->dofs;
   double *v = values;
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);
   for (int c = 0; c < d->nc; c++) {
@@ -72,7 +72,7 @@ static void vtu_contact_node(const Vtu_state *s, int which, void *values)
 /* the nodal friction force T_t [N/m], 0 where u1 is held */
 static void vtu_tangential(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = s->md->dofs;
+  const Fem_dofs *d = s->md->dofs;
   double *v = values;
   (void) which;
   memset(v, 0, s->md->mesh->nnodes * sizeof *v);

@@ -25,7 +25,7 @@
    contact number c, the contact diagonals multiplied by 1 + shift */
 static gsl_matrix *dense_schur(const Model *md, double shift)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   int n = d->n, nc = d->nc, ni = n - nc, *is_c = calloc(n, sizeof *is_c), *pos = malloc(n * sizeof *pos);
   gsl_matrix *A = gsl_matrix_calloc(n, n);
   const Sparse_index *Ap = md->A->p, *Ai = md->A->i;

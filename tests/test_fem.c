@@ -55,7 +55,7 @@ static void boundary_forces(const Mesh *m, const Hooke *H,
    constant strain (1/2 e'De times the area of the body), zero to the
    square of rounding for the rigid motions (as 1/2 u'Au it would be of
    the order of rounding itself), and 1/2 u'Au - b'u for any u and b */
-static void energy_checks(const Mesh *m, const Dofs *d, const Hooke *H,
+static void energy_checks(const Mesh *m, const Fem_dofs *d, const Hooke *H,
                           const cholmod_sparse *A, const double grad[4],
                           Plane_model model)
 {
@@ -112,7 +112,7 @@ static void patch_test(Plane_model model)
   double X[17];
   design(N, X);
   check(mesh_move(m, X, &st) == 0, "patch mesh moves to a design (%s)", st.msg);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   check(d->n == 2 * m->nnodes && d->nc == N + 1, "a free body: every DOF is unknown");
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
   Hooke H = fem_hooke(&s);
@@ -164,7 +164,7 @@ static void traction_load(void)
   Mesh *m = mesh_new(&s, &st);
   double X[17] = { 0 };
   mesh_move(m, X, &st);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   double *b = calloc(d->n, sizeof *b), sum[2] = { 0, 0 }, moment = 0;
   fem_load(m, d, &s, b);
   for (int k = 0; k < m->nnodes; k++)
@@ -188,7 +188,7 @@ static void traction_load(void)
 
 /* the pattern as it was made until issue 14: every element's 6 x 6
    couplings as triplets, sorted and summed by CHOLMOD */
-static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_common *cm)
+static cholmod_sparse *triplet_pattern(const Mesh *m, const Fem_dofs *d, cholmod_common *cm)
 {
   cholmod_triplet *T = cholmod_l_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri, 0,
                                                 CHOLMOD_REAL, cm);
@@ -216,7 +216,7 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   test_start(&cm);
   s.side[SIDE_LEFT].kind = left, s.side[SIDE_RIGHT].kind = right, s.side[SIDE_TOP].kind = top;
   Mesh *m = mesh_new(&s, &st);
-  Dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
+  Fem_dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
   cholmod_sparse *A = d ? fem_stiffness_new(m, d, &cm, &st) : NULL;
   cholmod_sparse *B = d ? triplet_pattern(m, d, &cm) : NULL;
   int same = A && B && A->nrow == B->nrow && A->ncol == B->ncol && A->sorted && A->packed
@@ -261,7 +261,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
   double X[17], area = 0, want[2], sum[2] = { 0, 0 }, scale;
   design(N, X);
   mesh_move(m, X, &st);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
   Hooke H = fem_hooke(&s);
   fem_stiffness_fill(A, m, d, &H, &st);

@@ -270,7 +270,7 @@ static void test_large_g(void)
   char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=1e12" };
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "g = 1e12: solved: %s", c.st.msg)) {
-    const Dofs *d = c.md->dofs;
+    const Fem_dofs *d = c.md->dofs;
     int touching = 0, stuck = 0;
     for (int k = 0, j = 0; k < d->nt; k++) {
       while (j < d->nc && d->contact_col[j] < d->tangent_col[k]) j++;
@@ -312,7 +312,7 @@ static void test_coulomb(const char *F)
   snprintf(pf, sizeof pf, "contact.friction=%s", F);
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "coulomb F = %s: converged: %s", F, c.st.msg)) {
-    const Dofs *d = c.md->dofs;
+    const Fem_dofs *d = c.md->dofs;
     double f = atof(F), Tmax = max_abs(c.md->T, d->nc), umax = max_abs(c.md->Q, d->n);
     double over = 0, miss = 0;
     int slipping = 0;
@@ -346,7 +346,7 @@ static void test_gradcheck(const char *g, const char *shape)
     close_case(&c);
     return;
   }
-  const Dofs *d = c.md->dofs;
+  const Fem_dofs *d = c.md->dofs;
   int stick = 0, slip = 0;
   for (int k = 0; k < d->nt; k++) {
     double u = fabs(c.md->Q[d->tangent[k]]);
@@ -386,7 +386,7 @@ static void test_threshold(void)
   Case c;
   if (!check(open_case(&c, 2, ov) == 0, "threshold: solved")) { close_case(&c); return; }
   Problem *p = &c.s.problem;
-  const Dofs *d = c.md->dofs;
+  const Fem_dofs *d = c.md->dofs;
   int k = -1;
   for (int j = 0; j + 1 < d->nt; j++)      /* a stick node beside a slipping one */
     if (c.md->Q[d->tangent[j]] == 0 && c.md->Q[d->tangent[j + 1]] != 0) k = j;

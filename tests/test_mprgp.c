@@ -40,7 +40,7 @@ static void open_pair(Case c[2], int n, char **ov)
 /* nodes in contact (Q = lo, exactly) and sticking (u1 = 0, exactly) */
 static void count_held(const Model *md, int *contact, int *stick)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   *contact = *stick = 0;
   for (int c = 0; c < d->nc; c++) *contact += md->Q[d->contact[c]] == md->lo[c];
   for (int k = 0; k < d->nt; k++) *stick += md->Q[d->tangent[k]] == 0;
@@ -79,7 +79,7 @@ static void test_tresca(const char *g, const char *refine, int *mixed)
   open_pair(c, 3, ov);
   compare(c, what);
   if (!c[1].rc) {
-    const Dofs *d = c[1].md->dofs;
+    const Fem_dofs *d = c[1].md->dofs;
     int slip = 0;
     for (int k = 0; k < d->nt; k++) slip += c[1].md->Q[d->tangent[k]] != 0;
     *mixed += slip > 0 && slip < d->nt;
