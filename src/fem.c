@@ -73,9 +73,9 @@ void fem_dofs_free(Fem_dofs *d)
   free(d);
 }
 #line 243 "paper/fem.nw"
-Hooke fem_hooke(const Problem *p)
+Fem_hooke fem_hooke(const Problem *p)
 {
-  Hooke H;
+  Fem_hooke H;
   double (*D)[3] = H.D;
   double mu = p->young / (2 * (1 + p->nu));
   double lambda = p->model == MODEL_PLANE_STRAIN
@@ -140,7 +140,7 @@ double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
   return a2;
 }
 
-void fem_element_stress(const Hooke *H, const long double e[3], long double s[3])
+void fem_element_stress(const Fem_hooke *H, const long double e[3], long double s[3])
 {
   for (int r = 0; r < 3; r++) {
     s[r] = 0;
@@ -160,7 +160,7 @@ static double fem_element_B(const double xy[6], double B[3][6])
   return area2;
 }
 #line 399 "paper/fem.nw"
-void fem_element_stiffness(const double xy[6], const Hooke *H,
+void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
@@ -291,7 +291,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
 }
 #line 586 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
-                       const Hooke *H, Status *st)
+                       const Fem_hooke *H, Status *st)
 {
   memset(A->x, 0, (size_t) ((Sparse_index *) A->p)[A->ncol] * sizeof(double));
   for (int t = 0; t < m->ntri; t++) {
@@ -371,7 +371,7 @@ static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Side_id side,
   }
 }
 #line 734 "paper/fem.nw"
-void fem_reactions(const Mesh *m, const Fem_dofs *d, const Hooke *H,
+void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
   memset(r, 0, d->ndof * sizeof *r);
@@ -413,7 +413,7 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
   return owner;
 }
 #line 813 "paper/fem.nw"
-double fem_energy(const Mesh *m, const Fem_dofs *d, const Hooke *H,
+double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;

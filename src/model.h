@@ -15,7 +15,7 @@ typedef struct {
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
   Mesh *mesh;           /* moved to the last design solved */
   Fem_dofs *dofs;           /* unknowns and contact DOFs I */
-  Hooke hooke;          /* Hooke's law of the problem's plane model */
+  Fem_hooke hooke;          /* Hooke's law of the problem's plane model */
   cholmod_sparse *A;    /* A(X), n x n */
   double *b;            /* n: F(X) + P(X) */
   double *lo;           /* nc: the bounds -X_i of the contact DOFs */

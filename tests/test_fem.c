@@ -26,7 +26,7 @@ static double norm_inf(const double *v, int n)
 
 /* consistent nodal forces of the constant traction sigma.n on every
    boundary edge (outward normal of a counter-clockwise boundary) */
-static void boundary_forces(const Mesh *m, const Hooke *H,
+static void boundary_forces(const Mesh *m, const Fem_hooke *H,
                             const double grad[4], double *f)
 {
   double e[3] = { grad[0], grad[3], grad[1] + grad[2] };  /* e11 e22 2e12 */
@@ -55,7 +55,7 @@ static void boundary_forces(const Mesh *m, const Hooke *H,
    constant strain (1/2 e'De times the area of the body), zero to the
    square of rounding for the rigid motions (as 1/2 u'Au it would be of
    the order of rounding itself), and 1/2 u'Au - b'u for any u and b */
-static void energy_checks(const Mesh *m, const Fem_dofs *d, const Hooke *H,
+static void energy_checks(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                           const cholmod_sparse *A, const double grad[4],
                           Plane_model model)
 {
@@ -115,7 +115,7 @@ static void patch_test(Plane_model model)
   Fem_dofs *d = fem_dofs_new(m, &s, &st);
   check(d->n == 2 * m->nnodes && d->nc == N + 1, "a free body: every DOF is unknown");
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
-  Hooke H = fem_hooke(&s);
+  Fem_hooke H = fem_hooke(&s);
   fem_stiffness_fill(A, m, d, &H, &st);
   check(A->sorted && A->packed && A->stype == 0, "stiffness is sorted, packed, both triangles");
   double grad[4] = { 1e-3, -2e-3, 0.5e-3, 3e-3 };   /* du1/dx du1/dy du2/dx du2/dy */
@@ -263,7 +263,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
   mesh_move(m, X, &st);
   Fem_dofs *d = fem_dofs_new(m, &s, &st);
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
-  Hooke H = fem_hooke(&s);
+  Fem_hooke H = fem_hooke(&s);
   fem_stiffness_fill(A, m, d, &H, &st);
   double *u = malloc(d->n * sizeof *u), *g = malloc(d->n * sizeof *g),
          *b = malloc(d->n * sizeof *b), *r = malloc(d->ndof * sizeof *r);
