@@ -41,7 +41,7 @@ int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
   return STATUS_OK;
 }
 #line 487 "paper/opt.nw"
-int opt_evaluate(Evaluator *ev, const double *X)
+int opt_evaluate(Opt_evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
@@ -72,7 +72,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
 }
 #line 553 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
-int opt_report_iterate(Evaluator *ev, int iteration, double pg)
+int opt_report_iterate(Opt_evaluator *ev, int iteration, double pg)
 {
   double start = resources_clock();
   Opt_progress p = { iteration, ev->J, pg, ev->solves, ev->md->report.active,
@@ -87,7 +87,7 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
-int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
+int opt_idle_iterates(Opt_evaluator *ev, int k, double pg, int judged)
 {
   int measured = k == 0 || judged || pg < 0.5 * ev->pg_best
               || ev->J < ev->last_J - (ev->noise + ev->last_noise);
@@ -100,7 +100,7 @@ int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
 }
 
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
-void opt_idle_detail(Evaluator *ev)
+void opt_idle_detail(Opt_evaluator *ev)
 {
   Objective_kind k = ev->o->objective.kind;
   const char *J = objective_symbol(k), *u = objective_unit(k);
@@ -111,7 +111,7 @@ void opt_idle_detail(Evaluator *ev)
            ev->noise, u, ev->pg_last, ev->pg_best);
 }
 #line 624 "paper/opt.nw"
-const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
+const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX)
 {
   double pg;
   if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) return NULL;
@@ -159,7 +159,7 @@ void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *
 #line 2074 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
-static int opt_lift_off(Evaluator *ev, double *X)
+static int opt_lift_off(Opt_evaluator *ev, double *X)
 {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "lift_off");
   snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "a trial design "
@@ -174,7 +174,7 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  Status *st)
 {
   int n = B->N + 1, rc;
-  Evaluator ev = { .md = md, .B = B, .o = o, .n = n, .X = malloc(3 * n * sizeof(double)),
+  Opt_evaluator ev = { .md = md, .B = B, .o = o, .n = n, .X = malloc(3 * n * sizeof(double)),
                    .start = resources_clock(), .monitor = monitor, .data = data, .rep = rep,
                    .st = st };
   memset(rep, 0, sizeof *rep);

@@ -8,7 +8,7 @@
 #include "opt_private.h"
 #line 1276 "paper/opt.nw"
 typedef struct {
-  Evaluator *ev;
+  Opt_evaluator *ev;
   nlopt_opt opt;
   int n;                  /* N+1 */
   int ny;                 /* MMA's variables y: n - 1 less the fixed faces */
@@ -88,7 +88,7 @@ static int mma_faces(Mma *q, const double *X, char *face);
 /* J(X(y)) / sigma, and its gradient in y */
 static double mma_value(Mma *q, const double *y, double *grad)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   mma_design(q, y, q->X);
   if (design_violation(ev->B, q->X) > 0
       && (ev->failed = design_project(ev->B, q->X, q->X, NULL, ev->st))) {
@@ -121,7 +121,7 @@ static void mma_stop(Mma *q, const char *why)
 
 static void mma_accept(Mma *q)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   if (ev->J < q->best) q->best = ev->J, q->best_noise = ev->noise;
   q->stalled = 0;
   q->fresh += q->k > 0;
@@ -137,7 +137,7 @@ static void mma_accept(Mma *q)
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   const Design_multipliers *mu = q->mult;
   int n = q->n, rc;
   double *c = q->A->data, near = -1e-3 * ev->o->tol;  /* 4n - 2 <= 2n^2; A is
@@ -211,7 +211,7 @@ static int mma_setup(Mma *q, const double *X)
 #line 1521 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   int n = q->n, m = q->ny, rc;
   double start = resources_clock();
   if ((rc = model_contact_stiffness(ev->md, q->S, ev->st))) return rc;
@@ -247,7 +247,7 @@ else {
 }
 #line 1565 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
-int opt_mma(Evaluator *ev, double *X)
+int opt_mma(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, rc = STATUS_OK;
   size_t nn = (size_t) n * n;
@@ -272,7 +272,7 @@ int opt_mma(Evaluator *ev, double *X)
 #line 1592 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 

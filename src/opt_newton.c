@@ -7,7 +7,7 @@
 #include "newton.h"
 #line 1772 "paper/opt.nw"
 typedef struct {
-  Evaluator *ev;
+  Opt_evaluator *ev;
   Newton_workspace *solver; /* the model problem's solver */
   Newton_model mdl;       /* the model at the iterate */
   int n, m;               /* design nodes, contact unknowns */
@@ -27,7 +27,7 @@ typedef struct {
 #line 1798 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
-  Evaluator *ev = nr->ev;
+  Opt_evaluator *ev = nr->ev;
   int n = nr->n, m = nr->m, rc;
   double mean = 0, Gmax = 0;
   const int *col = model_contact_columns(ev->md);
@@ -56,7 +56,7 @@ nr->rho_max = 2 * sqrt(G2) / (DBL_EPSILON * ev->B->C0 * rmin);
 #line 1826 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
-  Evaluator *ev = nr->ev;
+  Opt_evaluator *ev = nr->ev;
   Newton_report nrep;
   int n = nr->n, rc;
   double start = resources_clock(), E0 = nr->Ek, noise0 = nr->noisek;
@@ -121,7 +121,7 @@ static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
   return 1;
 }
 #line 2009 "paper/opt.nw"
-int opt_newton(Evaluator *ev, double *X)
+int opt_newton(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, m = model_contact_count(ev->md), rc = STATUS_OK, k = 0, accepted = 1;
   size_t mm = (size_t) (m > 0 ? m : 1);

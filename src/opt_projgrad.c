@@ -11,7 +11,7 @@ typedef struct {
 } Projgrad_scratch;
 
 #line 679 "paper/opt.nw"
-static int projgrad_step(Evaluator *ev, double *t, Projgrad_scratch *w,
+static int projgrad_step(Opt_evaluator *ev, double *t, Projgrad_scratch *w,
                          int *accepted)
 {
   int n = ev->n, rc;
@@ -36,7 +36,7 @@ if ((rc = opt_evaluate(ev, Xn))) return rc;
   return STATUS_OK;
 }
 #line 710 "paper/opt.nw"
-int opt_projgrad(Evaluator *ev, double *X)
+int opt_projgrad(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
   double t = ev->tau, pg;

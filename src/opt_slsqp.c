@@ -15,7 +15,7 @@ typedef struct {
 } Metric;
 #line 987 "paper/opt.nw"
 typedef struct {
-  Evaluator *ev;
+  Opt_evaluator *ev;
   nlopt_opt opt;
   Metric metric;
   double best;            /* the lowest E evaluated */
@@ -81,7 +81,7 @@ static void slsqp_stop(Slsqp *q, const char *why)
 }
 #line 1014 "paper/opt.nw"
 /* delta E + C0 v |grad E|_1 at the evaluator's design, v its violation of B */
-static double slsqp_band(const Evaluator *ev, double v)
+static double slsqp_band(const Opt_evaluator *ev, double v)
 {
   double g1 = 0;
   for (int i = 0; i < ev->n; i++) g1 += fabs(ev->G[i]);
@@ -92,7 +92,7 @@ static void slsqp_accept(Slsqp *q, double band);
 /* E(X(y)) / sigma, and its gradient in y */
 static double slsqp_value(Slsqp *q, unsigned n, const double *y, double *grad)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   const double *R = q->metric.R;
   double X[n], C0 = ev->B->C0;
   metric_design(&q->metric, C0, y, X);
@@ -126,7 +126,7 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
 #line 1064 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q, double band)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   if (ev->J < q->best) q->best = ev->J, q->best_band = band;
   q->stalled = 0;
   q->fresh += q->k > 0;
@@ -136,7 +136,7 @@ static void slsqp_accept(Slsqp *q, double band)
   q->k++;
 }
 #line 1081 "paper/opt.nw"
-static int metric_setup(Evaluator *ev, Metric *mt)
+static int metric_setup(Opt_evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
   double C0 = ev->B->C0, Gmax = 0;
@@ -177,7 +177,7 @@ gsl_vector_free(g);
   return rc;
 }
 #line 1131 "paper/opt.nw"
-int opt_slsqp(Evaluator *ev, double *X)
+int opt_slsqp(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
   double *scratch = malloc(((size_t) n * n + 2 * n + m) * sizeof *scratch);
