@@ -4,8 +4,8 @@
 #include <string.h>
 #include "fem.h"
 #line 148 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
-static int fem_side_holds(Side_id side, Bc_kind kind, int c);
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Bc_kind kind, int *held);
+static int fem_side_holds(Problem_side_id side, Bc_kind kind, int c);
 
 Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
@@ -43,7 +43,7 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
   return d;
 }
 #line 192 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
   int count = side == SIDE_TOP ? m->ncol : m->nrow;
@@ -55,7 +55,7 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
   }
 }
 #line 208 "paper/fem.nw"
-static int fem_side_holds(Side_id side, Bc_kind kind, int c)
+static int fem_side_holds(Problem_side_id side, Bc_kind kind, int c)
 {
   int normal = side == SIDE_TOP ? 1 : 0;
   return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
@@ -323,7 +323,7 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
 #line 635 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
-static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Side_id side,
+static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Side *load, int held, double *b);
 
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
@@ -353,7 +353,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
 #line 678 "paper/fem.nw"
-static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Side_id side,
+static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Side *load, int held, double *b)
 {
   int top = side == SIDE_TOP, count = top ? m->N : m->nrow - 1;
@@ -401,7 +401,7 @@ for (int a = 0; a < 6; a++)
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
-  Side_id on[SIDE_COUNT];
+  Problem_side_id on[SIDE_COUNT];
   int n = 0, owner = -1;
   if (i == 0) on[n++] = SIDE_LEFT;
   if (i == m->N) on[n++] = SIDE_RIGHT;

@@ -4,7 +4,7 @@
 
 #line 109 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
-typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Side_id;
+typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
    (u1 = 0 on left/right, u2 = 0 on top), or carries a traction. */
 typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Bc_kind;

@@ -156,7 +156,7 @@ static int read_material(Loader *L, Scene *s)
 }
 #line 2140 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
-static int read_traction(Loader *L, Scene *s, Side_id id)
+static int read_traction(Loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
   Side *d = &s->problem.side[id];
@@ -192,7 +192,7 @@ if (!(d->to <= hi))
 }
 #line 2181 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
-static int read_side(Loader *L, Scene *s, Side_id id)
+static int read_side(Loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
   Bc_kind *kind = &s->problem.side[id].kind;
@@ -251,7 +251,7 @@ static int read_sides(Loader *L, Scene *s)
 {
   int id, rc;
   for (id = 0; id < SIDE_COUNT; id++)
-    if ((rc = read_side(L, s, (Side_id)id))) return rc;
+    if ((rc = read_side(L, s, (Problem_side_id)id))) return rc;
   return 0;
 }
 #line 2284 "paper/scene.nw"
