@@ -324,7 +324,7 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
-                             const Side *load, int held, double *b);
+                             const Problem_side *load, int held, double *b);
 
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b)
@@ -354,7 +354,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
 }
 #line 678 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
-                             const Side *load, int held, double *b)
+                             const Problem_side *load, int held, double *b)
 {
   int top = side == SIDE_TOP, count = top ? m->N : m->nrow - 1;
   for (int e = 0; e < count; e++) {

@@ -64,9 +64,9 @@ static void top_support(FILE *f, Bc_kind kind, int n)
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
 #line 937 "paper/figures.nw"
-static double load_reach(const Side *sd, int k);
+static double load_reach(const Problem_side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
-static double side_reach(const Side *sd, int k)
+static double side_reach(const Problem_side *sd, int k)
 {
   switch (sd->kind) {
   case BC_CLAMPED: return WALL;
@@ -100,7 +100,7 @@ static Body_page body_page(const Plot *pl)
 }
 #line 982 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
-static void load_text(const Side *sd, char *buf, size_t size);
+static void load_text(const Problem_side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -129,7 +129,7 @@ static void body_fit(const Plot *pl, Body_page *L)
 static const double normal[SIDE_COUNT][2] = { { -1, 0 }, { 1, 0 }, { 0, 1 } };
 
 /* the tail and head of the arrows of side k, cm from the side */
-static void load_arrow(const Side *sd, int k, double tail[2], double head[2])
+static void load_arrow(const Problem_side *sd, int k, double tail[2], double head[2])
 {
   double P = hypot(sd->P[0], sd->P[1]), t[2] = { sd->P[0] / P, sd->P[1] / P };
   const double *n = normal[k];
@@ -143,7 +143,7 @@ static void load_arrow(const Side *sd, int k, double tail[2], double head[2])
 }
 
 /* how far the arrows of side k reach out of the body, cm */
-static double load_reach(const Side *sd, int k)
+static double load_reach(const Problem_side *sd, int k)
 {
   double tail[2], head[2];
   const double *n = normal[k];
@@ -151,7 +151,7 @@ static double load_reach(const Side *sd, int k)
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
 #line 1048 "paper/figures.nw"
-static void load_text(const Side *sd, char *buf, size_t size)
+static void load_text(const Problem_side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
   plot_enhanced_number(sd->P[0], p1, sizeof p1);
@@ -167,7 +167,7 @@ static void side_point(FILE *f, int k, const char *s, double dx, double dy)
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
 #line 1072 "paper/figures.nw"
-static void side_load(FILE *f, const Side *sd, int k, double ucm)
+static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
   double len = (sd->to - sd->from) * ucm, step;
@@ -213,7 +213,7 @@ static void side_name(const Problem *p, int k, char *buf, size_t size)
 /* x1 of the top's name, and its height above the top in cm */
 static void top_name_place(const Problem *p, const Body_page *L, double *x, double *up)
 {
-  const Side *t = &p->side[SIDE_TOP];
+  const Problem_side *t = &p->side[SIDE_TOP];
   double W = p->b - p->a, left = 0, right = 0;
   *x = p->a + 0.25 * W;
   *up = L->ext[SIDE_TOP] + 0.396;

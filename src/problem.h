@@ -14,7 +14,7 @@ typedef struct {
   double from, to;   /* BC_TRACTION: loaded interval of the side's own
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
-} Side;
+} Problem_side;
 #line 126 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
 #line 135 "paper/problem.nw"
@@ -36,7 +36,7 @@ typedef struct {
   double young, nu;
   Plane_model model;
   /* the conditions of the sides: Gamma_D and Gamma_P */
-  Side side[SIDE_COUNT];
+  Problem_side side[SIDE_COUNT];
   /* the body force F = (F1, F2), N/m^3, constant */
   double body_force[2];
   int has_body_force;  /* F != 0: only then is its load assembled */

@@ -159,7 +159,7 @@ static int read_material(Loader *L, Scene *s)
 static int read_traction(Loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
-  Side *d = &s->problem.side[id];
+  Problem_side *d = &s->problem.side[id];
   char v[2][STATUS_NUMBER];
   int rc;
   

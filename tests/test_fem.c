@@ -158,8 +158,8 @@ static void traction_load(void)
 {
   Problem s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
   s.side[SIDE_LEFT].kind = BC_CLAMPED;
-  s.side[SIDE_TOP] = (Side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
-  s.side[SIDE_RIGHT] = (Side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };
+  s.side[SIDE_TOP] = (Problem_side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
+  s.side[SIDE_RIGHT] = (Problem_side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };
   Status st = { 0, "" };
   Mesh *m = mesh_new(&s, &st);
   double X[17] = { 0 };
@@ -248,11 +248,11 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
 {
   int N = 16;
   Problem s = free_body(N, 2, 3, MODEL_PLANE_STRAIN);
-  Side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } };     /* the whole top */
-  Side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
-  s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Side) { left, 0, 0, { 0, 0 } };
-  s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Side) { right, 0, 0, { 0, 0 } };
-  s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Side) { top, 0, 0, { 0, 0 } };
+  Problem_side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } };     /* the whole top */
+  Problem_side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
+  s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Problem_side) { left, 0, 0, { 0, 0 } };
+  s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Problem_side) { right, 0, 0, { 0, 0 } };
+  s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Problem_side) { top, 0, 0, { 0, 0 } };
   s.body_force[0] = 3e7, s.body_force[1] = -2e8, s.has_body_force = 1;
   Status st = { 0, "" };
   cholmod_common cm;
