@@ -4,8 +4,8 @@
 #include <string.h>
 #include "fem.h"
 #line 148 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Problem_side_id side, Bc_kind kind, int *held);
-static int fem_side_holds(Problem_side_id side, Bc_kind kind, int c);
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held);
+static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c);
 
 Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
@@ -43,7 +43,7 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
   return d;
 }
 #line 192 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Problem_side_id side, Bc_kind kind, int *held)
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
   int count = side == SIDE_TOP ? m->ncol : m->nrow;
@@ -55,7 +55,7 @@ static void fem_hold_side(const Mesh *m, Problem_side_id side, Bc_kind kind, int
   }
 }
 #line 208 "paper/fem.nw"
-static int fem_side_holds(Problem_side_id side, Bc_kind kind, int c)
+static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c)
 {
   int normal = side == SIDE_TOP ? 1 : 0;
   return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);

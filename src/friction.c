@@ -35,7 +35,7 @@ void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
 int friction_side_holds(const Problem *p, int component)
 {
   for (int id = 0; id < SIDE_COUNT; id++) {
-    Bc_kind k = p->side[id].kind;
+    Problem_bc_kind k = p->side[id].kind;
     if (k == BC_CLAMPED || (k == BC_ROLLER && (id == SIDE_TOP) == (component == 1)))
       return 1;
   }

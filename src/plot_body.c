@@ -27,7 +27,7 @@ static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); 
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
-static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
+static void side_support(FILE *f, Problem_bc_kind kind, const char *x, const char *end,
                          int s, int n)
 {
   if (kind == BC_CLAMPED && s < 0)
@@ -49,7 +49,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
 #line 918 "paper/figures.nw"
-static void top_support(FILE *f, Bc_kind kind, int n)
+static void top_support(FILE *f, Problem_bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
     fprintf(f, "  set object rect from a, gamma to b, gamma + cy(%g) %s\n", WALL, hatch);

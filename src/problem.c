@@ -15,7 +15,7 @@ const char *problem_model_name(Plane_model m)
   return (unsigned)m <= MODEL_PLANE_STRAIN ? problem_model_names[m] : "?";
 }
 
-const char *problem_bc_name(Bc_kind k)
+const char *problem_bc_name(Problem_bc_kind k)
 {
   return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
 }

@@ -7,10 +7,10 @@
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
    (u1 = 0 on left/right, u2 = 0 on top), or carries a traction. */
-typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Bc_kind;
+typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Problem_bc_kind;
 
 typedef struct {
-  Bc_kind kind;      /* the condition on the side */
+  Problem_bc_kind kind;      /* the condition on the side */
   double from, to;   /* BC_TRACTION: loaded interval of the side's own
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
@@ -54,7 +54,7 @@ extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
 const char *problem_model_name(Plane_model m);
-const char *problem_bc_name(Bc_kind k);
+const char *problem_bc_name(Problem_bc_kind k);
 const char *problem_contact_name(Contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);

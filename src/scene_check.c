@@ -195,7 +195,7 @@ if (!(d->to <= hi))
 static int read_side(Loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
-  Bc_kind *kind = &s->problem.side[id].kind;
+  Problem_bc_kind *kind = &s->problem.side[id].kind;
   int rc;
   if ((rc = scene_get(L, s, sec, "bc"))
       || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[*kind])))

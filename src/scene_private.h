@@ -31,7 +31,7 @@ typedef struct {
 } Key;
 
 _Static_assert(sizeof(Plane_model) == sizeof(int)
-               && sizeof(Bc_kind) == sizeof(int)
+               && sizeof(Problem_bc_kind) == sizeof(int)
                && sizeof(Contact_law) == sizeof(int)
                && sizeof(Qp_method) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)

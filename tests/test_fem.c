@@ -208,7 +208,7 @@ static cholmod_sparse *triplet_pattern(const Mesh *m, const Fem_dofs *d, cholmod
 
 /* fem_stiffness_new's pattern is the triplets', on a free body and with
    clamped, roller and free sides, on several meshes */
-static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind top)
+static void pattern(int N, int M, int R, Problem_bc_kind left, Problem_bc_kind right, Problem_bc_kind top)
 {
   Problem s = free_body(N, M, R, MODEL_PLANE_STRESS);
   Status st = { 0, "" };
@@ -244,7 +244,7 @@ static int on_side(const Mesh *m, int node, int o)
    component, since K annihilates the translations; and every held DOF's
    reaction goes to a side that holds it, to the one it is normal to at a
    corner held by two, so that a roller takes no tangential force */
-static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
+static void reactions_balance(Problem_bc_kind left, Problem_bc_kind right, Problem_bc_kind top)
 {
   int N = 16;
   Problem s = free_body(N, 2, 3, MODEL_PLANE_STRAIN);
