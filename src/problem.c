@@ -10,7 +10,7 @@ const char *const problem_bc_names[] = {"free", "clamped", "roller",
 const char *const problem_contact_names[] = {"frictionless", "tresca",
                                              "coulomb", NULL};
 
-const char *problem_model_name(Plane_model m)
+const char *problem_model_name(Problem_plane_model m)
 {
   return (unsigned)m <= MODEL_PLANE_STRAIN ? problem_model_names[m] : "?";
 }

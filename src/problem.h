@@ -16,7 +16,7 @@ typedef struct {
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Problem_side;
 #line 126 "paper/problem.nw"
-typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Plane_model;
+typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Problem_plane_model;
 #line 135 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Contact_law;
@@ -34,7 +34,7 @@ typedef struct {
   /* the material: isotropic, unit thickness, Young's modulus in N/m^2
      (the scene's key E) and Poisson's ratio */
   double young, nu;
-  Plane_model model;
+  Problem_plane_model model;
   /* the conditions of the sides: Gamma_D and Gamma_P */
   Problem_side side[SIDE_COUNT];
   /* the body force F = (F1, F2), N/m^3, constant */
@@ -53,7 +53,7 @@ typedef struct {
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
-const char *problem_model_name(Plane_model m);
+const char *problem_model_name(Problem_plane_model m);
 const char *problem_bc_name(Problem_bc_kind k);
 const char *problem_contact_name(Contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */

@@ -30,7 +30,7 @@ typedef struct {
   const char *meaning;       /* one line */
 } Key;
 
-_Static_assert(sizeof(Plane_model) == sizeof(int)
+_Static_assert(sizeof(Problem_plane_model) == sizeof(int)
                && sizeof(Problem_bc_kind) == sizeof(int)
                && sizeof(Contact_law) == sizeof(int)
                && sizeof(Qp_method) == sizeof(int)

@@ -7,7 +7,7 @@
 #include <string.h>
 #include "problem.h"
 
-static Problem free_body(int N, int M, int R, Plane_model model)
+static Problem free_body(int N, int M, int R, Problem_plane_model model)
 {
   Problem p;
   memset(&p, 0, sizeof p);

@@ -57,7 +57,7 @@ static void boundary_forces(const Mesh *m, const Fem_hooke *H,
    the order of rounding itself), and 1/2 u'Au - b'u for any u and b */
 static void energy_checks(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                           const cholmod_sparse *A, const double grad[4],
-                          Plane_model model)
+                          Problem_plane_model model)
 {
   const char *name = model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress";
   double e[3] = { grad[0], grad[3], grad[1] + grad[2] }, area = 0, U = 0;
@@ -101,7 +101,7 @@ static void energy_checks(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
   free(u), free(b), free(Au);
 }
 
-static void patch_test(Plane_model model)
+static void patch_test(Problem_plane_model model)
 {
   int N = 16, M = 2, R = 3;
   Problem s = free_body(N, M, R, model);
