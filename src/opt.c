@@ -25,7 +25,7 @@ const char *opt_metric_name(Opt_metric m)
   return (unsigned)m <= OPT_METRIC_EUCLIDEAN ? opt_metric_names[m] : "?";
 }
 #line 427 "paper/opt.nw"
-int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
+int opt_refusal(Opt_method m, const Objective *o, Problem_contact_law contact,
                 const char *path, Status *st)
 {
   if (m == OPT_NEWTON && contact == CONTACT_COULOMB)

@@ -20,7 +20,7 @@ const char *problem_bc_name(Problem_bc_kind k)
   return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
 }
 
-const char *problem_contact_name(Contact_law law)
+const char *problem_contact_name(Problem_contact_law law)
 {
   return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
 }

@@ -19,7 +19,7 @@ typedef struct {
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Problem_plane_model;
 #line 135 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
-  Contact_law;
+  Problem_contact_law;
 #line 140 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
@@ -42,7 +42,7 @@ typedef struct {
   int has_body_force;  /* F != 0: only then is its load assembled */
   /* the foundation {x2 <= 0}: frictionless, given friction with the slip
      bound g (Pa), or Coulomb friction with the coefficient friction */
-  Contact_law contact;
+  Problem_contact_law contact;
   double slip_bound;   /* CONTACT_TRESCA: g >= 0 */
   double friction;     /* CONTACT_COULOMB: the coefficient, >= 0 */
   int max_fixed_point; /* CONTACT_COULOMB: the most rounds of its fixed
@@ -55,7 +55,7 @@ extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
 const char *problem_model_name(Problem_plane_model m);
 const char *problem_bc_name(Problem_bc_kind k);
-const char *problem_contact_name(Contact_law law);
+const char *problem_contact_name(Problem_contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
 #line 103 "paper/problem.nw"

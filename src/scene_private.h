@@ -32,7 +32,7 @@ typedef struct {
 
 _Static_assert(sizeof(Problem_plane_model) == sizeof(int)
                && sizeof(Problem_bc_kind) == sizeof(int)
-               && sizeof(Contact_law) == sizeof(int)
+               && sizeof(Problem_contact_law) == sizeof(int)
                && sizeof(Qp_method) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int)
