@@ -9,7 +9,7 @@
 #include "scene.h"
 
 #line 479 "paper/scene.nw"
-typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
+typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
 typedef const char *Default_of(const char *key, int k, char *buf,
                                size_t size);
 #define AT(field) ((long)offsetof(Scene, field))
@@ -17,7 +17,7 @@ typedef const char *Default_of(const char *key, int k, char *buf,
 
 typedef struct {
   const char *sec, *key;     /* the section and the key */
-  Key_type type;             /* a real, an integer, a word, a text */
+  Scene_key_type type;             /* a real, an integer, a word, a text */
   const char *const *words;  /* the words a word (or design.initial) takes */
   long at;                   /* the offset of its value in a Scene */
   const char *unit;          /* m, Pa, ...; 1: a pure number; -: none */
