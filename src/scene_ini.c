@@ -195,7 +195,7 @@ static char *trim(char *s)
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Loader *L, const Entry *e)
 {
-  const Key *sel = scene_key_find(e->sec, e->key);
+  const Scene_key *sel = scene_key_find(e->sec, e->key);
   const char *w = *e->val ? e->val : sel->dflt;
   Entry *old;
   int i;

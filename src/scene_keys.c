@@ -62,7 +62,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   return buf;
 }
 #line 668 "paper/scene.nw"
-const Key scene_keys[] = {
+const Scene_key scene_keys[] = {
   
 #line 514 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
@@ -218,7 +218,7 @@ _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
 #line 686 "paper/scene.nw"
 /* the record of sec.key, or NULL */
-const Key *scene_key_find(const char *sec, const char *key)
+const Scene_key *scene_key_find(const char *sec, const char *key)
 {
   int i;
   for (i = 0; i < SCENE_NKEYS; i++)
@@ -253,7 +253,7 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
 }
 #line 728 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
-int scene_key_means(const Key *k, const char *w)
+int scene_key_means(const Scene_key *k, const char *w)
 {
   size_t n = strlen(w);
   const char *p;
@@ -266,7 +266,7 @@ int scene_key_means(const Key *k, const char *w)
 #line 2549 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
-static const char *default_text(const Key *k, char *buf, size_t size)
+static const char *default_text(const Scene_key *k, char *buf, size_t size)
 {
   const char *const *w;
   char v[8][32];
@@ -294,14 +294,14 @@ static const char *default_text(const Key *k, char *buf, size_t size)
 }
 #line 2581 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
-static const char *accepted_text(const Key *k, char *buf, size_t size)
+static const char *accepted_text(const Scene_key *k, char *buf, size_t size)
 {
   if (k->accepted) return k->accepted;
   return scene_name_list(k->words, buf, size);
 }
 
 /* buf = the meaning of k, and the words of its selector it needs */
-static const char *meaning_text(const Key *k, char *buf, size_t size)
+static const char *meaning_text(const Scene_key *k, char *buf, size_t size)
 {
   const char *p;
   snprintf(buf, size, "%s", k->meaning);

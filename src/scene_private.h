@@ -28,7 +28,7 @@ typedef struct {
                                 blank-separated (NULL: all of them) */
   const char *accepted;      /* the values accepted (NULL: the words) */
   const char *meaning;       /* one line */
-} Key;
+} Scene_key;
 
 _Static_assert(sizeof(Problem_plane_model) == sizeof(int)
                && sizeof(Problem_bc_kind) == sizeof(int)
@@ -42,20 +42,20 @@ _Static_assert(sizeof(Problem_plane_model) == sizeof(int)
 enum { SCENE_NKEYS = 55 };  /* the records of the table of keys */
 extern const char *const scene_side_names[];    /* left, right, top */
 extern const char *const scene_initial_names[]; /* arc, line, constant, file */
-extern const Key scene_keys[SCENE_NKEYS];       /* the table of keys */
+extern const Scene_key scene_keys[SCENE_NKEYS];       /* the table of keys */
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w);
 /* buf = the names, comma-separated (cut to size) */
 const char *scene_name_list(const char *const *names, char *buf,
                             size_t size);
 /* the record of sec.key, or NULL */
-const Key *scene_key_find(const char *sec, const char *key);
+const Scene_key *scene_key_find(const char *sec, const char *key);
 /* whether sec is a section of the table */
 int scene_section_known(const char *sec);
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
-int scene_key_means(const Key *k, const char *w);
+int scene_key_means(const Scene_key *k, const char *w);
 #line 751 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,

@@ -74,10 +74,10 @@ static const char *hint(const char *val)
 #line 1398 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
-static const char *loader_default(Loader *L, const Key *k, char *buf,
+static const char *loader_default(Loader *L, const Scene_key *k, char *buf,
                                   size_t size)
 {
-  const Key *sel;
+  const Scene_key *sel;
   const Entry *e;
   int w;
   if (!k->by) return k->dflt;
@@ -140,7 +140,7 @@ int scene_word(Loader *L, const char *sec, const char *key, int *k)
 /* the field of s that sec.key's record names = the value of sec.key */
 int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
 {
-  const Key *k = scene_key_find(sec, key);
+  const Scene_key *k = scene_key_find(sec, key);
   char *at = (char *)s + k->at;
   double x;
   int v, rc;
