@@ -11,7 +11,7 @@ static int nul_byte(Loader *L);
 static int long_line(Loader *L, const char *buf, int size);
 #line 941 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
-static int admit(Loader *L, Entry *e, const char *sec, const char *key,
+static int admit(Loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
 {
   char where[640], list[256];
@@ -40,7 +40,7 @@ if (!scene_key_find(sec, key))
 }
 #line 975 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Entry *scene_find(Loader *L, const char *sec, const char *key)
+Scene_entry *scene_find(Loader *L, const char *sec, const char *key)
 {
   int i;
   for (i = 0; i < L->n; i++)
@@ -50,7 +50,7 @@ Entry *scene_find(Loader *L, const char *sec, const char *key)
 }
 #line 989 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
-static Entry *add(Loader *L, const Entry *e)
+static Scene_entry *add(Loader *L, const Scene_entry *e)
 {
   if (L->n == TABLE_MAX) {
     scene_fail(L, "%s: more than %d keys", L->path, TABLE_MAX);
@@ -116,8 +116,8 @@ static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
 {
   Loader *L = user;
-  Entry e;
-  const Entry *old;
+  Scene_entry e;
+  const Scene_entry *old;
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
@@ -193,11 +193,11 @@ static char *trim(char *s)
 }
 #line 1211 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
-static void drop_unused(Loader *L, const Entry *e)
+static void drop_unused(Loader *L, const Scene_entry *e)
 {
   const Scene_key *sel = scene_key_find(e->sec, e->key);
   const char *w = *e->val ? e->val : sel->dflt;
-  Entry *old;
+  Scene_entry *old;
   int i;
   for (i = 0; w && i < SCENE_NKEYS; i++)
     if (scene_keys[i].selector && strcmp(scene_keys[i].sec, e->sec) == 0
@@ -211,7 +211,7 @@ static void drop_unused(Loader *L, const Entry *e)
 int scene_apply_override(Loader *L, const char *o)
 {
   char *copy, *eq, *dot, *sec = NULL, *key = NULL, *val = NULL;
-  Entry e, *old;
+  Scene_entry e, *old;
   L->override = o;
   if (!(copy = malloc(strlen(o) + 1)))
     return L->failed = status_set(L->st, STATUS_MEMORY, "out of memory");

@@ -31,7 +31,7 @@ void scene_origin(const Loader *L, const char *override, char *buf,
 #line 864 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
-int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
+int vbad(Loader *L, const Scene_entry *e, const char *fmt, va_list ap)
 {
   char where[640], why[512];
   scene_origin(L, e->override, where, sizeof where);
@@ -40,7 +40,7 @@ int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
 }
 #line 877 "paper/scene.nw"
 PRINTF_LIKE(3, 4)
-int scene_bad(Loader *L, const Entry *e, const char *fmt, ...)
+int scene_bad(Loader *L, const Scene_entry *e, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);

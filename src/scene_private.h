@@ -66,20 +66,20 @@ typedef struct {
   char val[ENTRY_VALUE];  /* the value, without blanks around or comment */
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
-} Entry;
+} Scene_entry;
 #line 767 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
   int failed;            /* 0, or the code of the failure told */
-  Entry e[TABLE_MAX];    /* the values given, in the order met */
+  Scene_entry e[TABLE_MAX];    /* the values given, in the order met */
   int n;                 /* entries used */
   FILE *fp;              /* the reader: the scene file, */
   int line;              /* the number of the line just read, 0 after it, */
   int indented;          /* whether that line starts with a blank, */
-  const Entry *prev;     /* and the entry set by the previous key line */
+  const Scene_entry *prev;     /* and the entry set by the previous key line */
   const char *override;  /* the override being applied, or NULL */
-  Entry last;            /* the value converted last: a check blames it */
+  Scene_entry last;            /* the value converted last: a check blames it */
 } Loader;
 #line 821 "paper/scene.nw"
 #if defined(__GNUC__)
@@ -91,7 +91,7 @@ typedef struct {
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 PRINTF_LIKE(2, 3) int scene_fail(Loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
-PRINTF_LIKE(3, 4) int scene_bad(Loader *L, const Entry *e,
+PRINTF_LIKE(3, 4) int scene_bad(Loader *L, const Scene_entry *e,
                                 const char *fmt, ...);
 /* the same about the value converted last, L->last */
 PRINTF_LIKE(2, 3) int scene_blame(Loader *L, const char *fmt, ...);
@@ -100,7 +100,7 @@ void scene_origin(const Loader *L, const char *override, char *buf,
                   size_t size);
 #line 924 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Entry *scene_find(Loader *L, const char *sec, const char *key);
+Scene_entry *scene_find(Loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
 int scene_read_file(Loader *L);
 /* apply the override o = "section.key=value" onto the table */
@@ -113,7 +113,7 @@ int scene_in_comment(const char *buf, int line);
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Entry *scene_entry(Loader *L, const char *sec, const char *key);
+const Scene_entry *scene_entry(Loader *L, const char *sec, const char *key);
 /* k = the integer sec.key */
 int scene_integer(Loader *L, const char *sec, const char *key, int *k);
 /* k = the index of the word sec.key among the words of its record */

@@ -78,7 +78,7 @@ static const char *loader_default(Loader *L, const Scene_key *k, char *buf,
                                   size_t size)
 {
   const Scene_key *sel;
-  const Entry *e;
+  const Scene_entry *e;
   int w;
   if (!k->by) return k->dflt;
   sel = scene_key_find(k->sec, k->selector);
@@ -88,9 +88,9 @@ static const char *loader_default(Loader *L, const Scene_key *k, char *buf,
 }
 #line 1415 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Entry *scene_entry(Loader *L, const char *sec, const char *key)
+const Scene_entry *scene_entry(Loader *L, const char *sec, const char *key)
 {
-  const Entry *e = scene_find(L, sec, key);
+  const Scene_entry *e = scene_find(L, sec, key);
   char buf[32];
   const char *dflt;
   if (e) L->last = *e;
@@ -156,7 +156,7 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
 int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
                         const char *w)
 {
-  const Entry *e;
+  const Scene_entry *e;
   int i;
   for (i = 0; i < SCENE_NKEYS; i++)
     if (scene_keys[i].selector && strcmp(scene_keys[i].sec, sec) == 0
