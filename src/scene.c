@@ -6,7 +6,7 @@
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
-  Loader L;
+  Scene_loader L;
   int i, rc;
   memset(s, 0, sizeof *s);
   if (strlen(path) >= sizeof s->path)

@@ -34,7 +34,7 @@ static const char *outside(double r, char *buf)
 
 /* refuse the load x = the value converted last, times `times`, unless
    it is 0 or in the window times E; what names it in the message */
-static int check_load(Loader *L, const Scene *s, double x, double times,
+static int check_load(Scene_loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
   char r[STATUS_NUMBER];
@@ -44,10 +44,10 @@ static int check_load(Loader *L, const Scene *s, double x, double times,
                      "finite", what, outside(fabs(x) * times / s->problem.young, r));
 }
 #line 1542 "paper/scene.nw"
-static int read_contact(Loader *L, Scene *s);
+static int read_contact(Scene_loader *L, Scene *s);
 #line 1614 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
-static int read_geometry(Loader *L, Scene *s)
+static int read_geometry(Scene_loader *L, Scene *s)
 {
   char w[STATUS_NUMBER];
   int rc;
@@ -70,7 +70,7 @@ static int read_geometry(Loader *L, Scene *s)
 }
 #line 1646 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
-static int read_design(Loader *L, Scene *s)
+static int read_design(Scene_loader *L, Scene *s)
 {
   int rc;
   if ((rc = scene_get(L, s, "design", "N"))) return rc;
@@ -89,7 +89,7 @@ static int read_design(Loader *L, Scene *s)
 #line 1675 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
-static int read_mesh(Loader *L, Scene *s)
+static int read_mesh(Scene_loader *L, Scene *s)
 {
   char v[STATUS_NUMBER];
   int rc, k;
@@ -126,7 +126,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
 }
 #line 1746 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
-static int check_admissible(Loader *L, Scene *s)
+static int check_admissible(Scene_loader *L, Scene *s)
 {
   double w = s->problem.b - s->problem.a, S = s->problem.gamma * w - s->problem.C2;
   double slack = 1e-12 * s->problem.gamma * w;
@@ -139,7 +139,7 @@ static int check_admissible(Loader *L, Scene *s)
 }
 #line 2114 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
-static int read_material(Loader *L, Scene *s)
+static int read_material(Scene_loader *L, Scene *s)
 {
   int rc;
   if ((rc = scene_get(L, s, "material", "E"))) return rc;
@@ -156,7 +156,7 @@ static int read_material(Loader *L, Scene *s)
 }
 #line 2140 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
-static int read_traction(Loader *L, Scene *s, Problem_side_id id)
+static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
   Problem_side *d = &s->problem.side[id];
@@ -192,7 +192,7 @@ if (!(d->to <= hi))
 }
 #line 2181 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
-static int read_side(Loader *L, Scene *s, Problem_side_id id)
+static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
 {
   const char *sec = scene_side_names[id];
   Problem_bc_kind *kind = &s->problem.side[id].kind;
@@ -204,7 +204,7 @@ static int read_side(Loader *L, Scene *s, Problem_side_id id)
 }
 #line 2208 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
-static int check_held(Loader *L, Scene *s)
+static int check_held(Scene_loader *L, Scene *s)
 {
   const Problem *p = &s->problem;
   Friction_hold h = friction_hold(p);
@@ -247,7 +247,7 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
 }
 #line 2259 "paper/scene.nw"
 /* the three sides */
-static int read_sides(Loader *L, Scene *s)
+static int read_sides(Scene_loader *L, Scene *s)
 {
   int id, rc;
   for (id = 0; id < SIDE_COUNT; id++)
@@ -256,7 +256,7 @@ static int read_sides(Loader *L, Scene *s)
 }
 #line 2284 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
-static int read_loads(Loader *L, Scene *s)
+static int read_loads(Scene_loader *L, Scene *s)
 {
   int rc;
   double w = s->problem.b - s->problem.a;
@@ -271,7 +271,7 @@ static int read_loads(Loader *L, Scene *s)
 }
 #line 2302 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
-static int read_contact(Loader *L, Scene *s)
+static int read_contact(Scene_loader *L, Scene *s)
 {
   static const char *const law_key[] = {NULL, "g", "friction"};
   Problem *p = &s->problem;
@@ -295,7 +295,7 @@ static int read_contact(Loader *L, Scene *s)
 }
 #line 2334 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
-static int read_solver(Loader *L, Scene *s)
+static int read_solver(Scene_loader *L, Scene *s)
 {
   Qp_options *o = &s->solver;
   int rc;
@@ -340,7 +340,7 @@ static Opt_method default_method(const Scene *s)
 
 /* [optimizer]: the method, its metric, 0 < tol < 1, max_iter >= 1,
    levels >= 0, 1 <= starts <= 100 */
-static int read_optimizer(Loader *L, Scene *s)
+static int read_optimizer(Scene_loader *L, Scene *s)
 {
   Opt_options *o = &s->optimizer;
   int rc;
@@ -376,7 +376,7 @@ static int read_optimizer(Loader *L, Scene *s)
 }
 #line 2457 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
-static int read_objective(Loader *L, Scene *s)
+static int read_objective(Scene_loader *L, Scene *s)
 {
   Objective *o = &s->optimizer.objective;
   int rc;
@@ -393,9 +393,9 @@ static int read_objective(Loader *L, Scene *s)
 }
 #line 2483 "paper/scene.nw"
 /* the scene = the table, checked */
-int scene_convert(Loader *L, Scene *s)
+int scene_convert(Scene_loader *L, Scene *s)
 {
-  static int (*const step[])(Loader *, Scene *) = {read_geometry,
+  static int (*const step[])(Scene_loader *, Scene *) = {read_geometry,
     read_design, read_mesh, check_admissible, scene_read_initial, read_material,
     read_sides, read_loads, read_solver, read_objective, read_optimizer};
   size_t i;

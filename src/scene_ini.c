@@ -7,11 +7,11 @@
 #include <ini.h>
 #include "scene_private.h"
 #line 917 "paper/scene.nw"
-static int nul_byte(Loader *L);
-static int long_line(Loader *L, const char *buf, int size);
+static int nul_byte(Scene_loader *L);
+static int long_line(Scene_loader *L, const char *buf, int size);
 #line 941 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
-static int admit(Loader *L, Scene_entry *e, const char *sec, const char *key,
+static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
 {
   char where[640], list[256];
@@ -40,7 +40,7 @@ if (!scene_key_find(sec, key))
 }
 #line 975 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Scene_entry *scene_find(Loader *L, const char *sec, const char *key)
+Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
 {
   int i;
   for (i = 0; i < L->n; i++)
@@ -50,7 +50,7 @@ Scene_entry *scene_find(Loader *L, const char *sec, const char *key)
 }
 #line 989 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
-static Scene_entry *add(Loader *L, const Scene_entry *e)
+static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
 {
   if (L->n == TABLE_MAX) {
     scene_fail(L, "%s: more than %d keys", L->path, TABLE_MAX);
@@ -63,7 +63,7 @@ static Scene_entry *add(Loader *L, const Scene_entry *e)
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
-  Loader *L = user;
+  Scene_loader *L = user;
   int c = EOF, n = 0;
   if (L->failed) return NULL;
   while (n < size - 1 && (c = getc(L->fp)) != EOF)
@@ -80,7 +80,7 @@ static char *read_line(char *buf, int size, void *user)
 }
 #line 1041 "paper/scene.nw"
 /* tell a NUL byte on the current line */
-static int nul_byte(Loader *L)
+static int nul_byte(Scene_loader *L)
 {
   return scene_fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
                     "UTF-8, not UTF-16)", L->path, L->line);
@@ -100,7 +100,7 @@ int scene_in_comment(const char *buf, int line)
 
 /* the line begun in buf is longer than buf: drop the rest of a comment
    (0), or tell the line too long */
-static int long_line(Loader *L, const char *buf, int size)
+static int long_line(Scene_loader *L, const char *buf, int size)
 {
   int c;
   if (!scene_in_comment(buf, L->line))
@@ -115,7 +115,7 @@ static int long_line(Loader *L, const char *buf, int size)
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
 {
-  Loader *L = user;
+  Scene_loader *L = user;
   Scene_entry e;
   const Scene_entry *old;
   if (!key) return 1;
@@ -142,7 +142,7 @@ if ((old = scene_find(L, sec, key))) {
 }
 #line 1161 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
-int scene_for_memory(Loader *L, int e)
+int scene_for_memory(Scene_loader *L, int e)
 {
   if (e != ENOMEM) return L->failed;
   if (L->st) L->st->code = STATUS_MEMORY;
@@ -151,7 +151,7 @@ int scene_for_memory(Loader *L, int e)
 
 #line 1134 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
-int scene_read_file(Loader *L)
+int scene_read_file(Scene_loader *L)
 {
   int rc;
   errno = 0;
@@ -193,7 +193,7 @@ static char *trim(char *s)
 }
 #line 1211 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
-static void drop_unused(Loader *L, const Scene_entry *e)
+static void drop_unused(Scene_loader *L, const Scene_entry *e)
 {
   const Scene_key *sel = scene_key_find(e->sec, e->key);
   const char *w = *e->val ? e->val : sel->dflt;
@@ -208,7 +208,7 @@ static void drop_unused(Loader *L, const Scene_entry *e)
 }
 #line 1231 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
-int scene_apply_override(Loader *L, const char *o)
+int scene_apply_override(Scene_loader *L, const char *o)
 {
   char *copy, *eq, *dot, *sec = NULL, *key = NULL, *val = NULL;
   Scene_entry e, *old;

@@ -4,7 +4,7 @@
 #line 831 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
-int vfail(Loader *L, const char *fmt, va_list ap)
+int vfail(Scene_loader *L, const char *fmt, va_list ap)
 {
   char msg[sizeof ((Status *)0)->msg];
   vsnprintf(msg, sizeof msg, fmt, ap);
@@ -12,7 +12,7 @@ int vfail(Loader *L, const char *fmt, va_list ap)
 }
 
 PRINTF_LIKE(2, 3)
-int scene_fail(Loader *L, const char *fmt, ...)
+int scene_fail(Scene_loader *L, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -22,7 +22,7 @@ int scene_fail(Loader *L, const char *fmt, ...)
 }
 #line 853 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
-void scene_origin(const Loader *L, const char *override, char *buf,
+void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size)
 {
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
@@ -31,7 +31,7 @@ void scene_origin(const Loader *L, const char *override, char *buf,
 #line 864 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
-int vbad(Loader *L, const Scene_entry *e, const char *fmt, va_list ap)
+int vbad(Scene_loader *L, const Scene_entry *e, const char *fmt, va_list ap)
 {
   char where[640], why[512];
   scene_origin(L, e->override, where, sizeof where);
@@ -40,7 +40,7 @@ int vbad(Loader *L, const Scene_entry *e, const char *fmt, va_list ap)
 }
 #line 877 "paper/scene.nw"
 PRINTF_LIKE(3, 4)
-int scene_bad(Loader *L, const Scene_entry *e, const char *fmt, ...)
+int scene_bad(Scene_loader *L, const Scene_entry *e, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -50,7 +50,7 @@ int scene_bad(Loader *L, const Scene_entry *e, const char *fmt, ...)
 }
 
 PRINTF_LIKE(2, 3)
-int scene_blame(Loader *L, const char *fmt, ...)
+int scene_blame(Scene_loader *L, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);

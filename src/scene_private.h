@@ -80,7 +80,7 @@ typedef struct {
   const Scene_entry *prev;     /* and the entry set by the previous key line */
   const char *override;  /* the override being applied, or NULL */
   Scene_entry last;            /* the value converted last: a check blames it */
-} Loader;
+} Scene_loader;
 #line 821 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
@@ -89,45 +89,45 @@ typedef struct {
 #endif
 #line 805 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
-PRINTF_LIKE(2, 3) int scene_fail(Loader *L, const char *fmt, ...);
+PRINTF_LIKE(2, 3) int scene_fail(Scene_loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
-PRINTF_LIKE(3, 4) int scene_bad(Loader *L, const Scene_entry *e,
+PRINTF_LIKE(3, 4) int scene_bad(Scene_loader *L, const Scene_entry *e,
                                 const char *fmt, ...);
 /* the same about the value converted last, L->last */
-PRINTF_LIKE(2, 3) int scene_blame(Loader *L, const char *fmt, ...);
+PRINTF_LIKE(2, 3) int scene_blame(Scene_loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
-void scene_origin(const Loader *L, const char *override, char *buf,
+void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size);
 #line 924 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Scene_entry *scene_find(Loader *L, const char *sec, const char *key);
+Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
-int scene_read_file(Loader *L);
+int scene_read_file(Scene_loader *L);
 /* apply the override o = "section.key=value" onto the table */
-int scene_apply_override(Loader *L, const char *o);
+int scene_apply_override(Scene_loader *L, const char *o);
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
-int scene_for_memory(Loader *L, int e);
+int scene_for_memory(Scene_loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
 #line 1303 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Scene_entry *scene_entry(Loader *L, const char *sec, const char *key);
+const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key);
 /* k = the integer sec.key */
-int scene_integer(Loader *L, const char *sec, const char *key, int *k);
+int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k);
 /* k = the index of the word sec.key among the words of its record */
-int scene_word(Loader *L, const char *sec, const char *key, int *k);
+int scene_word(Scene_loader *L, const char *sec, const char *key, int *k);
 /* the field of s that sec.key's record names = the value of sec.key */
-int scene_get(Loader *L, Scene *s, const char *sec, const char *key);
+int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
-int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
+int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
 #line 1787 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
-int scene_read_initial(Loader *L, Scene *s);
+int scene_read_initial(Scene_loader *L, Scene *s);
 #line 1546 "paper/scene.nw"
 /* the scene = the table, checked */
-int scene_convert(Loader *L, Scene *s);
+int scene_convert(Scene_loader *L, Scene *s);
 #line 328 "paper/scene.nw"
 #endif

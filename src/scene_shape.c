@@ -37,10 +37,10 @@ static void rows_free(Rows *r)
 }
 #line 1782 "paper/scene.nw"
 static void resample(const Problem *p, const Rows *r, double *alpha0);
-static int shape_from_rows(Loader *L, Scene *s, const char *path, const Rows *r);
+static int shape_from_rows(Scene_loader *L, Scene *s, const char *path, const Rows *r);
 #line 1795 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
-static int read_arc_shape(Loader *L, Scene *s)
+static int read_arc_shape(Scene_loader *L, Scene *s)
 {
   int rc;
   s->shape.kind = SHAPE_ARC;
@@ -53,7 +53,7 @@ static int read_arc_shape(Loader *L, Scene *s)
 }
 #line 1811 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
-static int read_line_shape(Loader *L, Scene *s)
+static int read_line_shape(Scene_loader *L, Scene *s)
 {
   int rc;
   s->shape.kind = SHAPE_LINE;
@@ -63,15 +63,15 @@ static int read_line_shape(Loader *L, Scene *s)
 }
 #line 1823 "paper/scene.nw"
 /* the key of a constant */
-static int read_constant_shape(Loader *L, Scene *s)
+static int read_constant_shape(Scene_loader *L, Scene *s)
 {
   s->shape.kind = SHAPE_CONSTANT;
   return scene_get(L, s, "design", "constant");
 }
 #line 1835 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
-static int fill_formula(Loader *L, Scene *s,
-                        int (*read_keys)(Loader *, Scene *))
+static int fill_formula(Scene_loader *L, Scene *s,
+                        int (*read_keys)(Scene_loader *, Scene *))
 {
   Status why = {STATUS_OK, ""};
   int rc = read_keys(L, s);
@@ -103,7 +103,7 @@ static int absolute(const char *path, char *buf, size_t size)
 }
 #line 1914 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
-static int read_row(Loader *L, const char *path, int lineno, char *line,
+static int read_row(Scene_loader *L, const char *path, int lineno, char *line,
                     Rows *r)
 {
   char *tok, *save = NULL, *hash = strchr(line, '#');
@@ -126,7 +126,7 @@ static int read_row(Loader *L, const char *path, int lineno, char *line,
 }
 #line 1943 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
-static int read_shape(Loader *L, Scene *s, const char *path)
+static int read_shape(Scene_loader *L, Scene *s, const char *path)
 {
   FILE *fp;
   char *line = NULL;
@@ -159,7 +159,7 @@ static int read_shape(Loader *L, Scene *s, const char *path)
 #line 1988 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
-static int shape_from_rows(Loader *L, Scene *s, const char *path,
+static int shape_from_rows(Scene_loader *L, Scene *s, const char *path,
                            const Rows *r)
 {
   const Problem *p = &s->problem;
@@ -209,7 +209,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
 }
 #line 2049 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
-static int fill_file(Loader *L, Scene *s)
+static int fill_file(Scene_loader *L, Scene *s)
 {
   char path[sizeof s->shape_file];
   int rc;
@@ -223,7 +223,7 @@ static int fill_file(Loader *L, Scene *s)
 }
 #line 2066 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
-static int check_alpha0(Loader *L, const Scene *s)
+static int check_alpha0(Scene_loader *L, const Scene *s)
 {
   char v[3][STATUS_NUMBER];
   int i;
@@ -238,9 +238,9 @@ static int check_alpha0(Loader *L, const Scene *s)
 }
 #line 2086 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
-int scene_read_initial(Loader *L, Scene *s)
+int scene_read_initial(Scene_loader *L, Scene *s)
 {
-  static int (*const read_keys[])(Loader *, Scene *) = {read_arc_shape,
+  static int (*const read_keys[])(Scene_loader *, Scene *) = {read_arc_shape,
     read_line_shape, read_constant_shape};
   int k, rc;
   if ((rc = scene_word(L, "design", "initial", &k)))

@@ -74,7 +74,7 @@ static const char *hint(const char *val)
 #line 1398 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
-static const char *loader_default(Loader *L, const Scene_key *k, char *buf,
+static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf,
                                   size_t size)
 {
   const Scene_key *sel;
@@ -88,7 +88,7 @@ static const char *loader_default(Loader *L, const Scene_key *k, char *buf,
 }
 #line 1415 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Scene_entry *scene_entry(Loader *L, const char *sec, const char *key)
+const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key)
 {
   const Scene_entry *e = scene_find(L, sec, key);
   char buf[32];
@@ -107,7 +107,7 @@ const Scene_entry *scene_entry(Loader *L, const char *sec, const char *key)
 }
 #line 1437 "paper/scene.nw"
 /* x = the number sec.key */
-static int scene_real(Loader *L, const char *sec, const char *key, double *x)
+static int scene_real(Scene_loader *L, const char *sec, const char *key, double *x)
 {
   const char *why;
   if (!scene_entry(L, sec, key)) return L->failed;
@@ -117,7 +117,7 @@ static int scene_real(Loader *L, const char *sec, const char *key, double *x)
 }
 #line 1449 "paper/scene.nw"
 /* k = the integer sec.key */
-int scene_integer(Loader *L, const char *sec, const char *key, int *k)
+int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
 {
   const char *why;
   if (!scene_entry(L, sec, key)) return L->failed;
@@ -127,7 +127,7 @@ int scene_integer(Loader *L, const char *sec, const char *key, int *k)
 }
 #line 1461 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
-int scene_word(Loader *L, const char *sec, const char *key, int *k)
+int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
 {
   const char *const *names = scene_key_find(sec, key)->words;
   char list[256];
@@ -138,7 +138,7 @@ int scene_word(Loader *L, const char *sec, const char *key, int *k)
 }
 #line 1484 "paper/scene.nw"
 /* the field of s that sec.key's record names = the value of sec.key */
-int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
+int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
 {
   const Scene_key *k = scene_key_find(sec, key);
   char *at = (char *)s + k->at;
@@ -153,7 +153,7 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
 }
 #line 1504 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
-int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
+int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w)
 {
   const Scene_entry *e;
