@@ -10,7 +10,7 @@
 
 #line 479 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
-typedef const char *Default_of(const char *key, int k, char *buf,
+typedef const char *Scene_default_of(const char *key, int k, char *buf,
                                size_t size);
 #define AT(field) ((long)offsetof(Scene, field))
 #define AT_DEFAULT (-1L)  /* no field: written as its default */
@@ -22,7 +22,7 @@ typedef struct {
   long at;                   /* the offset of its value in a Scene */
   const char *unit;          /* m, Pa, ...; 1: a pure number; -: none */
   const char *dflt;          /* the default as a scene writes it, or */
-  Default_of *by;            /* the default under the selector's word k */
+  Scene_default_of *by;            /* the default under the selector's word k */
   const char *selector;      /* a word of the section that decides: */
   const char *when;          /* its words with which the key means something,
                                 blank-separated (NULL: all of them) */
