@@ -123,7 +123,7 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1787 "paper/scene.nw"
+#line 1788 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s);
 #line 1546 "paper/scene.nw"
