@@ -40,7 +40,7 @@ int opt_refusal(Opt_method m, const Objective *o, Problem_contact_law contact,
                       path, objective_name(o->kind));
   return STATUS_OK;
 }
-#line 487 "paper/opt.nw"
+#line 488 "paper/opt.nw"
 int opt_evaluate(Opt_evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
@@ -61,7 +61,7 @@ int opt_evaluate(Opt_evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 542 "paper/opt.nw"
+#line 543 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -70,7 +70,7 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 553 "paper/opt.nw"
+#line 554 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
 int opt_report_iterate(Opt_evaluator *ev, int iteration, double pg)
 {
@@ -83,7 +83,7 @@ int opt_report_iterate(Opt_evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 593 "paper/opt.nw"
+#line 594 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
@@ -110,7 +110,7 @@ void opt_idle_detail(Opt_evaluator *ev)
            "%.2e the smallest of the run)", ev->idle, J, ev->idle_J - ev->J, u, J,
            ev->noise, u, ev->pg_last, ev->pg_best);
 }
-#line 624 "paper/opt.nw"
+#line 625 "paper/opt.nw"
 const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX)
 {
   double pg;
@@ -125,7 +125,7 @@ const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 877 "paper/opt.nw"
+#line 878 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
@@ -140,7 +140,7 @@ void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c
     c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
   }
 }
-#line 896 "paper/opt.nw"
+#line 897 "paper/opt.nw"
 /* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
 {
@@ -156,7 +156,7 @@ void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *
     }
   }
 }
-#line 2074 "paper/opt.nw"
+#line 2075 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Opt_evaluator *ev, double *X)
@@ -182,11 +182,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 2113 "paper/opt.nw"
+#line 2114 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 2099 "paper/opt.nw"
+#line 2100 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -197,14 +197,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 2130 "paper/opt.nw"
+#line 2131 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 2181 "paper/opt.nw"
+#line 2182 "paper/opt.nw"
 int opt_start_design(const Design_set *B, int k, double *X, Status *st)
 {
   int N = B->N, j = (k + 1) / 2;
@@ -213,7 +213,7 @@ int opt_start_design(const Design_set *B, int k, double *X, Status *st)
   for (int i = 0; i <= N; i++) X[i] = c + s * a * cos(j * pi * i / N);
   return design_project(B, X, X, NULL, st);
 }
-#line 2262 "paper/opt.nw"
+#line 2263 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -230,7 +230,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2285 "paper/opt.nw"
+#line 2286 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -243,7 +243,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2313 "paper/opt.nw"
+#line 2314 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -273,7 +273,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 2353 "paper/opt.nw"
+#line 2354 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st)

@@ -3,14 +3,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
-#line 669 "paper/opt.nw"
+#line 670 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
 } Projgrad_scratch;
 
-#line 679 "paper/opt.nw"
+#line 680 "paper/opt.nw"
 static int projgrad_step(Opt_evaluator *ev, double *t, Projgrad_scratch *w,
                          int *accepted)
 {
@@ -21,7 +21,7 @@ static int projgrad_step(Opt_evaluator *ev, double *t, Projgrad_scratch *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 698 "paper/opt.nw"
+#line 699 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -29,13 +29,13 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = opt_evaluate(ev, Xn))) return rc;
 *accepted = ev->J <= J0 + 1e-4 * descent;
-#line 689 "paper/opt.nw"
+#line 690 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = opt_evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 710 "paper/opt.nw"
+#line 711 "paper/opt.nw"
 int opt_projgrad(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
@@ -48,7 +48,7 @@ int opt_projgrad(Opt_evaluator *ev, double *X)
     int stop = opt_report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 732 "paper/opt.nw"
+#line 733 "paper/opt.nw"
 int idle = opt_idle_iterates(ev, k, pg, 0);
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
@@ -64,7 +64,7 @@ if (why) {
   else if (!strcmp(why, "no_progress")) opt_idle_detail(ev);
   break;
 }
-#line 722 "paper/opt.nw"
+#line 723 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;

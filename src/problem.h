@@ -10,7 +10,7 @@ typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Problem_bc_kind;
 
 typedef struct {
-  Problem_bc_kind kind;      /* the condition on the side */
+  Problem_bc_kind kind; /* the condition on the side */
   double from, to;   /* BC_TRACTION: loaded interval of the side's own
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */

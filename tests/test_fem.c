@@ -248,7 +248,7 @@ static void reactions_balance(Problem_bc_kind left, Problem_bc_kind right, Probl
 {
   int N = 16;
   Problem s = free_body(N, 2, 3, MODEL_PLANE_STRAIN);
-  Problem_side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } };     /* the whole top */
+  Problem_side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } }; /* the whole top */
   Problem_side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
   s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Problem_side) { left, 0, 0, { 0, 0 } };
   s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Problem_side) { right, 0, 0, { 0, 0 } };
