@@ -1,8 +1,8 @@
-#line 94 "paper/problem.nw"
+#line 95 "paper/problem.nw"
 #ifndef CONTACTOPT_PROBLEM_H
 #define CONTACTOPT_PROBLEM_H
 
-#line 109 "paper/problem.nw"
+#line 110 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
@@ -15,12 +15,12 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Problem_side;
-#line 126 "paper/problem.nw"
+#line 127 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Problem_plane_model;
-#line 135 "paper/problem.nw"
+#line 136 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Problem_contact_law;
-#line 140 "paper/problem.nw"
+#line 141 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -49,7 +49,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 187 "paper/problem.nw"
+#line 188 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
@@ -58,5 +58,5 @@ const char *problem_bc_name(Problem_bc_kind k);
 const char *problem_contact_name(Problem_contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
-#line 103 "paper/problem.nw"
+#line 104 "paper/problem.nw"
 #endif
