@@ -7,9 +7,9 @@
 #line 188 "paper/coulomb.nw"
 #define COULOMB_STALL 10  /* rounds without halving the change: a stall */
 
-static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+static void coulomb_bounds(const Problem *p, const Fem_dofs *d, const double *T,
                            double *slip);
-static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+static void coulomb_start(const Problem *p, const Mesh *m, const Fem_dofs *d,
                           const double *b, double *slip);
 static int coulomb_goes_on(const Coulomb_fixed_point *fp, int rounding,
                            double before);
@@ -22,7 +22,7 @@ int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
                         Status *st)
 {
   const Problem *p = model_problem(md);
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   int nc = d->nc, rc, stalled = 0;
   double *Tn = malloc((nc + 1) * sizeof *Tn), mark = INFINITY;
   fp->steps = 0;
@@ -86,7 +86,7 @@ static double coulomb_change(const double *old, const double *T, int nc)
   return diff == 0 ? 0 : diff / size;
 }
 #line 305 "paper/coulomb.nw"
-static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
+static void coulomb_bounds(const Problem *p, const Fem_dofs *d, const double *T,
                            double *slip)
 {
   int c = 0;
@@ -97,7 +97,7 @@ static void coulomb_bounds(const Problem *p, const Dofs *d, const double *T,
   }
 }
 #line 323 "paper/coulomb.nw"
-static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
+static void coulomb_start(const Problem *p, const Mesh *m, const Fem_dofs *d,
                           const double *b, double *slip)
 {
   double W = 0, length = 0;
@@ -107,28 +107,28 @@ static void coulomb_start(const Problem *p, const Mesh *m, const Dofs *d,
     length += slip[k] = mesh_tributary(m, d->tangent_col[k]);
   for (int k = 0; k < d->nt; k++) slip[k] *= p->friction * W / length;
 }
-#line 441 "paper/coulomb.nw"
+#line 442 "paper/coulomb.nw"
 typedef struct {
   double *lam;  /* n: the adjoint of the objective at fixed bounds */
   char *held;   /* nc + nt: the state's held sets */
   int *k, *c;   /* m <= nt: the pairs of coulomb_pairs */
-  double *v;    /* m: F dJ/ds_k, then mu */
-  double *S;    /* m x m: dT/ds, then I - F dT/ds */
+  double *v;    /* m: friction dJ/ds_k, then mu */
+  double *S;    /* m x m: dT/ds, then I - friction dT/ds */
   double *mu;   /* nc: mu on the normal unknowns */
   double *G2;   /* N + 1: the gradient of mu'T at fixed bounds */
-} Coulomb_work;
+} Coulomb_scratch;
 
-static void work_free(Coulomb_work *w)
+static void scratch_free(Coulomb_scratch *w)
 {
   free(w->lam), free(w->held), free(w->k), free(w->c);
   free(w->v), free(w->S), free(w->mu), free(w->G2);
 }
 
-static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
+static int scratch_alloc(const Model *md, Coulomb_scratch *w, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   size_t n = d->n, nc = d->nc, nt = d->nt;
-  *w = (Coulomb_work) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
+  *w = (Coulomb_scratch) { malloc(n * sizeof(double)), malloc(nc + nt + 1),
                         malloc((nt + 1) * sizeof(int)), malloc((nt + 1) * sizeof(int)),
                         malloc((nt + 1) * sizeof(double)),
                         malloc((nt * nt + 1) * sizeof(double)),
@@ -136,7 +136,7 @@ static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
                         malloc(model_mesh(md)->ncol * sizeof(double)) };
   if (w->lam && w->held && w->k && w->c && w->v && w->S && w->mu && w->G2)
     return STATUS_OK;
-  work_free(w);
+  scratch_free(w);
   return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
 }
 #line 355 "paper/coulomb.nw"
@@ -144,7 +144,7 @@ static int work_alloc(const Model *md, Coulomb_work *w, Status *st)
    normal unknown c at its node, held with T_c > 0; returns m */
 static int coulomb_pairs(const Model *md, const char *held, int *kk, int *cc)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *T = model_forces(md);
   int c = 0, m = 0;
   for (int k = 0; k < d->nt; k++) {
@@ -171,7 +171,7 @@ static double row_times(const cholmod_sparse *A, int j, const double *q)
 static int coulomb_sensitivity(const Model *md, int m, const int *kk,
                                const int *cc, double *S, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   double *e = calloc(2 * (size_t) d->n, sizeof *e), *q = e + d->n;
   if (!e) return status_set(st, STATUS_MEMORY, "coulomb: out of memory");
   int rc = STATUS_OK;
@@ -187,14 +187,15 @@ static int coulomb_sensitivity(const Model *md, int m, const int *kk,
   return rc;
 }
 #line 414 "paper/coulomb.nw"
-/* v (m) := mu, (I - F S)' mu = v, by LU; S is overwritten */
-static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
+/* v (m) := mu, (I - friction S)' mu = v, by LU; S is overwritten */
+static int coulomb_multiplier(int m, double friction, double *S, double *v,
+                              Status *st)
 {
-  for (int a = 0; a < m; a++)                  /* S := (I - F S)' */
+  for (int a = 0; a < m; a++)                  /* S := (I - friction S)' */
     for (int b = 0; b <= a; b++) {
       double x = S[(size_t) a * m + b], y = S[(size_t) b * m + a];
-      S[(size_t) a * m + b] = (a == b) - F * y;
-      S[(size_t) b * m + a] = (a == b) - F * x;
+      S[(size_t) a * m + b] = (a == b) - friction * y;
+      S[(size_t) b * m + a] = (a == b) - friction * x;
     }
   gsl_matrix_view M = gsl_matrix_view_array(S, m, m);
   gsl_vector_view x = gsl_vector_view_array(v, m);
@@ -209,13 +210,13 @@ static int coulomb_multiplier(int m, double F, double *S, double *v, Status *st)
   gsl_permutation_free(p);
   return rc;
 }
-#line 480 "paper/coulomb.nw"
-/* v[a] = F dJ/ds at the slide k[a]: the explicit |u1| of the energy and
+#line 481 "paper/coulomb.nw"
+/* v[a] = friction dJ/ds at the slide k[a]: the explicit |u1| of the energy and
    -sigma lam_t through the state */
 static void coulomb_rhs(const Model *md, const Objective *o, int m,
-                        Coulomb_work *w)
+                        Coulomb_scratch *w)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *Q = model_state(md), *T = model_forces(md);
   for (int a = 0; a < m; a++) {
     int t = d->tangent[w->k[a]];
@@ -225,16 +226,16 @@ static void coulomb_rhs(const Model *md, const Objective *o, int m,
   }
 }
 
-static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
-                         double *G, Status *st)
+static int coulomb_terms(const Model *md, const Objective *o,
+                         Coulomb_scratch *w, double *G, Status *st)
 {
-  double F = model_problem(md)->friction;
+  double friction = model_problem(md)->friction;
   int rc = objective_gradient_fixed(md, o, NULL, w->lam, w->held, G, NULL, st);
   int m = rc ? 0 : coulomb_pairs(md, w->held, w->k, w->c);
-  if (rc || m == 0 || F == 0) return rc;
+  if (rc || m == 0 || friction == 0) return rc;
   coulomb_rhs(md, o, m, w);
   if ((rc = coulomb_sensitivity(md, m, w->k, w->c, w->S, st))
-      || (rc = coulomb_multiplier(m, F, w->S, w->v, st))) return rc;
+      || (rc = coulomb_multiplier(m, friction, w->S, w->v, st))) return rc;
   for (int a = 0; a < m; a++) w->mu[w->c[a]] = w->v[a];
   if ((rc = objective_gradient_fixed(md, NULL, w->mu, NULL, NULL, w->G2, NULL, st)))
     return rc;
@@ -244,10 +245,10 @@ static int coulomb_terms(const Model *md, const Objective *o, Coulomb_work *w,
 
 int coulomb_gradient(const Model *md, const Objective *o, double *G, Status *st)
 {
-  Coulomb_work w;
-  int rc = work_alloc(md, &w, st);
+  Coulomb_scratch w;
+  int rc = scratch_alloc(md, &w, st);
   if (rc) return rc;
   rc = coulomb_terms(md, o, &w, G, st);
-  work_free(&w);
+  scratch_free(&w);
   return rc;
 }

@@ -16,15 +16,15 @@ typedef struct {
 
 /* the state of a Coulomb problem at the model's design, by successive
    approximations: state (the model's one state solve) under the bounds
-   slip (nt, the model's, written here) = F T of the last normal forces,
+   slip (nt, the model's, written here) = friction T of the last normal forces,
    to fp->tol; rounding 1: on past it to the rounding of the forces (for
    a gradient).  STATUS_NUMERIC when it stops short, or state's status. */
 int coulomb_fixed_point(Model *md, int (*state)(Model *, Status *),
                         double *slip, int rounding, Coulomb_fixed_point *fp,
                         Status *st);
 /* G (N+1) = dJ/dX of the objective o at the Coulomb state the model
-   solved last, through its fixed point s = F T on the state's contact,
-   stick and slip sets */
+   solved last, through its fixed point s = friction T on the state's
+   contact, stick and slip sets */
 int coulomb_gradient(const Model *md, const Objective *o, double *G,
                      Status *st);
 #endif

@@ -68,7 +68,7 @@ static void scale_multipliers(Design_multipliers *m, double f)
 }
 #line 1118 "paper/design.nw"
 /* alpha0 at x1 by the formula of sh; 0 if the arc does not reach x1 */
-static int shape_at(const Shape *sh, double x1, double t, double *alpha)
+static int shape_at(const Design_shape *sh, double x1, double t, double *alpha)
 {
   double d = x1 - sh->centre[0], r = sh->radius;
   switch (sh->kind) {
@@ -81,7 +81,7 @@ static int shape_at(const Shape *sh, double x1, double t, double *alpha)
   }
 }
 #line 1135 "paper/design.nw"
-int design_shape(const Problem *p, const Shape *sh, double *X, Status *st)
+int design_shape(const Problem *p, const Design_shape *sh, double *X, Status *st)
 {
   for (int i = 0; i <= p->N; i++)
     if (!shape_at(sh, problem_node_x(p, i), (double)i / p->N, &X[i]))

@@ -22,14 +22,14 @@ typedef struct {
 } Design_multipliers;
 
 #line 133 "paper/design.nw"
-typedef enum { SHAPE_ARC, SHAPE_LINE, SHAPE_CONSTANT } Shape_kind;
+typedef enum { SHAPE_ARC, SHAPE_LINE, SHAPE_CONSTANT } Design_shape_kind;
 typedef struct {
-  Shape_kind kind;
+  Design_shape_kind kind;
   double centre[2];  /* SHAPE_ARC: the centre (x1, x2) of the circle, */
   double radius;     /*   its radius > 0: alpha0 is its lower half */
   double start, end; /* SHAPE_LINE: alpha0 at x1 = a and at x1 = b */
   double value;      /* SHAPE_CONSTANT: alpha0 */
-} Shape;
+} Design_shape;
 
 #line 109 "paper/design.nw"
 Design_set design_set(const Problem *p);
@@ -49,7 +49,7 @@ Design_multipliers *design_multipliers_new(const Design_set *B, Status *st);
 void design_multipliers_free(Design_multipliers *m);
 #line 148 "paper/design.nw"
 /* X_i = alpha0(x_i), i = 0..N, for the shape sh */
-int design_shape(const Problem *p, const Shape *sh, double *X, Status *st);
+int design_shape(const Problem *p, const Design_shape *sh, double *X, Status *st);
 #line 163 "paper/design.nw"
 /* X = alpha0 if design_violation(alpha0) <= tol, else P_B(alpha0);
    violation = design_violation(alpha0), moved = ||X - alpha0||_2 */

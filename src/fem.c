@@ -4,12 +4,12 @@
 #include <string.h>
 #include "fem.h"
 #line 148 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held);
-static int fem_side_holds(Side_id side, Bc_kind kind, int c);
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held);
+static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c);
 
-Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
+Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
-  Dofs *d = calloc(1, sizeof *d);
+  Fem_dofs *d = calloc(1, sizeof *d);
   if (!d) { status_set(st, STATUS_MEMORY, "dofs: out of memory"); return NULL; }
   d->ndof = 2 * m->nnodes;
   d->unknown = calloc(d->ndof, sizeof *d->unknown);
@@ -43,7 +43,7 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
   return d;
 }
 #line 192 "paper/fem.nw"
-static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
+static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
   int count = side == SIDE_TOP ? m->ncol : m->nrow;
@@ -55,14 +55,14 @@ static void fem_hold_side(const Mesh *m, Side_id side, Bc_kind kind, int *held)
   }
 }
 #line 208 "paper/fem.nw"
-static int fem_side_holds(Side_id side, Bc_kind kind, int c)
+static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c)
 {
   int normal = side == SIDE_TOP ? 1 : 0;
   return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
 }
 
 #line 215 "paper/fem.nw"
-void fem_dofs_free(Dofs *d)
+void fem_dofs_free(Fem_dofs *d)
 {
   if (!d) return;
   free(d->unknown);
@@ -73,14 +73,14 @@ void fem_dofs_free(Dofs *d)
   free(d);
 }
 #line 243 "paper/fem.nw"
-Hooke fem_hooke(const Problem *p)
+Fem_hooke fem_hooke(const Problem *p)
 {
-  Hooke H;
+  Fem_hooke H;
   double (*D)[3] = H.D;
-  double mu = p->E / (2 * (1 + p->nu));
+  double mu = p->young / (2 * (1 + p->nu));
   double lambda = p->model == MODEL_PLANE_STRAIN
-    ? p->E * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
-    : p->E * p->nu / (1 - p->nu * p->nu);
+    ? p->young * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
+    : p->young * p->nu / (1 - p->nu * p->nu);
   memset(D, 0, 9 * sizeof D[0][0]);
   D[0][0] = D[1][1] = lambda + 2 * mu;
   D[0][1] = D[1][0] = lambda;
@@ -88,7 +88,7 @@ Hooke fem_hooke(const Problem *p)
   return H;
 }
 #line 305 "paper/fem.nw"
-static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6]);
+static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
 {
@@ -98,7 +98,7 @@ void fem_element_xy(const Mesh *m, int t, double xy[6])
   }
 }
 
-void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
+void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
                    double q[6])
 {
   int g[6];
@@ -128,7 +128,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
   }
 }
 #line 357 "paper/fem.nw"
-double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
+double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3])
 {
   double xy[6], q[6], gx[3], gy[3];
@@ -140,7 +140,7 @@ double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
   return a2;
 }
 
-void fem_element_stress(const Hooke *H, const long double e[3], long double s[3])
+void fem_element_stress(const Fem_hooke *H, const long double e[3], long double s[3])
 {
   for (int r = 0; r < 3; r++) {
     s[r] = 0;
@@ -160,7 +160,7 @@ static double fem_element_B(const double xy[6], double B[3][6])
   return area2;
 }
 #line 399 "paper/fem.nw"
-void fem_element_stiffness(const double xy[6], const Hooke *H,
+void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
@@ -204,7 +204,7 @@ for (int q = from; q < to; q++)
   return 0;
 }
 #line 491 "paper/fem.nw"
-static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
+static int fem_column(const Fem_dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
   int n = 0;
@@ -217,7 +217,7 @@ static int fem_column(const Dofs *d, const int *adj_p, const int *adj, int b,
   return n;
 }
 
-static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
+static size_t fem_pattern(const Fem_dofs *d, const int *adj_p, const int *adj,
                           void *Ap, void *Ai)
 {
   Sparse_index *p = Ap, *i = Ai;
@@ -232,7 +232,7 @@ static size_t fem_pattern(const Dofs *d, const int *adj_p, const int *adj,
 }
 
 #line 439 "paper/fem.nw"
-cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
+cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st)
 {
   int *adj_p = NULL, *adj = NULL;
@@ -247,7 +247,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
   return A;
 }
 #line 521 "paper/fem.nw"
-static void fem_element_dofs(const Mesh *m, const Dofs *d, int t, int g[6])
+static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
     int node = m->tri[3 * t + k];
@@ -290,8 +290,8 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
   return 0;
 }
 #line 586 "paper/fem.nw"
-int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
-                       const Hooke *H, Status *st)
+int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
+                       const Fem_hooke *H, Status *st)
 {
   memset(A->x, 0, (size_t) ((Sparse_index *) A->p)[A->ncol] * sizeof(double));
   for (int t = 0; t < m->ntri; t++) {
@@ -312,30 +312,30 @@ for (int k = 0; k < 3; k++)
   return STATUS_OK;
 }
 #line 619 "paper/fem.nw"
-static void fem_assemble_load(const Mesh *m, const Dofs *d, const Problem *p,
+static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b);
 
-void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b)
+void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
 {
   memset(b, 0, d->n * sizeof *b);
   fem_assemble_load(m, d, p, 0, b);
 }
 #line 635 "paper/fem.nw"
-static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
+static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
-static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
-                             const Side *load, int held, double *b);
+static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
+                             const Problem_side *load, int held, double *b);
 
-static void fem_assemble_load(const Mesh *m, const Dofs *d, const Problem *p,
+static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b)
 {
-  if (p->has_body_force) fem_add_body_force(m, d, p->F, held, b);
+  if (p->has_body_force) fem_add_body_force(m, d, p->body_force, held, b);
   for (int side = 0; side < SIDE_COUNT; side++)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], held, b);
 }
 #line 652 "paper/fem.nw"
-static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
+static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double w,
                           int held, double *b)
 {
   for (int c = 0; c < 2; c++) {
@@ -345,7 +345,7 @@ static void fem_add_force(const Dofs *d, int node, const double f[2], double w,
   }
 }
 #line 664 "paper/fem.nw"
-static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
+static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b)
 {
   for (int t = 0; t < m->ntri; t++)
@@ -353,8 +353,8 @@ static void fem_add_body_force(const Mesh *m, const Dofs *d, const double F[2],
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
 #line 678 "paper/fem.nw"
-static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
-                             const Side *load, int held, double *b)
+static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
+                             const Problem_side *load, int held, double *b)
 {
   int top = side == SIDE_TOP, count = top ? m->N : m->nrow - 1;
   for (int e = 0; e < count; e++) {
@@ -371,7 +371,7 @@ static void fem_add_traction(const Mesh *m, const Dofs *d, Side_id side,
   }
 }
 #line 734 "paper/fem.nw"
-void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
+void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
   memset(r, 0, d->ndof * sizeof *r);
@@ -401,7 +401,7 @@ for (int a = 0; a < 6; a++)
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
-  Side_id on[SIDE_COUNT];
+  Problem_side_id on[SIDE_COUNT];
   int n = 0, owner = -1;
   if (i == 0) on[n++] = SIDE_LEFT;
   if (i == m->N) on[n++] = SIDE_RIGHT;
@@ -413,7 +413,7 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
   return owner;
 }
 #line 813 "paper/fem.nw"
-double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
+double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;

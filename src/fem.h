@@ -17,20 +17,20 @@ typedef struct {
                         unknown; 0 on a frictionless foundation */
   int *tangent;      /* nt: the unknown of u1 at each of them */
   int *tangent_col;  /* nt: its column i */
-} Dofs;
+} Fem_dofs;
 
 /* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
-typedef struct { double D[3][3]; } Hooke;
+typedef struct { double D[3][3]; } Fem_hooke;
 
 #line 105 "paper/fem.nw"
-Dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
-void fem_dofs_free(Dofs *d);
-Hooke fem_hooke(const Problem *p);
+Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
+void fem_dofs_free(Fem_dofs *d);
+Fem_hooke fem_hooke(const Problem *p);
 #line 284 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
-void fem_element_q(const Mesh *m, const Dofs *d, const double *Q, int t,
+void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
                    double q[6]);
 /* gx, gy = 2|T| times the shape-function gradients; returns 2|T| */
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3]);
@@ -39,25 +39,25 @@ void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3]);
 /* e = the strain (e11, e22, 2 e12) of triangle t under the displacement
    Q, constant on it; returns 2|T| */
-double fem_triangle_strain(const Mesh *m, const Dofs *d, const double *Q,
+double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3]);
-/* s = D e, the stress (s11, s22, s12) of the strain e [Pa when E is] */
-void fem_element_stress(const Hooke *H, const long double e[3], long double s[3]);
+/* s = D e, the stress (s11, s22, s12) of the strain e [Pa when Young's modulus is] */
+void fem_element_stress(const Fem_hooke *H, const long double e[3], long double s[3]);
 #line 109 "paper/fem.nw"
-void fem_element_stiffness(const double xy[6], const Hooke *H,
+void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6]);
-cholmod_sparse *fem_stiffness_new(const Mesh *m, const Dofs *d,
+cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st);
-int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Dofs *d,
-                       const Hooke *H, Status *st);
-void fem_load(const Mesh *m, const Dofs *d, const Problem *p, double *b);
+int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
+                       const Fem_hooke *H, Status *st);
+void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
-double fem_energy(const Mesh *m, const Dofs *d, const Hooke *H,
+double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q);
 #line 725 "paper/fem.nw"
 /* r (ndof) = K u - f at the held DOFs, the force of the sides on the
-   body [N/m when E is in Pa]; 0 at the unknowns */
-void fem_reactions(const Mesh *m, const Dofs *d, const Hooke *H,
+   body [N/m when Young's modulus is in Pa]; 0 at the unknowns */
+void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r);
 /* the side whose reaction the held DOF k takes, -1 if no side holds it */
 int fem_reaction_side(const Mesh *m, const Problem *p, int k);

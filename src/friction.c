@@ -2,21 +2,21 @@
 #include <math.h>
 #include "friction.h"
 #line 400 "paper/friction.nw"
-void friction_tresca_bounds(const Problem *p, const Mesh *m, const Dofs *d,
+void friction_tresca_bounds(const Problem *p, const Mesh *m, const Fem_dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
 #line 409 "paper/friction.nw"
-double friction_work(const Dofs *d, const double *slip, const double *Q)
+double friction_work(const Fem_dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
 #line 421 "paper/friction.nw"
-void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
+void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
                        const double *Q, double *G)
 {
   const double *xy = m->xy;
@@ -35,7 +35,7 @@ void friction_gradient(const Problem *p, const Mesh *m, const Dofs *d,
 int friction_side_holds(const Problem *p, int component)
 {
   for (int id = 0; id < SIDE_COUNT; id++) {
-    Bc_kind k = p->side[id].kind;
+    Problem_bc_kind k = p->side[id].kind;
     if (k == BC_CLAMPED || (k == BC_ROLLER && (id == SIDE_TOP) == (component == 1)))
       return 1;
   }
@@ -45,7 +45,7 @@ int friction_side_holds(const Problem *p, int component)
 /* L = the total load (L1, L2) of a body of this area, N/m */
 static void total_load(const Problem *p, double area, double L[2])
 {
-  for (int j = 0; j < 2; j++) L[j] = p->F[j] * area;
+  for (int j = 0; j < 2; j++) L[j] = p->body_force[j] * area;
   for (int id = 0; id < SIDE_COUNT; id++)
     if (p->side[id].kind == BC_TRACTION)
       for (int j = 0; j < 2; j++)

@@ -19,7 +19,7 @@ int grad_energy(const Model *md, double *G, Status *st)
     return status_set(st, STATUS_INPUT, "gradient: (4.8) is the energy's "
                       "without Coulomb friction (objective_evaluate: J_F's)");
   const Mesh *m = model_mesh(md);
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *T = model_forces(md);
   memset(G, 0, m->ncol * sizeof *G);
   for (int c = 0; c < d->nc; c++)          /* -sum T_i V_i of (4.8) */
@@ -34,7 +34,7 @@ int grad_energy(const Model *md, double *G, Status *st)
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = model_mesh(md);
-  const Hooke *h = model_hooke(md);
+  const Fem_hooke *h = model_hooke(md);
   const Problem *p = model_problem(md);
   double xy[6], q[6], gx[3], gy[3], e[3], De[3];
   long double el[3];
@@ -51,7 +51,7 @@ static void grad_element(const Model *md, int t, double *G)
     double rate = mesh_motion(m, node);
     if (rate == 0) continue;
     double de_dy = grad_element_height(gy, q, e, De, d, v);
-    if (p->has_body_force) de_dy -= grad_body_force(p->F, q, gy[v]);
+    if (p->has_body_force) de_dy -= grad_body_force(p->body_force, q, gy[v]);
     G[node % m->ncol] += rate * de_dy;
   }
 }

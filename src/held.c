@@ -9,13 +9,13 @@ int held_lift_free(const Problem *p)
   return !friction_side_holds(p, 1);
 }
 #line 839 "paper/model.nw"
-static void node_load(const Dofs *d, const double *b, int k, double f[2])
+static void node_load(const Fem_dofs *d, const double *b, int k, double f[2])
 {
   for (int c = 0; c < 2; c++)
     f[c] = d->unknown[2 * k + c] >= 0 ? b[d->unknown[2 * k + c]] : 0;
 }
 #line 847 "paper/model.nw"
-static double lift_work(const Mesh *m, const Dofs *d, const double *b,
+static double lift_work(const Mesh *m, const Fem_dofs *d, const double *b,
                         double *scale)
 {
   double L2 = 0, f[2];
@@ -32,7 +32,7 @@ typedef struct {
   double scale0, scale1; /* the scale of W(y)'s terms: scale0 + |y| scale1 */
 } Tip;
 
-static Tip tip_work(const Mesh *m, const Dofs *d, const double *b, double p,
+static Tip tip_work(const Mesh *m, const Fem_dofs *d, const double *b, double p,
                     double sigma)
 {
   Tip w = {0, 0, 0, 0};
@@ -46,7 +46,7 @@ static Tip tip_work(const Mesh *m, const Dofs *d, const double *b, double p,
   return w;
 }
 #line 891 "paper/model.nw"
-static double friction_on_tip(const Mesh *m, const Dofs *d,
+static double friction_on_tip(const Mesh *m, const Fem_dofs *d,
                               const double *slip, double y)
 {
   double w = 0;
@@ -55,7 +55,7 @@ static double friction_on_tip(const Mesh *m, const Dofs *d,
   return w;
 }
 #line 906 "paper/model.nw"
-static double tip_excess(const Mesh *m, const Dofs *d, const double *b,
+static double tip_excess(const Mesh *m, const Fem_dofs *d, const double *b,
                          const double *slip, int end, double *scale)
 {
   double p = end ? m->b : m->a, sigma = end ? -1 : 1;
@@ -78,7 +78,7 @@ static int held(double work, double scale)
   return work < -HELD_ROUNDING * scale;
 }
 
-int held_check(const Problem *p, const Mesh *m, const Dofs *d,
+int held_check(const Problem *p, const Mesh *m, const Fem_dofs *d,
                const double *b, const double *slip, Status_code code,
                Status *st)
 {

@@ -12,7 +12,7 @@ int held_lift_free(const Problem *p);
    (n, the unknowns of d) at the mesh's design, by the test (H) with the
    slip bounds slip (nt; NULL: none, or Coulomb's); else code, with the
    motion that nothing resists named in st */
-int held_check(const Problem *p, const Mesh *m, const Dofs *d,
+int held_check(const Problem *p, const Mesh *m, const Fem_dofs *d,
                const double *b, const double *slip, Status_code code,
                Status *st);
 #endif

@@ -111,18 +111,18 @@ static int model_pressed(const Model *md, Status *st)
                     "holds u2");
 }
 #line 384 "paper/model.nw"
-void model_contact_gaps(const Model *md, double *g)
+void model_contact_gaps(const Model *md, double *gap)
 {
-  for (int i = 0; i <= md->problem->N; i++) g[i] = NAN;
+  for (int i = 0; i <= md->problem->N; i++) gap[i] = NAN;
   for (int c = 0; c < md->dofs->nc; c++)
-    g[md->dofs->contact_col[c]] = md->Q[md->dofs->contact[c]] - md->lo[c];
+    gap[md->dofs->contact_col[c]] = md->Q[md->dofs->contact[c]] - md->lo[c];
 }
 
-void model_guess_contact(Model *md, const double *X, const double *g)
+void model_guess_contact(Model *md, const double *X, const double *gap)
 {
   for (int c = 0; c < md->dofs->nc; c++) {
     int i = md->dofs->contact_col[c];
-    if (!isnan(g[i])) md->Q[md->dofs->contact[c]] = -X[i] + fmax(g[i], 0);
+    if (!isnan(gap[i])) md->Q[md->dofs->contact[c]] = -X[i] + fmax(gap[i], 0);
   }
   md->guessed = 1;
 }
@@ -164,7 +164,7 @@ void model_free(Model *md)
 #line 482 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   int nc = d->nc, N1 = md->problem->N + 1, rc;
   if (nc == 0)                         /* every contact node held: nothing to see */
     return status_set(st, STATUS_INPUT, "contact stiffness: no contact node is "
@@ -187,7 +187,7 @@ for (int c = 0; c < nc; c++)
 #line 567 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
-  const Dofs *d = md->dofs;
+  const Fem_dofs *d = md->dofs;
   double *r = malloc(d->ndof * sizeof *r);
   if (!r) return status_set(st, STATUS_MEMORY, "summary: out of memory "
                             "for the reactions of %d DOFs", d->ndof);

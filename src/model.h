@@ -51,19 +51,19 @@ const int *model_contact_columns(const Model *md);
 int model_contact_state(Model *md, double *S, double *v, double *T, Status *st);
 /* the rounding of E at the last design solved (see the optimiser) */
 double model_energy_rounding(const Model *md);
-/* g (N+1): the gap Q_c - lo_c of the last state solved at the design node
-   of each contact unknown c, NaN at the other nodes */
-void model_contact_gaps(const Model *md, double *g);
-/* the start of the next solve: the contact unknowns at the gaps g (N+1,
+/* gap (N+1): the gap Q_c - lo_c of the last state solved at the design
+   node of each contact unknown c, NaN at the other nodes */
+void model_contact_gaps(const Model *md, double *gap);
+/* the start of the next solve: the contact unknowns at the gaps gap (N+1,
    NaN: left as they are) over the design X; for PDAS (see below) */
-void model_guess_contact(Model *md, const double *X, const double *g);
+void model_guess_contact(Model *md, const double *X, const double *gap);
 /* frees the factor of the last state, which is kept; the next solve
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
 #line 556 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
-   triangle t at the last state solved [Pa when E is] */
+   triangle t at the last state solved [Pa when Young's modulus is] */
 void model_stress(const Model *md, int t, double s[5]);
 /* the summary of the last state solved; STATUS_MEMORY if memory runs out */
 int model_summary(const Model *md, Model_summary *sum, Status *st);
@@ -76,9 +76,9 @@ cholmod_common *model_cholmod(const Model *md);
 /* the mesh, moved to the last design solved */
 const Mesh *model_mesh(const Model *md);
 /* the unknowns and the contact DOFs I */
-const Dofs *model_dofs(const Model *md);
+const Fem_dofs *model_dofs(const Model *md);
 /* Hooke's law of the problem's plane model */
-const Hooke *model_hooke(const Model *md);
+const Fem_hooke *model_hooke(const Model *md);
 /* A(X), n x n, both triangles stored */
 const cholmod_sparse *model_stiffness(const Model *md);
 /* n: the load F(X) + P(X) */

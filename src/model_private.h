@@ -9,8 +9,8 @@ struct Model {
   const Problem *problem; /* the problem (not owned) */
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
   Mesh *mesh;           /* moved to the last design solved */
-  Dofs *dofs;           /* unknowns and contact DOFs I */
-  Hooke hooke;          /* Hooke's law of the problem's plane model */
+  Fem_dofs *dofs;       /* unknowns and contact DOFs I */
+  Fem_hooke hooke;      /* Hooke's law of the problem's plane model */
   cholmod_sparse *A;    /* A(X), n x n */
   double *b;            /* n: F(X) + P(X) */
   double *lo;           /* nc: the bounds -X_i of the contact DOFs */

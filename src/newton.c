@@ -54,12 +54,12 @@ void newton_free(Newton_workspace *w)
   free(w);
 }
 #line 284 "paper/newton.nw"
-/* phi: the largest of |g|, |f|, R_ii C0 and S_ii C0; 0 if all are */
+/* phi: the largest of |grad|, |f|, R_ii C0 and S_ii C0; 0 if all are */
 static double force_scale(const Newton_model *mdl)
 {
   double C0 = mdl->B->C0, phi = 0;
   for (int i = 0; i < mdl->n; i++)
-    phi = fmax(phi, fmax(fabs(mdl->g[i]), mdl->r[i] * C0));
+    phi = fmax(phi, fmax(fabs(mdl->grad[i]), mdl->r[i] * C0));
   for (int c = 0; c < mdl->m; c++)
     phi = fmax(phi, fmax(fabs(mdl->f[c]), mdl->S[(size_t) c * mdl->m + c] * C0));
   return phi;
@@ -71,7 +71,7 @@ static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
   const Design_set *B = mdl->B;
   double C0 = B->C0, dlt = B->delta / C0;
   for (int i = 0; i < n; i++) {
-    w->q[i] = mdl->g[i] / phi, w->Hd[i] = mdl->r[i] * C0 / phi;
+    w->q[i] = mdl->grad[i] / phi, w->Hd[i] = mdl->r[i] * C0 / phi;
     w->w[i] = i == 0 || i == N ? 0.5 : 1.0;
     w->b[i] = mdl->X[i] / C0;                     /* -d_i <= X_i */
     w->b[n + i] = 1 - mdl->X[i] / C0;             /*  d_i <= C0 - X_i */
@@ -232,7 +232,7 @@ enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
 
-/* m(0) - m(d) = -(g'd + d'Rd/2) - (T'dv + dv'S dv/2), dv = v - v0 and
+/* m(0) - m(d) = -(grad'd + d'Rd/2) - (T'dv + dv'S dv/2), dv = v - v0 and
    T = S v0 - f: from the step, so that its rounding is the step's;
    *round = eps times the sum of the magnitudes of its terms and of T's */
 static double model_decrease(const Newton_model *mdl, const double *d, const double *v,
@@ -241,8 +241,8 @@ static double model_decrease(const Newton_model *mdl, const double *d, const dou
   int m = mdl->m;
   double dec = 0, sum = 0;
   for (int i = 0; i < mdl->n; i++) {
-    dec -= (mdl->g[i] + 0.5 * mdl->r[i] * d[i]) * d[i];
-    sum += (fabs(mdl->g[i]) + 0.5 * mdl->r[i] * fabs(d[i])) * fabs(d[i]);
+    dec -= (mdl->grad[i] + 0.5 * mdl->r[i] * d[i]) * d[i];
+    sum += (fabs(mdl->grad[i]) + 0.5 * mdl->r[i] * fabs(d[i])) * fabs(d[i]);
   }
   for (int c = 0; c < m; c++) {
     double T = -mdl->f[c], sdv = 0, Tabs = fabs(mdl->f[c]), sabs = 0;
@@ -264,8 +264,8 @@ static int check_model(const Newton_workspace *w, const Newton_model *mdl, Statu
     return status_set(st, STATUS_INPUT, "newton: a model of n = %d, m = %d for a "
                       "workspace of n = %d, m = %d", mdl->n, mdl->m, w->n, w->m);
   for (int i = 0; i < mdl->n; i++)
-    if (!(mdl->r[i] > 0) || !isfinite(mdl->r[i]) || !isfinite(mdl->g[i]) || !isfinite(mdl->X[i]))
-      return status_set(st, STATUS_INPUT, "newton: r, g or X at node %d is not "
+    if (!(mdl->r[i] > 0) || !isfinite(mdl->r[i]) || !isfinite(mdl->grad[i]) || !isfinite(mdl->X[i]))
+      return status_set(st, STATUS_INPUT, "newton: r, grad or X at node %d is not "
                         "finite, or r <= 0", i);
   for (int c = 0; c < mdl->m; c++)     /* one contact unknown a node, in order */
     if (mdl->col[c] < (c ? mdl->col[c - 1] + 1 : 0) || mdl->col[c] >= mdl->n)

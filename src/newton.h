@@ -11,7 +11,7 @@ typedef struct {
   const int *col;      /* m: the design node i(c) of each, increasing */
   const double *X;     /* n: the design, in B */
   const Design_set *B; /* box, slopes and area of (4.4) */
-  const double *g;     /* n: the gradient of E but for the contact, G + P'T */
+  const double *grad;  /* n: the gradient of E but for the contact, G + P'T */
   const double *r;     /* n: the curvature R of the design step, > 0 */
   const double *S;     /* m x m, row-major: the contact Schur complement */
   const double *f;     /* m: its load, S Q_c - T */

@@ -46,7 +46,7 @@ int objective_fits_schur(const Objective *o)
 /* T_c >= 0 of each contact unknown, and omega_c its tributary length */
 static void objective_forces(const Model *md, double *T, double *w)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *Q = model_state(md), *lo = model_bounds(md), *Tm = model_forces(md);
   for (int c = 0; c < d->nc; c++) {
     T[c] = Q[d->contact[c]] <= lo[c] ? fmax(Tm[c], 0) : 0;
@@ -88,7 +88,7 @@ static double peak(int nc, const double *T, const double *w, double S1,
 int objective_partials(const Model *md, const Objective *o, double *J,
                        double *dT, double *dw, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *Q = model_state(md), *lo = model_bounds(md);
   int nc = d->nc, code = STATUS_OK;
   double *v = malloc(4 * ((size_t) nc + 1) * sizeof *v), S1 = 0;
@@ -122,7 +122,7 @@ int objective_value(const Model *md, const Objective *o, double *J, Status *st)
 #line 337 "paper/objective.nw"
 int objective_same_sets(const Model *md, char *held, int write)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *Q = model_state(md), *lo = model_bounds(md);
   int nc = d->nc, nt = d->nt, same = 1;
   for (int k = 0; k < nc + nt; k++) {

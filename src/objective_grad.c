@@ -9,7 +9,7 @@
 static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const cholmod_sparse *A = model_stiffness(md);
   const Sparse_index *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x, *b = model_load(md), *Q = model_state(md);
@@ -30,7 +30,7 @@ static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const cholmod_sparse *A = model_stiffness(md);
   const Sparse_index *Ap = A->p, *Ai = A->i;
   const double *Ax = A->x;
@@ -65,7 +65,7 @@ static void strain_of(const Model *md, const double gx[3], const double gy[3],
   long double el[3];
   fem_element_strain(gx, gy, q, el);
   for (int r = 0; r < 3; r++) e[r] = (double) el[r];
-  const Hooke *h = model_hooke(md);
+  const Fem_hooke *h = model_hooke(md);
   for (int r = 0; r < 3; r++)
     De[r] = h->D[r][0] * e[0] + h->D[r][1] * e[1] + h->D[r][2] * e[2];
 }
@@ -74,8 +74,8 @@ static void triangle_terms(const Model *md, int t, const double *u,
                            const double *v, double *G)
 {
   const Mesh *m = model_mesh(md);
-  const Dofs *dofs = model_dofs(md);
-  const double *F = model_problem(md)->F;
+  const Fem_dofs *dofs = model_dofs(md);
+  const double *F = model_problem(md)->body_force;
   double xy[6], q[6], ue[6], ve[6], gx[3], gy[3], eq[3], Dq[3], eu[3], Du[3];
   fem_element_xy(m, t, xy);
   fem_element_q(m, dofs, model_state(md), t, q);
@@ -114,7 +114,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const double *T = model_forces(md);
   double *dw = malloc(((size_t) d->nt + 1) * sizeof *dw);
   if (!dw) return status_set(st, STATUS_MEMORY, "objective: out of memory");
@@ -149,7 +149,7 @@ static double state_rounding(const Model *md, const double *w)
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
                           char *held, double *G, double *dJ, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   const Problem *p = model_problem(md);
   const Mesh *m = model_mesh(md);
   const double *Q = model_state(md);
@@ -176,10 +176,10 @@ static int gradient_terms(const Model *md, Objective_kind kind, double *v,
   return STATUS_OK;
 }
 
-/* the work vectors of gradient_terms: 5 n, then dT and dw (nc + 1 each) */
-static int gradient_work(const Model *md, double **v, char **held, Status *st)
+/* the scratch vectors of gradient_terms: 5 n, then dT and dw (nc + 1 each) */
+static int gradient_scratch(const Model *md, double **v, char **held, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   size_t n = d->n, nk = d->nc + d->nt;
   *v = calloc(5 * n + 2 * nk + 2, sizeof **v);
   *held = malloc(nk + 1);
@@ -196,8 +196,8 @@ int objective_gradient_fixed(const Model *md, const Objective *o,
     return status_set(st, STATUS_INPUT, "gradient: no state has been solved");
   double *v, J;
   char *held;
-  const Dofs *d = model_dofs(md);
-  int rc = gradient_work(md, &v, &held, st), n = d->n, nc = d->nc;
+  const Fem_dofs *d = model_dofs(md);
+  int rc = gradient_scratch(md, &v, &held, st), n = d->n, nc = d->nc;
   if (rc) return rc;
   double *dT = v + 5 * n, *dw = dT + nc + 1;
   if (o) rc = objective_partials(md, o, &J, dT, dw, st);

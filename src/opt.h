@@ -77,7 +77,7 @@ const char *opt_metric_name(Opt_metric m);   /* or "?" */
 /* 0 if method m minimises the objective o under the contact law; else
    STATUS_INPUT, st saying why after "path: " (the Newton method's model
    is the Hessian of an energy without Coulomb friction) */
-int opt_refusal(Opt_method m, const Objective *o, Contact_law contact,
+int opt_refusal(Opt_method m, const Objective *o, Problem_contact_law contact,
                 const char *path, Status *st);
 int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
                  double *X, Opt_monitor monitor, void *data, Opt_report *rep,

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
-#line 496 "paper/opt.nw"
-int opt_evaluate(Evaluator *ev, const double *X)
+#line 497 "paper/opt.nw"
+int opt_evaluate(Opt_evaluator *ev, const double *X)
 {
   if (ev->have && !memcmp(ev->X, X, ev->n * sizeof *X)) return STATUS_OK;
   ev->have = 0;
@@ -25,7 +25,7 @@ int opt_evaluate(Evaluator *ev, const double *X)
   ev->have = 1;
   return STATUS_OK;
 }
-#line 551 "paper/opt.nw"
+#line 552 "paper/opt.nw"
 int opt_pgnorm(const Design_set *B, const double *X, const double *G,
                double tau, double *pg, Status *st)
 {
@@ -34,9 +34,9 @@ int opt_pgnorm(const Design_set *B, const double *X, const double *G,
   *pg = residual * tau / B->C0;
   return rc;
 }
-#line 562 "paper/opt.nw"
+#line 563 "paper/opt.nw"
 /* 1 if the monitor asks to stop here; its time is the caller's */
-int opt_report_iterate(Evaluator *ev, int iteration, double pg)
+int opt_report_iterate(Opt_evaluator *ev, int iteration, double pg)
 {
   double start = resources_clock();
   Opt_progress p = { iteration, ev->J, pg, ev->solves, model_report(ev->md)->active,
@@ -47,11 +47,11 @@ int opt_report_iterate(Evaluator *ev, int iteration, double pg)
   ev->accepted++;
   return stop;
 }
-#line 602 "paper/opt.nw"
+#line 603 "paper/opt.nw"
 /* after the accepted iterate k, at the evaluator's design, with pi = pg:
    the iterates in a row without measured progress; judged: the method
    measured the step by its own test */
-int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
+int opt_idle_iterates(Opt_evaluator *ev, int k, double pg, int judged)
 {
   int measured = k == 0 || judged || pg < 0.5 * ev->pg_best
               || ev->J < ev->last_J - (ev->noise + ev->last_noise);
@@ -64,7 +64,7 @@ int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged)
 }
 
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
-void opt_idle_detail(Evaluator *ev)
+void opt_idle_detail(Opt_evaluator *ev)
 {
   Objective_kind k = ev->o->objective.kind;
   const char *J = objective_symbol(k), *u = objective_unit(k);
@@ -74,8 +74,8 @@ void opt_idle_detail(Evaluator *ev)
            "%.2e the smallest of the run)", ev->idle, J, ev->idle_J - ev->J, u, J,
            ev->noise, u, ev->pg_last, ev->pg_best);
 }
-#line 633 "paper/opt.nw"
-const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
+#line 634 "paper/opt.nw"
+const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX)
 {
   double pg;
   if ((ev->failed = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) return NULL;
@@ -89,7 +89,7 @@ const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 886 "paper/opt.nw"
+#line 887 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
@@ -104,7 +104,7 @@ void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c
     c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
   }
 }
-#line 905 "paper/opt.nw"
+#line 906 "paper/opt.nw"
 /* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
 {

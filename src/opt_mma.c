@@ -6,24 +6,24 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1285 "paper/opt.nw"
+#line 1286 "paper/opt.nw"
 typedef struct {
-  Evaluator *ev;
+  Opt_evaluator *ev;
   nlopt_opt opt;
   int n;                  /* N+1 */
   int ny;                 /* MMA's variables y: n - 1 less the fixed faces */
   double *X0;             /* n: the design at y = 0, in B */
   double *R;              /* n x ny, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is J / sigma */
-  double *S, *Z;          /* n x n, n x ny: work of the metric */
+  double *S, *Z;          /* n x n, n x ny: scratch of the metric */
   gsl_matrix *A;          /* n x 2n: the area's and the faces' normals */
   Design_multipliers *mult;  /* of the iterate's KKT conditions */
   char *fixed, *faces;    /* 4n - 2 each: the faces fixed at the start, at
                              the last iterate (1 each, in opt_constraints' order) */
-  double *X, *w;          /* n each: work */
+  double *X, *w;          /* n each: scratch */
   int *rows, nrows;       /* 4n - 2: the inequalities that vary with y, as
                              many as nrows, passed to NLopt (below) */
-  double *c;              /* 4n - 2: work, all inequalities */
+  double *c;              /* 4n - 2: scratch, all inequalities */
   double best, best_noise;  /* the lowest J of an iterate, its rounding */
   double *bestX;          /* n: the last accepted iterate */
   int k;                  /* accepted iterates so far */
@@ -33,7 +33,7 @@ typedef struct {
   double outside;         /* seconds in this file's callbacks, this start */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1314 "paper/opt.nw"
+#line 1315 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -54,7 +54,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
   for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1340 "paper/opt.nw"
+#line 1341 "paper/opt.nw"
 /* g (ny) = d c_k / d y for the inequality k of opt_constraints; its
    largest entry */
 static double mma_row(const Mma *q, int k, double *g)
@@ -82,13 +82,13 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   }
   q->outside += resources_clock() - start;
 }
-#line 1379 "paper/opt.nw"
+#line 1380 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static int mma_faces(Mma *q, const double *X, char *face);
 /* J(X(y)) / sigma, and its gradient in y */
 static double mma_value(Mma *q, const double *y, double *grad)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   mma_design(q, y, q->X);
   if (design_violation(ev->B, q->X) > 0
       && (ev->failed = design_project(ev->B, q->X, q->X, NULL, ev->st))) {
@@ -102,7 +102,7 @@ static double mma_value(Mma *q, const double *y, double *grad)
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->J / q->scale;
 }
-#line 1403 "paper/opt.nw"
+#line 1404 "paper/opt.nw"
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
 {
@@ -112,7 +112,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return J;
 }
-#line 1415 "paper/opt.nw"
+#line 1416 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -121,7 +121,7 @@ static void mma_stop(Mma *q, const char *why)
 
 static void mma_accept(Mma *q)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   if (ev->J < q->best) q->best = ev->J, q->best_noise = ev->noise;
   q->stalled = 0;
   q->fresh += q->k > 0;
@@ -132,12 +132,12 @@ static void mma_accept(Mma *q)
   else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1439 "paper/opt.nw"
+#line 1440 "paper/opt.nw"
 /* face[c] = 1 for each inequality c of opt_constraints on which X lies,
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   const Design_multipliers *mu = q->mult;
   int n = q->n, rc;
   double *c = q->A->data, near = -1e-3 * ev->o->tol;  /* 4n - 2 <= 2n^2; A is
@@ -154,7 +154,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1469 "paper/opt.nw"
+#line 1470 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -188,7 +188,7 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1505 "paper/opt.nw"
+#line 1506 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 static void mma_varying(Mma *q);
@@ -208,10 +208,10 @@ static int mma_setup(Mma *q, const double *X)
   if (!rc) mma_varying(q);
   return rc;
 }
-#line 1530 "paper/opt.nw"
+#line 1531 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   int n = q->n, m = q->ny, rc;
   double start = resources_clock();
   if ((rc = model_contact_stiffness(ev->md, q->S, ev->st))) return rc;
@@ -224,7 +224,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1554 "paper/opt.nw"
+#line 1555 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -238,45 +238,45 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1545 "paper/opt.nw"
+#line 1546 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1574 "paper/opt.nw"
+#line 1575 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
-int opt_mma(Evaluator *ev, double *X)
+int opt_mma(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, rc = STATUS_OK;
   size_t nn = (size_t) n * n;
-  double *work = malloc((3 * nn + 12 * (size_t) n + 2) * sizeof *work);
+  double *scratch = malloc((3 * nn + 12 * (size_t) n + 2) * sizeof *scratch);
   Mma q = { .ev = ev, .n = n, .best = HUGE_VAL, .bestX = X,
             .fixed = malloc(8 * (size_t) n), .A = gsl_matrix_alloc(n, 2 * n),
             .mult = design_multipliers_new(ev->B, ev->st),
             .rows = malloc(4 * (size_t) n * sizeof(int)) };
-  if (!work || !q.fixed || !q.A || !q.mult || !q.rows)
+  if (!scratch || !q.fixed || !q.A || !q.mult || !q.rows)
     rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (int more = !rc; more && !rc; ) {
-    q.S = work, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
+    q.S = scratch, q.Z = q.S + nn, q.R = q.Z + nn, q.X0 = q.R + nn;
     q.X = q.X0 + n, q.w = q.X + n, q.faces = q.fixed + 4 * n;
     double *y = q.w + n, *tol = y + n;          /* n - 1 and 4n - 2 */
     q.c = tol + 4 * n;                          /* 4n - 2 */
     if ((rc = opt_evaluate(ev, X)) || (rc = mma_setup(&q, X))) break;
     rc = mma_run(&q, y, tol, &more);
   }
-  free(work), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
+  free(scratch), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1601 "paper/opt.nw"
+#line 1602 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
-  Evaluator *ev = q->ev;
+  Opt_evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1628 "paper/opt.nw"
+#line 1629 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -284,7 +284,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1607 "paper/opt.nw"
+#line 1608 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -293,18 +293,18 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1735 "paper/opt.nw"
+#line 1736 "paper/opt.nw"
 if (r > 0 && !q->own_dual && (ev->o->metric == OPT_METRIC_EUCLIDEAN
                               || objective_fits_schur(&ev->o->objective)))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
-#line 1615 "paper/opt.nw"
+#line 1616 "paper/opt.nw"
   double start = resources_clock();
   q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1641 "paper/opt.nw"
+#line 1642 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 int retry = !rc && !ev->rep->stop_reason[0] && r == NLOPT_FAILURE && !q->own_dual;
@@ -323,15 +323,15 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1621 "paper/opt.nw"
+#line 1622 "paper/opt.nw"
   return rc;
 }
-#line 1722 "paper/opt.nw"
+#line 1723 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {
   int m = 4 * q->n - 2;
-  double top = 0, *g = q->X;         /* ny <= n: the row, in work */
+  double top = 0, *g = q->X;         /* ny <= n: the row, in scratch */
   for (int k = 0; k < m; k++) top = fmax(top, mma_row(q, k, g));
   q->nrows = 0;
   for (int k = 0; k < m; k++)

@@ -5,14 +5,14 @@
 #include <string.h>
 #include "opt_private.h"
 #include "newton.h"
-#line 1781 "paper/opt.nw"
+#line 1782 "paper/opt.nw"
 typedef struct {
-  Evaluator *ev;
+  Opt_evaluator *ev;
   Newton_workspace *solver; /* the model problem's solver */
   Newton_model mdl;       /* the model at the iterate */
   int n, m;               /* design nodes, contact unknowns */
   double rho;             /* the trust in the model, see above */
-  double *S, *f, *g, *r, *v0;   /* m*m, m, n, n, m: the model's data */
+  double *S, *f, *grad, *r, *v0;   /* m*m, m, n, n, m: the model's data */
   double *d, *v, *trial;  /* n, m, n: its solution and the trial design */
   double *Xk;             /* n: the iterate (the evaluator moves to trials) */
   double Ek, noisek;      /* E and its rounding delta E at the iterate */
@@ -24,19 +24,19 @@ typedef struct {
   int sick;               /* iterations in a row whose model failed */
   char failure[400];      /* what the last model that failed measured */
 } Newton_run;
-#line 1807 "paper/opt.nw"
+#line 1808 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
-  Evaluator *ev = nr->ev;
+  Opt_evaluator *ev = nr->ev;
   int n = nr->n, m = nr->m, rc;
   double mean = 0, Gmax = 0;
   const int *col = model_contact_columns(ev->md);
   if ((rc = model_contact_state(ev->md, nr->S, nr->v0, nr->f, ev->st))) return rc;
-  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), nr->g[i] = ev->G[i];
+  for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), nr->grad[i] = ev->G[i];
   for (int c = 0; c < m; c++) {                          /* nr->f holds T */
     double sq = 0;
     for (int e = 0; e < m; e++) sq += nr->S[(size_t) c * m + e] * nr->v0[e];
-    nr->g[col[c]] += nr->f[c];
+    nr->grad[col[c]] += nr->f[c];
     nr->f[c] = sq - nr->f[c];
     mean += nr->S[(size_t) c * m + c] / m;
   }
@@ -46,17 +46,17 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   nr->Ek = ev->J, nr->noisek = ev->noise;
   
-#line 1964 "paper/opt.nw"
+#line 1965 "paper/opt.nw"
 double G2 = 0, rmin = HUGE_VAL;
 for (int i = 0; i < n; i++) G2 += ev->G[i] * ev->G[i], rmin = fmin(rmin, nr->r[i]);
 nr->rho_max = 2 * sqrt(G2) / (DBL_EPSILON * ev->B->C0 * rmin);
-#line 1828 "paper/opt.nw"
+#line 1829 "paper/opt.nw"
   return STATUS_OK;
 }
-#line 1835 "paper/opt.nw"
+#line 1836 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
-  Evaluator *ev = nr->ev;
+  Opt_evaluator *ev = nr->ev;
   Newton_report nrep;
   int n = nr->n, rc;
   double start = resources_clock(), E0 = nr->Ek, noise0 = nr->noisek;
@@ -83,7 +83,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (nrep.pred > noise && ratio < 0.25) nr->rho *= 2;
   return STATUS_OK;
 }
-#line 1995 "paper/opt.nw"
+#line 1996 "paper/opt.nw"
 static void newton_why(const Newton_run *nr)
 {
   char *s = nr->ev->rep->stop_detail;
@@ -100,7 +100,7 @@ static void newton_why(const Newton_run *nr)
     snprintf(s, z, "the model problem failed in %d iterations in a row; "
              "the last: %s", nr->sick, nr->failure);
 }
-#line 1973 "paper/opt.nw"
+#line 1974 "paper/opt.nw"
 /* 1 when the run ends at this trial, its stop reason in the report */
 static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
 {
@@ -120,8 +120,8 @@ static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
   if (!strcmp(why, "no_progress")) newton_why(nr);
   return 1;
 }
-#line 2018 "paper/opt.nw"
-int opt_newton(Evaluator *ev, double *X)
+#line 2019 "paper/opt.nw"
+int opt_newton(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, m = model_contact_count(ev->md), rc = STATUS_OK, k = 0, accepted = 1;
   size_t mm = (size_t) (m > 0 ? m : 1);
@@ -133,12 +133,13 @@ int opt_newton(Evaluator *ev, double *X)
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   }
   nr.f = nr.S + mm * mm, nr.v0 = nr.f + mm, nr.v = nr.v0 + mm;
-  nr.g = nr.v + mm, nr.r = nr.g + n, nr.d = nr.r + n, nr.trial = nr.d + n, nr.Xk = nr.trial + n;
-  nr.mdl = (Newton_model) { n, m, model_dofs(ev->md)->contact_col, nr.Xk, ev->B, nr.g,
+  nr.grad = nr.v + mm, nr.r = nr.grad + n, nr.d = nr.r + n;
+  nr.trial = nr.d + n, nr.Xk = nr.trial + n;
+  nr.mdl = (Newton_model) { n, m, model_dofs(ev->md)->contact_col, nr.Xk, ev->B, nr.grad,
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 2056 "paper/opt.nw"
+#line 2058 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.solver), free(nr.S);
   return rc;
@@ -146,7 +147,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 2035 "paper/opt.nw"
+#line 2037 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))

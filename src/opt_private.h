@@ -30,28 +30,28 @@ typedef struct {
   double *Xacc;           /* n: the last accepted iterate */
   int accepted;           /* iterates reported so far */
   int lifted;             /* the last evaluation failed: the body lifts off */
-} Evaluator;
+} Opt_evaluator;
 enum { OPT_FEW = 3 };     /* so many such iterates in a row: no progress */
 #line 324 "paper/opt.nw"
 /* solve the state at X, then E and grad E, unless X was the last design */
-int opt_evaluate(Evaluator *ev, const double *X);
+int opt_evaluate(Opt_evaluator *ev, const double *X);
 /* report the accepted iterate at the evaluator's design; 1 if the
    monitor asks to stop */
-int opt_report_iterate(Evaluator *ev, int iteration, double pg);
+int opt_report_iterate(Opt_evaluator *ev, int iteration, double pg);
 /* the accepted iterates in a row without measured progress, after k */
-int opt_idle_iterates(Evaluator *ev, int k, double pg, int judged);
+int opt_idle_iterates(Opt_evaluator *ev, int k, double pg, int judged);
 /* the stop_detail of a run stopped by OPT_FEW idle iterates */
-void opt_idle_detail(Evaluator *ev);
+void opt_idle_detail(Opt_evaluator *ev);
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c);
 /* grad ((4n - 2) x ny) = d c / d y for X = X0 + C0 R y, R n x ny */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad);
 /* the k-th iterate of an NLopt method, at the evaluator's design, kept
    in bestX: its stop reason, or NULL to go on (ev->failed if pi failed) */
-const char *opt_nlopt_iterate(Evaluator *ev, int k, double *bestX);
+const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX);
 /* the four methods: from X to the terminal check, X the final design */
-int opt_projgrad(Evaluator *ev, double *X);
-int opt_slsqp(Evaluator *ev, double *X);
-int opt_newton(Evaluator *ev, double *X);
-int opt_mma(Evaluator *ev, double *X);
+int opt_projgrad(Opt_evaluator *ev, double *X);
+int opt_slsqp(Opt_evaluator *ev, double *X);
+int opt_newton(Opt_evaluator *ev, double *X);
+int opt_mma(Opt_evaluator *ev, double *X);
 #endif

@@ -3,15 +3,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include "opt_private.h"
-#line 678 "paper/opt.nw"
+#line 679 "paper/opt.nw"
 typedef struct {
   double *trial;          /* n: P_B(X - tG) */
   double *Y;              /* n: X - tG */
   double *X, *G;          /* n each: the iterate and its gradient */
-} Projgrad_work;
+} Projgrad_scratch;
 
-#line 688 "paper/opt.nw"
-static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
+#line 689 "paper/opt.nw"
+static int projgrad_step(Opt_evaluator *ev, double *t, Projgrad_scratch *w,
                          int *accepted)
 {
   int n = ev->n, rc;
@@ -21,7 +21,7 @@ static int projgrad_step(Evaluator *ev, double *t, Projgrad_work *w,
   *accepted = 0;
   for (int halving = 0; halving < 50 && !*accepted; halving++, *t /= 2) {
     
-#line 707 "paper/opt.nw"
+#line 708 "paper/opt.nw"
 for (int i = 0; i < n; i++) Y[i] = X[i] - *t * G[i];
 if ((rc = design_project(ev->B, Y, Xn, NULL, ev->st))) return rc;
 double descent = 0;
@@ -29,26 +29,26 @@ for (int i = 0; i < n; i++) descent += G[i] * (Xn[i] - X[i]);
 if (descent >= 0) continue;                /* the arc has collapsed */
 if ((rc = opt_evaluate(ev, Xn))) return rc;
 *accepted = ev->J <= J0 + 1e-4 * descent;
-#line 698 "paper/opt.nw"
+#line 699 "paper/opt.nw"
   }
   if (*accepted) *t *= 4;                      /* undo the last halving, then double */
   else if ((rc = opt_evaluate(ev, X))) return rc;  /* back to the last iterate */
   return STATUS_OK;
 }
-#line 719 "paper/opt.nw"
-int opt_projgrad(Evaluator *ev, double *X)
+#line 720 "paper/opt.nw"
+int opt_projgrad(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, rc, accepted = 1, k = 0;
   double t = ev->tau, pg;
-  double *work = malloc(4 * n * sizeof *work);
-  Projgrad_work w = { work, work + n, work + 2 * n, work + 3 * n };
-  if (!work) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
+  double *scratch = malloc(4 * n * sizeof *scratch);
+  Projgrad_scratch w = { scratch, scratch + n, scratch + 2 * n, scratch + 3 * n };
+  if (!scratch) return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory");
   for (;; k++) {
     if ((rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))) break;
     int stop = opt_report_iterate(ev, k, pg);
     ev->rep->pgnorm = pg;
     
-#line 741 "paper/opt.nw"
+#line 742 "paper/opt.nw"
 int idle = opt_idle_iterates(ev, k, pg, 0);
 const char *why = pg <= ev->o->tol ? "converged"
                 : stop ? "interrupted"
@@ -64,11 +64,11 @@ if (why) {
   else if (!strcmp(why, "no_progress")) opt_idle_detail(ev);
   break;
 }
-#line 731 "paper/opt.nw"
+#line 732 "paper/opt.nw"
     if ((rc = projgrad_step(ev, &t, &w, &accepted))) break;
   }
   ev->rep->iterations = k;
   memcpy(X, ev->X, n * sizeof *X);
-  free(work);
+  free(scratch);
   return rc;
 }

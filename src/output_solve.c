@@ -38,7 +38,7 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
   for (int s = 0; s < SIDE_COUNT; s++) {
-    Bc_kind kind = model_problem(md)->side[s].kind;
+    Problem_bc_kind kind = model_problem(md)->side[s].kind;
     if (kind == BC_CLAMPED || kind == BC_ROLLER)
       fprintf(f, "reaction_%s_x1 %.15g\nreaction_%s_x2 %.15g\n", side[s],
               ms->reaction[s][0], side[s], ms->reaction[s][1]);

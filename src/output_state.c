@@ -16,7 +16,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   FILE *f = output_open_in(o, sub, "contact.dat", st);
   if (!f) return st->code;
   fprintf(f, "# x1[m] alpha[m] u2[m] gap[m] T[N/m] pressure[Pa]%s\n",

@@ -51,7 +51,7 @@ static void vtu_displacement(const Vtu_state *s, int which, void *values)
 /* which 0: the gap u2 + alpha_i [m]; 1: the contact pressure [Pa] */
 static void vtu_contact(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = model_dofs(s->md);
+  const Fem_dofs *d = model_dofs(s->md);
   double *v = values;
   memset(v, 0, model_mesh(s->md)->nnodes * sizeof *v);
   for (int c = 0; c < d->nc; c++) {
@@ -65,7 +65,7 @@ static void vtu_contact_node(const Vtu_state *s, int which, void *values)
 {
   uint8_t *v = values;
   (void) which;
-  const Dofs *d = model_dofs(s->md);
+  const Fem_dofs *d = model_dofs(s->md);
   memset(v, 0, model_mesh(s->md)->nnodes);
   for (int c = 0; c < d->nc; c++) v[d->contact_col[c]] = 1;
 }
@@ -73,7 +73,7 @@ static void vtu_contact_node(const Vtu_state *s, int which, void *values)
 /* the nodal friction force T_t [N/m], 0 where u1 is held */
 static void vtu_tangential(const Vtu_state *s, int which, void *values)
 {
-  const Dofs *d = model_dofs(s->md);
+  const Fem_dofs *d = model_dofs(s->md);
   double *v = values;
   (void) which;
   memset(v, 0, model_mesh(s->md)->nnodes * sizeof *v);

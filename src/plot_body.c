@@ -27,7 +27,7 @@ static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); 
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
-static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
+static void side_support(FILE *f, Problem_bc_kind kind, const char *x, const char *end,
                          int s, int n)
 {
   if (kind == BC_CLAMPED && s < 0)
@@ -49,7 +49,7 @@ static void side_support(FILE *f, Bc_kind kind, const char *x, const char *end,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER);
 }
 #line 918 "paper/figures.nw"
-static void top_support(FILE *f, Bc_kind kind, int n)
+static void top_support(FILE *f, Problem_bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
     fprintf(f, "  set object rect from a, gamma to b, gamma + cy(%g) %s\n", WALL, hatch);
@@ -64,9 +64,9 @@ static void top_support(FILE *f, Bc_kind kind, int n)
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
 #line 937 "paper/figures.nw"
-static double load_reach(const Side *sd, int k);
+static double load_reach(const Problem_side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
-static double side_reach(const Side *sd, int k)
+static double side_reach(const Problem_side *sd, int k)
 {
   switch (sd->kind) {
   case BC_CLAMPED: return WALL;
@@ -100,7 +100,7 @@ static Body_page body_page(const Plot *pl)
 }
 #line 982 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
-static void load_text(const Side *sd, char *buf, size_t size);
+static void load_text(const Problem_side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -129,7 +129,7 @@ static void body_fit(const Plot *pl, Body_page *L)
 static const double normal[SIDE_COUNT][2] = { { -1, 0 }, { 1, 0 }, { 0, 1 } };
 
 /* the tail and head of the arrows of side k, cm from the side */
-static void load_arrow(const Side *sd, int k, double tail[2], double head[2])
+static void load_arrow(const Problem_side *sd, int k, double tail[2], double head[2])
 {
   double P = hypot(sd->P[0], sd->P[1]), t[2] = { sd->P[0] / P, sd->P[1] / P };
   const double *n = normal[k];
@@ -143,7 +143,7 @@ static void load_arrow(const Side *sd, int k, double tail[2], double head[2])
 }
 
 /* how far the arrows of side k reach out of the body, cm */
-static double load_reach(const Side *sd, int k)
+static double load_reach(const Problem_side *sd, int k)
 {
   double tail[2], head[2];
   const double *n = normal[k];
@@ -151,7 +151,7 @@ static double load_reach(const Side *sd, int k)
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
 #line 1048 "paper/figures.nw"
-static void load_text(const Side *sd, char *buf, size_t size)
+static void load_text(const Problem_side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
   plot_enhanced_number(sd->P[0], p1, sizeof p1);
@@ -167,7 +167,7 @@ static void side_point(FILE *f, int k, const char *s, double dx, double dy)
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
 #line 1072 "paper/figures.nw"
-static void side_load(FILE *f, const Side *sd, int k, double ucm)
+static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
   double len = (sd->to - sd->from) * ucm, step;
@@ -213,7 +213,7 @@ static void side_name(const Problem *p, int k, char *buf, size_t size)
 /* x1 of the top's name, and its height above the top in cm */
 static void top_name_place(const Problem *p, const Body_page *L, double *x, double *up)
 {
-  const Side *t = &p->side[SIDE_TOP];
+  const Problem_side *t = &p->side[SIDE_TOP];
   double W = p->b - p->a, left = 0, right = 0;
   *x = p->a + 0.25 * W;
   *up = L->ext[SIDE_TOP] + 0.396;
@@ -268,8 +268,8 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
-  plot_enhanced_number(p->F[0], f1, sizeof f1);
-  plot_enhanced_number(p->F[1], f2, sizeof f2);
+  plot_enhanced_number(p->body_force[0], f1, sizeof f1);
+  plot_enhanced_number(p->body_force[1], f2, sizeof f2);
   fprintf(f, "  set label 'body force ({/:Italic F}_1, {/:Italic F}_2) = (%s, %s) N/m^3' "
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");

@@ -25,7 +25,7 @@ typedef struct {
 #line 1471 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
-  Bc_kind t = p->side[SIDE_TOP].kind;
+  Problem_bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }

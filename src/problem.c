@@ -1,8 +1,8 @@
-#line 199 "paper/problem.nw"
+#line 208 "paper/problem.nw"
 #include <stddef.h>
 #include "problem.h"
 
-#line 205 "paper/problem.nw"
+#line 214 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
@@ -10,21 +10,21 @@ const char *const problem_bc_names[] = {"free", "clamped", "roller",
 const char *const problem_contact_names[] = {"frictionless", "tresca",
                                              "coulomb", NULL};
 
-const char *problem_model_name(Plane_model m)
+const char *problem_model_name(Problem_plane_model m)
 {
   return (unsigned)m <= MODEL_PLANE_STRAIN ? problem_model_names[m] : "?";
 }
 
-const char *problem_bc_name(Bc_kind k)
+const char *problem_bc_name(Problem_bc_kind k)
 {
   return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
 }
 
-const char *problem_contact_name(Contact_law law)
+const char *problem_contact_name(Problem_contact_law law)
 {
   return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
 }
-#line 231 "paper/problem.nw"
+#line 240 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;

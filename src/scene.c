@@ -1,12 +1,12 @@
-#line 2500 "paper/scene.nw"
+#line 2503 "paper/scene.nw"
 #include <stdlib.h>
 #include <string.h>
 #include "scene_private.h"
-#line 2509 "paper/scene.nw"
+#line 2512 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
-  Loader L;
+  Scene_loader L;
   int i, rc;
   memset(s, 0, sizeof *s);
   if (strlen(path) >= sizeof s->path)
@@ -22,7 +22,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 2532 "paper/scene.nw"
+#line 2535 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

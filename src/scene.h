@@ -13,7 +13,7 @@ typedef struct {
   Problem problem;       /* [geometry] [design] [mesh] [material] [left]
                             [right] [top] [body_force] [contact] */
   char initial[16];      /* design.initial: arc, line, constant or file */
-  Shape shape;           /* arc, line, constant: the formula of alpha0 */
+  Design_shape shape;    /* arc, line, constant: the formula of alpha0 */
   char shape_file[4096]; /* file: the shape file's absolute path */
   double *alpha0;        /* N+1 nodal values of the initial design (owned) */
   Qp_options solver;     /* [solver]: the state problem (4.3) */

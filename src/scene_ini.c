@@ -1,4 +1,4 @@
-#line 904 "paper/scene.nw"
+#line 906 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -6,18 +6,18 @@
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
-#line 917 "paper/scene.nw"
-static int nul_byte(Loader *L);
-static int long_line(Loader *L, const char *buf, int size);
-#line 941 "paper/scene.nw"
+#line 919 "paper/scene.nw"
+static int nul_byte(Scene_loader *L);
+static int long_line(Scene_loader *L, const char *buf, int size);
+#line 943 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
-static int admit(Loader *L, Entry *e, const char *sec, const char *key,
+static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
 {
   char where[640], list[256];
   scene_origin(L, L->override, where, sizeof where);
   
-#line 962 "paper/scene.nw"
+#line 964 "paper/scene.nw"
 if (!*sec)
   return scene_fail(L, "%s: line %d: %s = %s comes before any [section]", where,
                     L->line, key, val);
@@ -27,7 +27,7 @@ if (!scene_section_known(sec))
 if (!scene_key_find(sec, key))
   return scene_fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
                     key, val, sec, scene_key_names(sec, list, sizeof list));
-#line 948 "paper/scene.nw"
+#line 950 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return scene_fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                       key, (int)sizeof e->val - 1);
@@ -38,9 +38,9 @@ if (!scene_key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 975 "paper/scene.nw"
+#line 977 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Entry *scene_find(Loader *L, const char *sec, const char *key)
+Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
 {
   int i;
   for (i = 0; i < L->n; i++)
@@ -48,9 +48,9 @@ Entry *scene_find(Loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 989 "paper/scene.nw"
+#line 991 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
-static Entry *add(Loader *L, const Entry *e)
+static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
 {
   if (L->n == TABLE_MAX) {
     scene_fail(L, "%s: more than %d keys", L->path, TABLE_MAX);
@@ -59,11 +59,11 @@ static Entry *add(Loader *L, const Entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 1020 "paper/scene.nw"
+#line 1022 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
-  Loader *L = user;
+  Scene_loader *L = user;
   int c = EOF, n = 0;
   if (L->failed) return NULL;
   while (n < size - 1 && (c = getc(L->fp)) != EOF)
@@ -78,14 +78,14 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1041 "paper/scene.nw"
+#line 1043 "paper/scene.nw"
 /* tell a NUL byte on the current line */
-static int nul_byte(Loader *L)
+static int nul_byte(Scene_loader *L)
 {
   return scene_fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
                     "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 1061 "paper/scene.nw"
+#line 1063 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line)
 {
@@ -100,7 +100,7 @@ int scene_in_comment(const char *buf, int line)
 
 /* the line begun in buf is longer than buf: drop the rest of a comment
    (0), or tell the line too long */
-static int long_line(Loader *L, const char *buf, int size)
+static int long_line(Scene_loader *L, const char *buf, int size)
 {
   int c;
   if (!scene_in_comment(buf, L->line))
@@ -110,18 +110,18 @@ static int long_line(Loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 1092 "paper/scene.nw"
+#line 1094 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
 {
-  Loader *L = user;
-  Entry e;
-  const Entry *old;
+  Scene_loader *L = user;
+  Scene_entry e;
+  const Scene_entry *old;
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1109 "paper/scene.nw"
+#line 1111 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   scene_fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -129,29 +129,29 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
              L->line, sec, key);
   return 0;
 }
-#line 1102 "paper/scene.nw"
+#line 1104 "paper/scene.nw"
   
-#line 1120 "paper/scene.nw"
+#line 1122 "paper/scene.nw"
 if ((old = scene_find(L, sec, key))) {
   scene_bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
             old->line);
   return 0;
 }
-#line 1103 "paper/scene.nw"
+#line 1105 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1161 "paper/scene.nw"
+#line 1163 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
-int scene_for_memory(Loader *L, int e)
+int scene_for_memory(Scene_loader *L, int e)
 {
   if (e != ENOMEM) return L->failed;
   if (L->st) L->st->code = STATUS_MEMORY;
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1134 "paper/scene.nw"
+#line 1136 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
-int scene_read_file(Loader *L)
+int scene_read_file(Scene_loader *L)
 {
   int rc;
   errno = 0;
@@ -169,18 +169,18 @@ int scene_read_file(Loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1172 "paper/scene.nw"
+#line 1174 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   scene_fail(L, "%s: line %d: syntax error: expected [section], key = value, "
              "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1153 "paper/scene.nw"
+#line 1155 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1194 "paper/scene.nw"
+#line 1196 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -191,13 +191,13 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1211 "paper/scene.nw"
+#line 1213 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
-static void drop_unused(Loader *L, const Entry *e)
+static void drop_unused(Scene_loader *L, const Scene_entry *e)
 {
-  const Key *sel = scene_key_find(e->sec, e->key);
+  const Scene_key *sel = scene_key_find(e->sec, e->key);
   const char *w = *e->val ? e->val : sel->dflt;
-  Entry *old;
+  Scene_entry *old;
   int i;
   for (i = 0; w && i < SCENE_NKEYS; i++)
     if (scene_keys[i].selector && strcmp(scene_keys[i].sec, e->sec) == 0
@@ -206,12 +206,12 @@ static void drop_unused(Loader *L, const Entry *e)
         && (old = scene_find(L, e->sec, scene_keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1231 "paper/scene.nw"
+#line 1233 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
-int scene_apply_override(Loader *L, const char *o)
+int scene_apply_override(Scene_loader *L, const char *o)
 {
   char *copy, *eq, *dot, *sec = NULL, *key = NULL, *val = NULL;
-  Entry e, *old;
+  Scene_entry e, *old;
   L->override = o;
   if (!(copy = malloc(strlen(o) + 1)))
     return L->failed = status_set(L->st, STATUS_MEMORY, "out of memory");
@@ -219,7 +219,7 @@ int scene_apply_override(Loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1256 "paper/scene.nw"
+#line 1258 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -231,7 +231,7 @@ if (!sec || !*sec || !*key)
              L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1243 "paper/scene.nw"
+#line 1245 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);

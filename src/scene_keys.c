@@ -61,10 +61,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else status_number(d.tol, buf);
   return buf;
 }
-#line 668 "paper/scene.nw"
-const Key scene_keys[] = {
+#line 669 "paper/scene.nw"
+const Scene_key scene_keys[] = {
   
-#line 514 "paper/scene.nw"
+#line 515 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -105,9 +105,9 @@ const Key scene_keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder (with -s too)"},
-#line 670 "paper/scene.nw"
+#line 671 "paper/scene.nw"
   
-#line 557 "paper/scene.nw"
+#line 558 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -117,15 +117,15 @@ const Key scene_keys[] = {
  .meaning = "top of the moving rows of cells"},
 {"mesh", "refine", KEY_INT, .at = AT_DEFAULT, .unit = "-", .dflt = "1",
  .accepted = ">= 1", .meaning = "multiplies N, M and R: a finer mesh"},
-{"material", "E", KEY_REAL, .at = AT(problem.E), .unit = "Pa",
+{"material", "E", KEY_REAL, .at = AT(problem.young), .unit = "Pa",
  .accepted = "1e-30 <= E <= 1e30", .meaning = "Young's modulus"},
 {"material", "nu", KEY_REAL, .at = AT(problem.nu), .unit = "1",
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 671 "paper/scene.nw"
+#line 672 "paper/scene.nw"
   
-#line 577 "paper/scene.nw"
+#line 578 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
   {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
    "free", .meaning = "the condition of the " what},                       \
@@ -149,13 +149,13 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 672 "paper/scene.nw"
+#line 673 "paper/scene.nw"
   
-#line 604 "paper/scene.nw"
-{"body_force", "F1", KEY_REAL, .at = AT(problem.F[0]), .unit = "N/m^3",
+#line 605 "paper/scene.nw"
+{"body_force", "F1", KEY_REAL, .at = AT(problem.body_force[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
-{"body_force", "F2", KEY_REAL, .at = AT(problem.F[1]), .unit = "N/m^3",
+{"body_force", "F2", KEY_REAL, .at = AT(problem.body_force[1]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F2| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x2 component"},
 {"contact", "model", KEY_WORD, problem_contact_names, AT(problem.contact),
@@ -170,9 +170,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 673 "paper/scene.nw"
+#line 674 "paper/scene.nw"
   
-#line 625 "paper/scene.nw"
+#line 626 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -204,21 +204,21 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "starts", KEY_INT, .at = AT(optimizer.starts), .unit = "-",
  .dflt = "1", .accepted = "1 <= starts <= 100",
  .meaning = "starts: the scene's and starts - 1 waves in B; the best kept"},
-#line 674 "paper/scene.nw"
+#line 675 "paper/scene.nw"
   
-#line 660 "paper/scene.nw"
+#line 661 "paper/scene.nw"
 {"objective", "kind", KEY_WORD, objective_names, AT(optimizer.objective.kind),
  "-", "energy", .meaning = "what the design minimises"},
 {"objective", "q", KEY_REAL, .at = AT(optimizer.objective.q), .unit = "1",
  .dflt = "8", .selector = "kind", .when = "pressure_peak",
  .accepted = "1 <= q <= 1000", .meaning = "the exponent of pressure_peak"},
-#line 675 "paper/scene.nw"
+#line 676 "paper/scene.nw"
 };
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
-#line 686 "paper/scene.nw"
+#line 687 "paper/scene.nw"
 /* the record of sec.key, or NULL */
-const Key *scene_key_find(const char *sec, const char *key)
+const Scene_key *scene_key_find(const char *sec, const char *key)
 {
   int i;
   for (i = 0; i < SCENE_NKEYS; i++)
@@ -235,7 +235,7 @@ int scene_section_known(const char *sec)
     if (strcmp(scene_keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 709 "paper/scene.nw"
+#line 710 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size)
 {
@@ -251,9 +251,9 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 728 "paper/scene.nw"
+#line 729 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
-int scene_key_means(const Key *k, const char *w)
+int scene_key_means(const Scene_key *k, const char *w)
 {
   size_t n = strlen(w);
   const char *p;
@@ -263,10 +263,10 @@ int scene_key_means(const Key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 2549 "paper/scene.nw"
+#line 2552 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
-static const char *default_text(const Key *k, char *buf, size_t size)
+static const char *default_text(const Scene_key *k, char *buf, size_t size)
 {
   const char *const *w;
   char v[8][32];
@@ -292,16 +292,16 @@ static const char *default_text(const Key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2581 "paper/scene.nw"
+#line 2584 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
-static const char *accepted_text(const Key *k, char *buf, size_t size)
+static const char *accepted_text(const Scene_key *k, char *buf, size_t size)
 {
   if (k->accepted) return k->accepted;
   return scene_name_list(k->words, buf, size);
 }
 
 /* buf = the meaning of k, and the words of its selector it needs */
-static const char *meaning_text(const Key *k, char *buf, size_t size)
+static const char *meaning_text(const Scene_key *k, char *buf, size_t size)
 {
   const char *p;
   snprintf(buf, size, "%s", k->meaning);
@@ -316,7 +316,7 @@ static const char *meaning_text(const Key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2609 "paper/scene.nw"
+#line 2612 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -329,7 +329,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2627 "paper/scene.nw"
+#line 2630 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -353,14 +353,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2656 "paper/scene.nw"
+#line 2659 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2650 "paper/scene.nw"
+#line 2653 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }

@@ -1,10 +1,10 @@
-#line 798 "paper/scene.nw"
+#line 800 "paper/scene.nw"
 #include <stdio.h>
 #include "scene_private.h"
-#line 831 "paper/scene.nw"
+#line 833 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
-int vfail(Loader *L, const char *fmt, va_list ap)
+int vfail(Scene_loader *L, const char *fmt, va_list ap)
 {
   char msg[sizeof ((Status *)0)->msg];
   vsnprintf(msg, sizeof msg, fmt, ap);
@@ -12,7 +12,7 @@ int vfail(Loader *L, const char *fmt, va_list ap)
 }
 
 PRINTF_LIKE(2, 3)
-int scene_fail(Loader *L, const char *fmt, ...)
+int scene_fail(Scene_loader *L, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -20,27 +20,27 @@ int scene_fail(Loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 853 "paper/scene.nw"
+#line 855 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
-void scene_origin(const Loader *L, const char *override, char *buf,
+void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size)
 {
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 864 "paper/scene.nw"
+#line 866 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
-int vbad(Loader *L, const Entry *e, const char *fmt, va_list ap)
+int vbad(Scene_loader *L, const Scene_entry *e, const char *fmt, va_list ap)
 {
   char where[640], why[512];
   scene_origin(L, e->override, where, sizeof where);
   vsnprintf(why, sizeof why, fmt, ap);
   return scene_fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 877 "paper/scene.nw"
+#line 879 "paper/scene.nw"
 PRINTF_LIKE(3, 4)
-int scene_bad(Loader *L, const Entry *e, const char *fmt, ...)
+int scene_bad(Scene_loader *L, const Scene_entry *e, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -50,7 +50,7 @@ int scene_bad(Loader *L, const Entry *e, const char *fmt, ...)
 }
 
 PRINTF_LIKE(2, 3)
-int scene_blame(Loader *L, const char *fmt, ...)
+int scene_blame(Scene_loader *L, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);

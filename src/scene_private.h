@@ -9,30 +9,30 @@
 #include "scene.h"
 
 #line 479 "paper/scene.nw"
-typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Key_type;
-typedef const char *Default_of(const char *key, int k, char *buf,
+typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
+typedef const char *Scene_default_of(const char *key, int k, char *buf,
                                size_t size);
 #define AT(field) ((long)offsetof(Scene, field))
 #define AT_DEFAULT (-1L)  /* no field: written as its default */
 
 typedef struct {
   const char *sec, *key;     /* the section and the key */
-  Key_type type;             /* a real, an integer, a word, a text */
+  Scene_key_type type;       /* a real, an integer, a word, a text */
   const char *const *words;  /* the words a word (or design.initial) takes */
   long at;                   /* the offset of its value in a Scene */
   const char *unit;          /* m, Pa, ...; 1: a pure number; -: none */
   const char *dflt;          /* the default as a scene writes it, or */
-  Default_of *by;            /* the default under the selector's word k */
+  Scene_default_of *by;      /* the default under the selector's word k */
   const char *selector;      /* a word of the section that decides: */
   const char *when;          /* its words with which the key means something,
                                 blank-separated (NULL: all of them) */
   const char *accepted;      /* the values accepted (NULL: the words) */
   const char *meaning;       /* one line */
-} Key;
+} Scene_key;
 
-_Static_assert(sizeof(Plane_model) == sizeof(int)
-               && sizeof(Bc_kind) == sizeof(int)
-               && sizeof(Contact_law) == sizeof(int)
+_Static_assert(sizeof(Problem_plane_model) == sizeof(int)
+               && sizeof(Problem_bc_kind) == sizeof(int)
+               && sizeof(Problem_contact_law) == sizeof(int)
                && sizeof(Qp_method) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int)
@@ -42,21 +42,21 @@ _Static_assert(sizeof(Plane_model) == sizeof(int)
 enum { SCENE_NKEYS = 55 };  /* the records of the table of keys */
 extern const char *const scene_side_names[];    /* left, right, top */
 extern const char *const scene_initial_names[]; /* arc, line, constant, file */
-extern const Key scene_keys[SCENE_NKEYS];       /* the table of keys */
+extern const Scene_key scene_keys[SCENE_NKEYS]; /* the table of keys */
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w);
 /* buf = the names, comma-separated (cut to size) */
 const char *scene_name_list(const char *const *names, char *buf,
                             size_t size);
 /* the record of sec.key, or NULL */
-const Key *scene_key_find(const char *sec, const char *key);
+const Scene_key *scene_key_find(const char *sec, const char *key);
 /* whether sec is a section of the table */
 int scene_section_known(const char *sec);
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
-int scene_key_means(const Key *k, const char *w);
-#line 751 "paper/scene.nw"
+int scene_key_means(const Scene_key *k, const char *w);
+#line 752 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,
                "a scene's values fit the loader");
@@ -66,68 +66,68 @@ typedef struct {
   char val[ENTRY_VALUE];  /* the value, without blanks around or comment */
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
-} Entry;
-#line 767 "paper/scene.nw"
+} Scene_entry;
+#line 769 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
   int failed;            /* 0, or the code of the failure told */
-  Entry e[TABLE_MAX];    /* the values given, in the order met */
+  Scene_entry e[TABLE_MAX]; /* the values given, in the order met */
   int n;                 /* entries used */
   FILE *fp;              /* the reader: the scene file, */
   int line;              /* the number of the line just read, 0 after it, */
   int indented;          /* whether that line starts with a blank, */
-  const Entry *prev;     /* and the entry set by the previous key line */
+  const Scene_entry *prev; /* and the entry set by the previous key line */
   const char *override;  /* the override being applied, or NULL */
-  Entry last;            /* the value converted last: a check blames it */
-} Loader;
-#line 821 "paper/scene.nw"
+  Scene_entry last;      /* the value converted last: a check blames it */
+} Scene_loader;
+#line 823 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 805 "paper/scene.nw"
+#line 807 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
-PRINTF_LIKE(2, 3) int scene_fail(Loader *L, const char *fmt, ...);
+PRINTF_LIKE(2, 3) int scene_fail(Scene_loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
-PRINTF_LIKE(3, 4) int scene_bad(Loader *L, const Entry *e,
+PRINTF_LIKE(3, 4) int scene_bad(Scene_loader *L, const Scene_entry *e,
                                 const char *fmt, ...);
 /* the same about the value converted last, L->last */
-PRINTF_LIKE(2, 3) int scene_blame(Loader *L, const char *fmt, ...);
+PRINTF_LIKE(2, 3) int scene_blame(Scene_loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
-void scene_origin(const Loader *L, const char *override, char *buf,
+void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size);
-#line 924 "paper/scene.nw"
+#line 926 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
-Entry *scene_find(Loader *L, const char *sec, const char *key);
+Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
-int scene_read_file(Loader *L);
+int scene_read_file(Scene_loader *L);
 /* apply the override o = "section.key=value" onto the table */
-int scene_apply_override(Loader *L, const char *o);
+int scene_apply_override(Scene_loader *L, const char *o);
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
-int scene_for_memory(Loader *L, int e);
+int scene_for_memory(Scene_loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1303 "paper/scene.nw"
+#line 1305 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Entry *scene_entry(Loader *L, const char *sec, const char *key);
+const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key);
 /* k = the integer sec.key */
-int scene_integer(Loader *L, const char *sec, const char *key, int *k);
+int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k);
 /* k = the index of the word sec.key among the words of its record */
-int scene_word(Loader *L, const char *sec, const char *key, int *k);
+int scene_word(Scene_loader *L, const char *sec, const char *key, int *k);
 /* the field of s that sec.key's record names = the value of sec.key */
-int scene_get(Loader *L, Scene *s, const char *sec, const char *key);
+int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
-int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
+int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1787 "paper/scene.nw"
+#line 1790 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
-int scene_read_initial(Loader *L, Scene *s);
-#line 1546 "paper/scene.nw"
+int scene_read_initial(Scene_loader *L, Scene *s);
+#line 1548 "paper/scene.nw"
 /* the scene = the table, checked */
-int scene_convert(Loader *L, Scene *s);
+int scene_convert(Scene_loader *L, Scene *s);
 #line 328 "paper/scene.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 1289 "paper/scene.nw"
+#line 1291 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 #include "scene_private.h"
-#line 1319 "paper/scene.nw"
+#line 1321 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -47,7 +47,7 @@ const char *scene_to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1362 "paper/scene.nw"
+#line 1364 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -60,7 +60,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1378 "paper/scene.nw"
+#line 1380 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -71,14 +71,14 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1398 "paper/scene.nw"
+#line 1400 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
-static const char *loader_default(Loader *L, const Key *k, char *buf,
+static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf,
                                   size_t size)
 {
-  const Key *sel;
-  const Entry *e;
+  const Scene_key *sel;
+  const Scene_entry *e;
   int w;
   if (!k->by) return k->dflt;
   sel = scene_key_find(k->sec, k->selector);
@@ -86,11 +86,11 @@ static const char *loader_default(Loader *L, const Key *k, char *buf,
   w = scene_name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1415 "paper/scene.nw"
+#line 1417 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
-const Entry *scene_entry(Loader *L, const char *sec, const char *key)
+const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key)
 {
-  const Entry *e = scene_find(L, sec, key);
+  const Scene_entry *e = scene_find(L, sec, key);
   char buf[32];
   const char *dflt;
   if (e) L->last = *e;
@@ -105,9 +105,9 @@ const Entry *scene_entry(Loader *L, const char *sec, const char *key)
   }
   return &L->last;
 }
-#line 1437 "paper/scene.nw"
+#line 1439 "paper/scene.nw"
 /* x = the number sec.key */
-static int scene_real(Loader *L, const char *sec, const char *key, double *x)
+static int scene_real(Scene_loader *L, const char *sec, const char *key, double *x)
 {
   const char *why;
   if (!scene_entry(L, sec, key)) return L->failed;
@@ -115,9 +115,9 @@ static int scene_real(Loader *L, const char *sec, const char *key, double *x)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1449 "paper/scene.nw"
+#line 1451 "paper/scene.nw"
 /* k = the integer sec.key */
-int scene_integer(Loader *L, const char *sec, const char *key, int *k)
+int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
 {
   const char *why;
   if (!scene_entry(L, sec, key)) return L->failed;
@@ -125,9 +125,9 @@ int scene_integer(Loader *L, const char *sec, const char *key, int *k)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1461 "paper/scene.nw"
+#line 1463 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
-int scene_word(Loader *L, const char *sec, const char *key, int *k)
+int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
 {
   const char *const *names = scene_key_find(sec, key)->words;
   char list[256];
@@ -136,11 +136,11 @@ int scene_word(Loader *L, const char *sec, const char *key, int *k)
   return scene_blame(L, "unknown value (accepted: %s)",
                      scene_name_list(names, list, sizeof list));
 }
-#line 1484 "paper/scene.nw"
+#line 1486 "paper/scene.nw"
 /* the field of s that sec.key's record names = the value of sec.key */
-int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
+int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
 {
-  const Key *k = scene_key_find(sec, key);
+  const Scene_key *k = scene_key_find(sec, key);
   char *at = (char *)s + k->at;
   double x;
   int v, rc;
@@ -151,12 +151,12 @@ int scene_get(Loader *L, Scene *s, const char *sec, const char *key)
     memcpy(at, &v, sizeof v);
   return rc;
 }
-#line 1504 "paper/scene.nw"
+#line 1506 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
-int scene_refuse_unused(Loader *L, const char *sec, const char *selector,
+int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w)
 {
-  const Entry *e;
+  const Scene_entry *e;
   int i;
   for (i = 0; i < SCENE_NKEYS; i++)
     if (scene_keys[i].selector && strcmp(scene_keys[i].sec, sec) == 0

@@ -1,13 +1,13 @@
-#line 2671 "paper/scene.nw"
+#line 2674 "paper/scene.nw"
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
 
-#line 2686 "paper/scene.nw"
+#line 2689 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
-static const char *scene_value(const Scene *s, const Key *k, char *buf,
+static const char *scene_value(const Scene *s, const Scene_key *k, char *buf,
                                size_t size)
 {
   const char *at = (const char *)s + k->at;
@@ -21,7 +21,7 @@ static const char *scene_value(const Scene *s, const Key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2709 "paper/scene.nw"
+#line 2712 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];
@@ -30,7 +30,7 @@ int scene_write(const Scene *s, FILE *f, Status *st)
           "key after the overrides, its defaults written, N, M, R refined\n",
           s->path);
   for (i = 0; i < SCENE_NKEYS; i++) {
-    const Key *k = &scene_keys[i];
+    const Scene_key *k = &scene_keys[i];
     const char *v = scene_value(s, k, buf, sizeof buf);
     if (i == 0 || strcmp(k->sec, scene_keys[i - 1].sec) != 0)
       fprintf(f, "\n[%s]\n", k->sec);

@@ -25,7 +25,7 @@
    contact number c, the contact diagonals multiplied by 1 + shift */
 static gsl_matrix *dense_schur(const Model *md, double shift)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   int n = d->n, nc = d->nc, ni = n - nc, *is_c = calloc(n, sizeof *is_c), *pos = malloc(n * sizeof *pos);
   gsl_matrix *A = gsl_matrix_calloc(n, n);
   const Sparse_index *Ap = model_stiffness(md)->p, *Ai = model_stiffness(md)->i;
@@ -143,7 +143,7 @@ static void analysis_fails(void)
   void *(*c)(size_t, size_t) = SuiteSparse_config.calloc_func;
   SuiteSparse_config.malloc_func = no_malloc, SuiteSparse_config.calloc_func = no_calloc;
   st.code = STATUS_OK, st.msg[0] = 0;
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   Condense *cd = condense_alloc(model_stiffness(md), d->nc, d->contact, NULL, &cs.cm, &st);
   SuiteSparse_config.malloc_func = m, SuiteSparse_config.calloc_func = c;
   check(!cd && st.code == STATUS_MEMORY && strstr(st.msg, "CHOLMOD failed to analyse A: out of memory "

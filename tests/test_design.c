@@ -141,24 +141,24 @@ static int active_rows(const Design_set *B, long code, gsl_matrix *At,
 }
 
 /* X = Y + A^+ (b - A Y) for A of full row rank m; 0 if rank deficient.
-   Vf, Sf, workf: room for m = n. */
+   Vf, Sf, scratchf: room for m = n. */
 static int affine_projection(gsl_matrix *At, int m, const double *b,
                              const double *Y, double *X, gsl_matrix *Vf,
-                             gsl_vector *Sf, gsl_vector *workf)
+                             gsl_vector *Sf, gsl_vector *scratchf)
 {
   int n = At->size1;
   gsl_matrix_view U = gsl_matrix_submatrix(At, 0, 0, n, m);
   gsl_matrix_view Vv = gsl_matrix_submatrix(Vf, 0, 0, m, m);
   gsl_vector_view Sv = gsl_vector_subvector(Sf, 0, m);
-  gsl_vector_view wv = gsl_vector_subvector(workf, 0, m);
+  gsl_vector_view wv = gsl_vector_subvector(scratchf, 0, m);
   gsl_matrix *V = &Vv.matrix;
-  gsl_vector *S = &Sv.vector, *work = &wv.vector;
+  gsl_vector *S = &Sv.vector, *scratch = &wv.vector;
   double r[16], c[16];
   for (int k = 0; k < m; k++) {
     r[k] = b[k];
     for (int i = 0; i < n; i++) r[k] -= gsl_matrix_get(&U.matrix, i, k) * Y[i];
   }
-  gsl_linalg_SV_decomp(&U.matrix, V, S, work);
+  gsl_linalg_SV_decomp(&U.matrix, V, S, scratch);
   int ok = gsl_vector_get(S, m - 1) > 1e-10 * gsl_vector_get(S, 0);
   for (int k = 0; ok && k < m; k++) {
     c[k] = 0;
@@ -187,11 +187,11 @@ static double brute_force(const Design_set *B, const double *Y, double *best)
   long total = 1;
   for (int k = 0; k < n + B->N; k++) total *= 3;
   gsl_matrix *At = gsl_matrix_alloc(n, n), *V = gsl_matrix_alloc(n, n);
-  gsl_vector *S = gsl_vector_alloc(n), *work = gsl_vector_alloc(n);
+  gsl_vector *S = gsl_vector_alloc(n), *scratch = gsl_vector_alloc(n);
   double b[16], X[16], dbest = HUGE_VAL, tol = 1e-13 * scale_of(B, Y);
   for (long code = 0; code < total; code++) {
     int m = active_rows(B, code, At, b);
-    if (m < 0 || !affine_projection(At, m, b, Y, X, V, S, work)
+    if (m < 0 || !affine_projection(At, m, b, Y, X, V, S, scratch)
         || !feasible(B, X, tol))
       continue;
     double d = 0;
@@ -201,7 +201,7 @@ static double brute_force(const Design_set *B, const double *Y, double *best)
   gsl_matrix_free(At);
   gsl_matrix_free(V);
   gsl_vector_free(S);
-  gsl_vector_free(work);
+  gsl_vector_free(scratch);
   return dbest;
 }
 

@@ -26,7 +26,7 @@ static double norm_inf(const double *v, int n)
 
 /* consistent nodal forces of the constant traction sigma.n on every
    boundary edge (outward normal of a counter-clockwise boundary) */
-static void boundary_forces(const Mesh *m, const Hooke *H,
+static void boundary_forces(const Mesh *m, const Fem_hooke *H,
                             const double grad[4], double *f)
 {
   double e[3] = { grad[0], grad[3], grad[1] + grad[2] };  /* e11 e22 2e12 */
@@ -55,9 +55,9 @@ static void boundary_forces(const Mesh *m, const Hooke *H,
    constant strain (1/2 e'De times the area of the body), zero to the
    square of rounding for the rigid motions (as 1/2 u'Au it would be of
    the order of rounding itself), and 1/2 u'Au - b'u for any u and b */
-static void energy_checks(const Mesh *m, const Dofs *d, const Hooke *H,
+static void energy_checks(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                           const cholmod_sparse *A, const double grad[4],
-                          Plane_model model)
+                          Problem_plane_model model)
 {
   const char *name = model == MODEL_PLANE_STRAIN ? "plane strain" : "plane stress";
   double e[3] = { grad[0], grad[3], grad[1] + grad[2] }, area = 0, U = 0;
@@ -101,7 +101,7 @@ static void energy_checks(const Mesh *m, const Dofs *d, const Hooke *H,
   free(u), free(b), free(Au);
 }
 
-static void patch_test(Plane_model model)
+static void patch_test(Problem_plane_model model)
 {
   int N = 16, M = 2, R = 3;
   Problem s = free_body(N, M, R, model);
@@ -112,10 +112,10 @@ static void patch_test(Plane_model model)
   double X[17];
   design(N, X);
   check(mesh_move(m, X, &st) == 0, "patch mesh moves to a design (%s)", st.msg);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   check(d->n == 2 * m->nnodes && d->nc == N + 1, "a free body: every DOF is unknown");
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
-  Hooke H = fem_hooke(&s);
+  Fem_hooke H = fem_hooke(&s);
   fem_stiffness_fill(A, m, d, &H, &st);
   check(A->sorted && A->packed && A->stype == 0, "stiffness is sorted, packed, both triangles");
   double grad[4] = { 1e-3, -2e-3, 0.5e-3, 3e-3 };   /* du1/dx du1/dy du2/dx du2/dy */
@@ -158,13 +158,13 @@ static void traction_load(void)
 {
   Problem s = free_body(16, 1, 3, MODEL_PLANE_STRESS);
   s.side[SIDE_LEFT].kind = BC_CLAMPED;
-  s.side[SIDE_TOP] = (Side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
-  s.side[SIDE_RIGHT] = (Side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };
+  s.side[SIDE_TOP] = (Problem_side) { BC_TRACTION, 1.1, 3.3, { 2e8, -5.75e8 } };
+  s.side[SIDE_RIGHT] = (Problem_side) { BC_TRACTION, 0.3, 0.9, { 1e8, 0 } };
   Status st = { 0, "" };
   Mesh *m = mesh_new(&s, &st);
   double X[17] = { 0 };
   mesh_move(m, X, &st);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   double *b = calloc(d->n, sizeof *b), sum[2] = { 0, 0 }, moment = 0;
   fem_load(m, d, &s, b);
   for (int k = 0; k < m->nnodes; k++)
@@ -188,7 +188,7 @@ static void traction_load(void)
 
 /* the pattern as it was made until issue 14: every element's 6 x 6
    couplings as triplets, sorted and summed by CHOLMOD */
-static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_common *cm)
+static cholmod_sparse *triplet_pattern(const Mesh *m, const Fem_dofs *d, cholmod_common *cm)
 {
   cholmod_triplet *T = cholmod_l_allocate_triplet(d->n, d->n, 36 * (size_t) m->ntri, 0,
                                                 CHOLMOD_REAL, cm);
@@ -208,7 +208,7 @@ static cholmod_sparse *triplet_pattern(const Mesh *m, const Dofs *d, cholmod_com
 
 /* fem_stiffness_new's pattern is the triplets', on a free body and with
    clamped, roller and free sides, on several meshes */
-static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind top)
+static void pattern(int N, int M, int R, Problem_bc_kind left, Problem_bc_kind right, Problem_bc_kind top)
 {
   Problem s = free_body(N, M, R, MODEL_PLANE_STRESS);
   Status st = { 0, "" };
@@ -216,7 +216,7 @@ static void pattern(int N, int M, int R, Bc_kind left, Bc_kind right, Bc_kind to
   test_start(&cm);
   s.side[SIDE_LEFT].kind = left, s.side[SIDE_RIGHT].kind = right, s.side[SIDE_TOP].kind = top;
   Mesh *m = mesh_new(&s, &st);
-  Dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
+  Fem_dofs *d = m ? fem_dofs_new(m, &s, &st) : NULL;
   cholmod_sparse *A = d ? fem_stiffness_new(m, d, &cm, &st) : NULL;
   cholmod_sparse *B = d ? triplet_pattern(m, d, &cm) : NULL;
   int same = A && B && A->nrow == B->nrow && A->ncol == B->ncol && A->sorted && A->packed
@@ -244,16 +244,16 @@ static int on_side(const Mesh *m, int node, int o)
    component, since K annihilates the translations; and every held DOF's
    reaction goes to a side that holds it, to the one it is normal to at a
    corner held by two, so that a roller takes no tangential force */
-static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
+static void reactions_balance(Problem_bc_kind left, Problem_bc_kind right, Problem_bc_kind top)
 {
   int N = 16;
   Problem s = free_body(N, 2, 3, MODEL_PLANE_STRAIN);
-  Side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } };     /* the whole top */
-  Side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
-  s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Side) { left, 0, 0, { 0, 0 } };
-  s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Side) { right, 0, 0, { 0, 0 } };
-  s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Side) { top, 0, 0, { 0, 0 } };
-  s.F[0] = 3e7, s.F[1] = -2e8, s.has_body_force = 1;
+  Problem_side load = { BC_TRACTION, 0, 4, { 1e8, -5.75e8 } }; /* the whole top */
+  Problem_side side_load = { BC_TRACTION, 0.3, 0.9, { -2e8, 1e8 } };
+  s.side[SIDE_LEFT] = left == BC_TRACTION ? side_load : (Problem_side) { left, 0, 0, { 0, 0 } };
+  s.side[SIDE_RIGHT] = right == BC_TRACTION ? side_load : (Problem_side) { right, 0, 0, { 0, 0 } };
+  s.side[SIDE_TOP] = top == BC_TRACTION ? load : (Problem_side) { top, 0, 0, { 0, 0 } };
+  s.body_force[0] = 3e7, s.body_force[1] = -2e8, s.has_body_force = 1;
   Status st = { 0, "" };
   cholmod_common cm;
   test_start(&cm);
@@ -261,9 +261,9 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
   double X[17], area = 0, want[2], sum[2] = { 0, 0 }, scale;
   design(N, X);
   mesh_move(m, X, &st);
-  Dofs *d = fem_dofs_new(m, &s, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s, &st);
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
-  Hooke H = fem_hooke(&s);
+  Fem_hooke H = fem_hooke(&s);
   fem_stiffness_fill(A, m, d, &H, &st);
   double *u = malloc(d->n * sizeof *u), *g = malloc(d->n * sizeof *g),
          *b = malloc(d->n * sizeof *b), *r = malloc(d->ndof * sizeof *r);
@@ -275,7 +275,7 @@ static void reactions_balance(Bc_kind left, Bc_kind right, Bc_kind top)
     area += 0.25 * (X[i] + X[i - 1]) / 2;
   area = 1 * 4 - area;
   for (int c = 0; c < 2; c++) {
-    want[c] = s.F[c] * area;
+    want[c] = s.body_force[c] * area;
     if (top == BC_TRACTION) want[c] += load.P[c] * 4;
     if (left == BC_TRACTION || right == BC_TRACTION) want[c] += side_load.P[c] * 0.6;
   }

@@ -95,10 +95,10 @@ static double rcond(gsl_matrix *M)
 {
   size_t n = M->size1;
   gsl_matrix *V = gsl_matrix_alloc(n, n);
-  gsl_vector *sv = gsl_vector_alloc(n), *work = gsl_vector_alloc(n);
-  int bad = gsl_linalg_SV_decomp(M, V, sv, work);
+  gsl_vector *sv = gsl_vector_alloc(n), *scratch = gsl_vector_alloc(n);
+  int bad = gsl_linalg_SV_decomp(M, V, sv, scratch);
   double rc = bad ? 0 : gsl_vector_get(sv, n - 1) / gsl_vector_get(sv, 0);
-  gsl_matrix_free(V), gsl_vector_free(sv), gsl_vector_free(work);
+  gsl_matrix_free(V), gsl_vector_free(sv), gsl_vector_free(scratch);
   return rc == rc ? rc : 0;                      /* NaN: singular */
 }
 
@@ -186,7 +186,7 @@ static void test_enumeration(const char *bcs, const char *P1, const char *g,
   if (!check(open_case(&k, 6, ov) == 0, "N = 4, %s, P1 = %s, g = %s: solved: %s",
              bcs, P1, g, k.st.msg)) { close_case(&k); return; }
   Model *md = k.md;
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   Enum e = { d->n, d->nc, d->nt, gsl_matrix_calloc(d->n, d->n),
              model_load(md), model_bounds(md), model_slip(md), d->contact, d->tangent,
              malloc(d->n * sizeof(double)),
@@ -272,7 +272,7 @@ static void test_large_g(void)
   char *ov[] = { "mesh.refine=4", "contact.model=tresca", "contact.g=1e12" };
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "g = 1e12: solved: %s", c.st.msg)) {
-    const Dofs *d = model_dofs(c.md);
+    const Fem_dofs *d = model_dofs(c.md);
     const double *Q = model_state(c.md), *lo = model_bounds(c.md),
                  *T = model_forces(c.md), *slip = model_slip(c.md);
     int touching = 0, stuck = 0;
@@ -315,7 +315,7 @@ static void test_coulomb(const char *F)
   snprintf(pf, sizeof pf, "contact.friction=%s", F);
   Case c;
   if (check(open_case(&c, 3, ov) == 0, "coulomb F = %s: converged: %s", F, c.st.msg)) {
-    const Dofs *d = model_dofs(c.md);
+    const Fem_dofs *d = model_dofs(c.md);
     double f = atof(F), Tmax = max_abs(model_forces(c.md), d->nc), umax = max_abs(model_state(c.md), d->n);
     double over = 0, miss = 0;
     int slipping = 0;
@@ -349,7 +349,7 @@ static void test_gradcheck(const char *g, const char *shape)
     close_case(&c);
     return;
   }
-  const Dofs *d = model_dofs(c.md);
+  const Fem_dofs *d = model_dofs(c.md);
   int stick = 0, slip = 0;
   for (int k = 0; k < d->nt; k++) {
     double u = fabs(model_state(c.md)[d->tangent[k]]);
@@ -389,7 +389,7 @@ static void test_threshold(void)
   Case c;
   if (!check(open_case(&c, 2, ov) == 0, "threshold: solved")) { close_case(&c); return; }
   Problem *p = &c.s.problem;
-  const Dofs *d = model_dofs(c.md);
+  const Fem_dofs *d = model_dofs(c.md);
   int k = -1;
   for (int j = 0; j + 1 < d->nt; j++)      /* a stick node beside a slipping one */
     if (model_state(c.md)[d->tangent[j]] == 0 && model_state(c.md)[d->tangent[j + 1]] != 0) k = j;

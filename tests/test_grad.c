@@ -22,7 +22,7 @@ static double energy(Model *md, double *X)
   return model_energy(md);
 }
 
-static void weakly_active(const char *path, Plane_model model)
+static void weakly_active(const char *path, Problem_plane_model model)
 {
   Case cs;
   if (!check(case_load(&cs, path, 0, NULL) == 0, "load %s", path)) {

@@ -40,7 +40,7 @@ static void open_pair(Case c[2], int n, char **ov)
 /* nodes in contact (Q = lo, exactly) and sticking (u1 = 0, exactly) */
 static void count_held(const Model *md, int *contact, int *stick)
 {
-  const Dofs *d = model_dofs(md);
+  const Fem_dofs *d = model_dofs(md);
   *contact = *stick = 0;
   for (int c = 0; c < d->nc; c++) *contact += model_state(md)[d->contact[c]] == model_bounds(md)[c];
   for (int k = 0; k < d->nt; k++) *stick += model_state(md)[d->tangent[k]] == 0;
@@ -79,7 +79,7 @@ static void test_tresca(const char *g, const char *refine, int *mixed)
   open_pair(c, 3, ov);
   compare(c, what);
   if (!c[1].rc) {
-    const Dofs *d = model_dofs(c[1].md);
+    const Fem_dofs *d = model_dofs(c[1].md);
     int slip = 0;
     for (int k = 0; k < d->nt; k++) slip += model_state(c[1].md)[d->tangent[k]] != 0;
     *mixed += slip > 0 && slip < d->nt;

@@ -35,7 +35,7 @@ static double uniform(void)          /* xorshift64, in [0, 1) */
 /* one random model: n design nodes, contact at nodes 1..m, X in B */
 typedef struct {
   int n, m, col[16];
-  double X[16], g[16], r[16], S[256], f[16], v0[16];
+  double X[16], grad[16], r[16], S[256], f[16], v0[16];
   Design_set B;
   Newton_model mdl;
 } Case;
@@ -67,7 +67,7 @@ static void make_case(Case *k, int n, int m, double scale)
       for (int j = 0; j < m; j++) s += L[c * m + j] * L[e * m + j];
       k->S[c * m + e] = scale * s;
     }
-  for (int i = 0; i < n; i++) k->g[i] = scale * (uniform() - 0.5), k->r[i] = scale * (0.1 + uniform());
+  for (int i = 0; i < n; i++) k->grad[i] = scale * (uniform() - 0.5), k->r[i] = scale * (0.1 + uniform());
   for (int c = 0; c < m; c++) {           /* a state: v0 >= -X, touching on some */
     k->v0[c] = uniform() < 0.5 ? -k->X[k->col[c]] : -k->X[k->col[c]] + 0.1 * uniform();
     k->f[c] = 0;
@@ -78,7 +78,7 @@ static void make_case(Case *k, int n, int m, double scale)
     double T = k->v0[c] == -k->X[k->col[c]] ? scale * uniform() : 0;
     k->f[c] = sv - T;
   }
-  k->mdl = (Newton_model) { n, m, k->col, k->X, &k->B, k->g, k->r, k->S, k->f, k->v0 };
+  k->mdl = (Newton_model) { n, m, k->col, k->X, &k->B, k->grad, k->r, k->S, k->f, k->v0 };
 }
 
 /* the optimiser's end game, n = 4: node 0 on its lower bound and the
@@ -94,8 +94,8 @@ static void make_endgame(Case *k, int m, double tiny, double rho)
   k->X[2] = dl * (1 + 0.8 * (uniform() - 0.5)), k->X[3] = k->X[2] + dl * 0.8 * (uniform() - 0.5);
   for (int i = 0; i < 4; i++) area += (i == 0 || i == 3 ? 0.5 : 1.0) * k->X[i] * k->B.h;
   k->B.area = area;
-  k->g[0] = 2 + uniform(), k->g[1] = -(0.5 + uniform());   /* g0 + g1 > 0 */
-  k->g[2] = tiny * (uniform() - 0.5), k->g[3] = tiny * (uniform() - 0.5);
+  k->grad[0] = 2 + uniform(), k->grad[1] = -(0.5 + uniform());   /* grad[0] + grad[1] > 0 */
+  k->grad[2] = tiny * (uniform() - 0.5), k->grad[3] = tiny * (uniform() - 0.5);
   for (int i = 0; i < 4; i++) k->r[i] = rho * (0.1 + uniform());
   for (int c = 0; c < m; c++) k->v0[c] = -k->X[k->col[c]];
   for (int c = 0; c < m; c++) {           /* f = S v0 - T, T tiny on 2, 3 */
@@ -109,7 +109,7 @@ static void make_endgame(Case *k, int m, double tiny, double rho)
 static double objective(const Case *k, const double *d, const double *v)
 {
   double val = 0;
-  for (int i = 0; i < k->n; i++) val += (k->g[i] + 0.5 * k->r[i] * d[i]) * d[i];
+  for (int i = 0; i < k->n; i++) val += (k->grad[i] + 0.5 * k->r[i] * d[i]) * d[i];
   for (int c = 0; c < k->m; c++) {
     double sv = 0;
     for (int e = 0; e < k->m; e++) sv += k->S[c * k->m + e] * v[e];
@@ -160,7 +160,7 @@ static int kkt_of_set(const Case *k, unsigned set, int p, double *z)
   gsl_vector *rhs = gsl_vector_calloc(K), *sol = gsl_vector_alloc(K);
   gsl_permutation *P = gsl_permutation_alloc(K);
   double a[32];
-  for (int i = 0; i < n; i++) gsl_matrix_set(M, i, i, k->r[i]), gsl_vector_set(rhs, i, -k->g[i]);
+  for (int i = 0; i < n; i++) gsl_matrix_set(M, i, i, k->r[i]), gsl_vector_set(rhs, i, -k->grad[i]);
   for (int c = 0; c < m; c++) {
     for (int e = 0; e < m; e++) gsl_matrix_set(M, n + c, n + e, k->S[c * m + e]);
     gsl_vector_set(rhs, n + c, k->f[c]);
@@ -211,13 +211,13 @@ static int solve(const Case *k, double *d, double *v, Newton_report *rep, char *
 
 /* m(0) - m(d) at (d, v) in long double (64 bits of mantissa on x86-64,
    113 on arm64), a reference for the predicted decrease: from the step,
-   -(g'd + d'Rd/2) - (T'dv + dv'S dv/2), T = S v0 - f and dv = v - v0
+   -(grad'd + d'Rd/2) - (T'dv + dv'S dv/2), T = S v0 - f and dv = v - v0
    (exact algebra; a difference of two values of m would lose the tiny
    steps even in long double) */
 static long double decrease_long(const Case *k, const double *d, const double *v)
 {
   long double dec = 0;
-  for (int i = 0; i < k->n; i++) dec -= (k->g[i] + 0.5L * k->r[i] * d[i]) * d[i];
+  for (int i = 0; i < k->n; i++) dec -= (k->grad[i] + 0.5L * k->r[i] * d[i]) * d[i];
   for (int c = 0; c < k->m; c++) {
     long double T = -(long double) k->f[c], sdv = 0;
     for (int e = 0; e < k->m; e++) {
@@ -247,7 +247,7 @@ static void test_enumeration(void)
     int n = 3 + t % 2, m = t % 3 == 0 ? 1 : 2;
     Case k;
     make_case(&k, n, m, 1.0);
-    for (int i = 0; i < n; i++) k.g[i] *= 40;      /* steps that reach bounds */
+    for (int i = 0; i < n; i++) k.grad[i] *= 40;      /* steps that reach bounds */
     double z[16], d[16], v[16];
     Newton_report rep;
     int have = enumerate(&k, z);
@@ -304,23 +304,23 @@ static void test_interior(void)
 {
   Case k;
   make_case(&k, 9, 0, 1.0);
-  for (int i = 0; i < 9; i++) k.g[i] *= 1e-3;       /* a tiny step: no bound active */
-  /* d = -R^-1 (g + mu w), mu from w'd = 0 */
+  for (int i = 0; i < 9; i++) k.grad[i] *= 1e-3;       /* a tiny step: no bound active */
+  /* d = -R^-1 (grad + mu w), mu from w'd = 0 */
   double a = 0, b = 0, want[9], d[9];
   for (int i = 0; i < 9; i++) {
     double w = i == 0 || i == 8 ? 0.5 : 1.0;
-    a += w * k.g[i] / k.r[i], b += w * w / k.r[i];
+    a += w * k.grad[i] / k.r[i], b += w * w / k.r[i];
   }
   double worst = 0;
-  for (int i = 0; i < 9; i++) want[i] = -(k.g[i] - a / b * (i == 0 || i == 8 ? 0.5 : 1.0)) / k.r[i];
+  for (int i = 0; i < 9; i++) want[i] = -(k.grad[i] - a / b * (i == 0 || i == 8 ? 0.5 : 1.0)) / k.r[i];
   Newton_workspace *w = newton_alloc(9, 0, NULL);
   Newton_report rep;
   Status st = { STATUS_OK, "" };
   int rc = newton_solve(w, &k.mdl, d, NULL, &rep, &st);
   for (int i = 0; rc == 0 && i < 9; i++) worst = fmax(worst, fabs(d[i] - want[i]));
   double pred = 0;
-  for (int i = 0; i < 9; i++) pred -= (k.g[i] + 0.5 * k.r[i] * want[i]) * want[i];
-  check(rc == 0 && worst <= 1e-10 * 1e-3, "no contact, no bound active: d = -R^-1(g + mu w) "
+  for (int i = 0; i < 9; i++) pred -= (k.grad[i] + 0.5 * k.r[i] * want[i]) * want[i];
+  check(rc == 0 && worst <= 1e-10 * 1e-3, "no contact, no bound active: d = -R^-1(grad + mu w) "
         "to %.1e <= 1e-13 (|d| ~ 1e-3)", worst);
   check(rc == 0 && fabs(rep.pred - pred) <= 1e-9 * pred, "the predicted decrease %.6e is "
         "the model's own, %.6e", rep.pred, pred);
@@ -336,7 +336,7 @@ static double ref_objective(unsigned nz, const double *z, double *grad, void *da
   const Case *k = ((const Ref *) data)->k;
   int n = k->n, m = k->m;
   if (grad) {
-    for (int i = 0; i < n; i++) grad[i] = k->g[i] + k->r[i] * z[i];
+    for (int i = 0; i < n; i++) grad[i] = k->grad[i] + k->r[i] * z[i];
     for (int c = 0; c < m; c++) {
       double sv = 0;
       for (int e = 0; e < m; e++) sv += k->S[c * m + e] * z[n + e];
@@ -380,7 +380,7 @@ static void test_slsqp(void)
   for (int t = 0; t < trials; t++) {
     Case k;
     make_case(&k, 13, 12, 1.0);
-    for (int i = 0; i < 13; i++) k.g[i] *= 20;
+    for (int i = 0; i < 13; i++) k.grad[i] *= 20;
     int nz = 25, p = 4 * 13 - 2 + 12;
     double z[25], tol[64], f, d[13], v[12];
     for (int i = 0; i < 13; i++) z[i] = 0;
@@ -430,7 +430,7 @@ static void test_scale(void)
     make_case(&a, 13, 12, 1.0);
     seed = s0;
     make_case(&b, 13, 12, s);
-    for (int i = 0; i < 13; i++) a.g[i] *= 20, b.g[i] *= 20;
+    for (int i = 0; i < 13; i++) a.grad[i] *= 20, b.grad[i] *= 20;
     double da[13], va[12], db[13], vb[12];
     Newton_report ra, rb;
     if (solve(&a, da, va, &ra, msg) || solve(&b, db, vb, &rb, msg)) { rc = 1; continue; }
@@ -468,7 +468,7 @@ static void make_walk(Case *k, int n, int m, double tiny, double rho)
     double gi = k->X[i] == 0 ? 0.5 + uniform() : 0;
     if (i + 1 < n && k->X[i + 1] - k->X[i] == dl) gi += 0.5 + uniform();
     if (i > 0 && k->X[i] - k->X[i - 1] == dl) gi -= 0.5 + uniform();
-    k->g[i] = gi + tiny * (uniform() - 0.5), k->r[i] = rho * (0.1 + uniform());
+    k->grad[i] = gi + tiny * (uniform() - 0.5), k->r[i] = rho * (0.1 + uniform());
   }
   for (int c = 0; c < m; c++) k->v0[c] = -k->X[k->col[c]];
   for (int c = 0; c < m; c++) {
@@ -522,11 +522,11 @@ static void test_robust(void)
     if (t % 2) make_walk(&k, n, m, pow(10, -12 + 10 * uniform()), pow(10, -10 + 10 * uniform()));
     else {
       make_case(&k, n, m, 1.0);
-      for (int i = 0; i < n; i++) k.g[i] *= 40, k.r[i] *= pow(10, -10 + 10 * uniform());
+      for (int i = 0; i < n; i++) k.grad[i] *= 40, k.r[i] *= pow(10, -10 + 10 * uniform());
     }
     if (t % 4 == 2) singular += make_singular(&k);   /* a make_case: some not touching */
     double scale = pow(10, -8 + 16 * uniform()), d[16], v[16], zero[16] = { 0 }, terms = 0;
-    for (int i = 0; i < n; i++) k.g[i] *= scale, k.r[i] *= scale, terms += fabs(k.g[i]) + k.r[i];
+    for (int i = 0; i < n; i++) k.grad[i] *= scale, k.r[i] *= scale, terms += fabs(k.grad[i]) + k.r[i];
     for (int c = 0; c < m * m; c++) k.S[c] *= scale;
     for (int c = 0; c < m; c++) k.f[c] *= scale, terms += fabs(k.f[c] * k.v0[c]);
     Newton_report rep;
@@ -603,7 +603,7 @@ static int bending_solve(int n, double rho, double load, Newton_report *rep, cha
     if (!*msg) snprintf(msg, MSG, "out of memory");
     goto done;
   }
-  double *X = a, *g = X + n, *r = g + n, *d = r + n, *f = d + n, *v0 = f + m, *v = v0 + m, *S = v + m;
+  double *X = a, *grad = X + n, *r = grad + n, *d = r + n, *f = d + n, *v0 = f + m, *v = v0 + m, *S = v + m;
   Design_set B = { n - 1, 1.0 / (n - 1), 1.0, 1.0 / (n - 1), 0 };
   double phase = 6.28 * uniform();
   for (int i = 0; i < n; i++) X[i] = 0.5 + 0.2 * sin(M_PI * i / (n - 1) + phase);
@@ -620,9 +620,9 @@ static int bending_solve(int n, double rho, double load, Newton_report *rep, cha
     for (int e = 0; e < m; e++) sv += S[(size_t) c * m + e] * v0[e];
     f[c] = sv - load * (1 + 0.5 * uniform());
   }
-  for (int i = 0; i < n; i++) g[i] = load * (2 * uniform() - 1), r[i] = rho;
-  for (int c = 0; c < m; c++) g[col[c]] += load;
-  Newton_model mdl = { n, m, col, X, &B, g, r, S, f, v0 };
+  for (int i = 0; i < n; i++) grad[i] = load * (2 * uniform() - 1), r[i] = rho;
+  for (int c = 0; c < m; c++) grad[col[c]] += load;
+  Newton_model mdl = { n, m, col, X, &B, grad, r, S, f, v0 };
   Status st = { STATUS_OK, "" };
   rc = newton_solve(w, &mdl, d, v, rep, &st);
   if (rc && !*msg) snprintf(msg, MSG, "%s", st.msg);

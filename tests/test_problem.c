@@ -13,7 +13,7 @@ static void test_names(void)
   check(strcmp(problem_bc_name(BC_ROLLER), "roller") == 0
         && strcmp(qp_method_name(QP_CGSSOR), "cgssor") == 0
         && strcmp(problem_model_name(MODEL_PLANE_STRAIN), "plane_strain") == 0
-        && strcmp(problem_bc_name((Bc_kind)9), "?") == 0
+        && strcmp(problem_bc_name((Problem_bc_kind)9), "?") == 0
         && strcmp(opt_method_name(OPT_PROJGRAD), "projgrad") == 0
         && strcmp(opt_metric_name((Opt_metric)-1), "?") == 0,
         "names of conditions, methods, models, and '?' out of range");

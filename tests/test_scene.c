@@ -38,14 +38,14 @@ static void test_example_5_1(void)
   check(s.problem.N == 16 && s.problem.C0 == 0.05 && s.problem.C1 == 0.025 && s.problem.C2 == 3.91,
         "5.1: N = 16, C0 = 0.05, C1 = 0.025, C2 = 3.91");
   check(s.problem.M == 1 && s.problem.R == 3 && s.problem.C0prime == 0.25, "5.1: M = 1, R = 3, C0' = 0.25");
-  check(s.problem.E == 2.15e11 && s.problem.nu == 0.29 && s.problem.model == MODEL_PLANE_STRESS,
+  check(s.problem.young == 2.15e11 && s.problem.nu == 0.29 && s.problem.model == MODEL_PLANE_STRESS,
         "5.1: E = 2.15e11, nu = 0.29, plane stress");
   check(s.problem.side[SIDE_LEFT].kind == BC_CLAMPED
         && s.problem.side[SIDE_RIGHT].kind == BC_ROLLER, "5.1: left clamped, right roller");
   check(s.problem.side[SIDE_TOP].kind == BC_TRACTION && s.problem.side[SIDE_TOP].from == 2
         && s.problem.side[SIDE_TOP].to == 4 && s.problem.side[SIDE_TOP].P[0] == 0
         && s.problem.side[SIDE_TOP].P[1] == -5.75e8, "5.1: top P = (0, -5.75e8) on (2, 4)");
-  check(s.problem.F[0] == 0 && s.problem.F[1] == 0 && !s.problem.has_body_force, "5.1: F = 0");
+  check(s.problem.body_force[0] == 0 && s.problem.body_force[1] == 0 && !s.problem.has_body_force, "5.1: F = 0");
   check(s.solver.method == QP_PDAS && s.solver.tol == 1e-10 && s.solver.max_iter == 100
         && s.solver.omega == 1.5, "5.1: pdas, tol 1e-10, defaults max_iter 100, omega 1.5");
   check(strcmp(s.initial, "arc") == 0, "5.1: initial = arc");
@@ -116,7 +116,7 @@ static void test_overrides(void)
             "-s with blanks around the names: %s", st.msg)) {
     check(s.solver.method == QP_PSOR && s.solver.max_iter == 100000,
           "psor: the default max_iter is 100000");
-    check(s.problem.has_body_force && s.problem.F[1] == -7.8e4, "a body force sets has_body_force");
+    check(s.problem.has_body_force && s.problem.body_force[1] == -7.8e4, "a body force sets has_body_force");
     scene_free(&s);
   }
   if (check(scene_load(&s, "data/example-5.1.scene", 3, cgssor, &st) == 0

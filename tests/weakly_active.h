@@ -90,7 +90,7 @@ static inline void agree(Scene *s, const char *tag, const double *X,
 
 /* the checks of method m at the weakly active node of scene path, and 1e-9
    C0 on either side of it */
-static inline void weakly_active_node(const char *path, Plane_model model,
+static inline void weakly_active_node(const char *path, Problem_plane_model model,
                                       Qp_method m)
 {
   Case cs;

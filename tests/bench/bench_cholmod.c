@@ -217,9 +217,9 @@ static void measure_limit(const Scene *s, cholmod_common *cm)
   Status st;
   Mesh *m = mesh_new(&s->problem, &st);
   if (!m || mesh_move(m, s->alpha0, &st)) die("mesh", st.msg);
-  Dofs *d = fem_dofs_new(m, &s->problem, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s->problem, &st);
   if (!d) die("fem_dofs_new", st.msg);
-  Hooke H = fem_hooke(&s->problem);
+  Fem_hooke H = fem_hooke(&s->problem);
   cholmod_sparse *A = fem_stiffness_new(m, d, cm, &st);
   if (!A || fem_stiffness_fill(A, m, d, &H, &st)) die("fem_stiffness", st.msg);
   double *b = malloc(A->nrow * sizeof *b), an = HUGE_VAL, fs = HUGE_VAL, res = 0, spent = 0;

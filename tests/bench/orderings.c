@@ -68,7 +68,7 @@ int main(int argc, char **argv)
   gsl_set_error_handler_off();
   Mesh *m = mesh_new(&s.problem, &st);
   if (!m || mesh_move(m, s.alpha0, &st)) die("mesh", st.msg);
-  Dofs *d = fem_dofs_new(m, &s.problem, &st);
+  Fem_dofs *d = fem_dofs_new(m, &s.problem, &st);
   if (!d) die("fem_dofs_new", st.msg);
   cholmod_sparse *A = fem_stiffness_new(m, d, &cm, &st);
   if (!A) die("fem_stiffness_new", st.msg);
