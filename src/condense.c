@@ -386,10 +386,10 @@ int condense_expand(Condense *cd, double *x, Status *st)
   return STATUS_OK;
 }
 #line 808 "paper/condense.nw"
-int condense_refine(Condense *cd, const double *g, double *x, Status *st)
+int condense_refine(Condense *cd, const double *grad, double *x, Status *st)
 {
   double *v = cd->rhs->x;
-  for (int i = 0; i < cd->n; i++) v[i] = cd->at[i] < 0 ? -g[i] : 0;
+  for (int i = 0; i < cd->n; i++) v[i] = cd->at[i] < 0 ? -grad[i] : 0;
   if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   v = cd->rhs->x;
   memset(v + cd->first, 0, (size_t) cd->nk * sizeof *v);

@@ -97,8 +97,8 @@ void condense_states_at(Condense *cd, const double *x, double *T);
 int condense_solve(Condense *cd, int back, cholmod_dense **v, Status *st);
 /* x (n) from y by back substitution */
 int condense_expand(Condense *cd, double *x, Status *st);
-/* x_u refined by one step with the factor, g = A x - b at x */
-int condense_refine(Condense *cd, const double *g, double *x, Status *st);
+/* x_u refined by one step with the factor, grad = A x - b at x */
+int condense_refine(Condense *cd, const double *grad, double *x, Status *st);
 
 #line 239 "paper/condense.nw"
 /* S (nc x nc) of the condensation cd, its diagonal raised by shift A_ii;
@@ -111,7 +111,7 @@ int condense_schur(const Condense *cd, double shift, double *S,
 /* lam (n) = the adjoint of the state x (n) with the factor of cd: lam_H
    = 0 on the held unknowns, A_FF lam_F = g_F; held (nk, may be NULL)
    receives 1 at each held unknown, in the order of ik */
-int condense_adjoint(Condense *cd, const double *x, const double *g,
+int condense_adjoint(Condense *cd, const double *x, const double *grad,
                      double *lam, char *held, Status *st);
 #line 114 "paper/condense.nw"
 #endif

@@ -14,10 +14,10 @@ static void adjoint_held(const Condense *cd, const double *x, char *held)
                          : cd->act[k] == CONDENSE_HELD;
 }
 #line 958 "paper/condense.nw"
-/* z = L \ P g in cd->rhs; r (nk, ik order) = L_cc z_c */
-static int adjoint_forward(Condense *cd, const double *g, double *r, Status *st)
+/* z = L \ P grad in cd->rhs; r (nk, ik order) = L_cc z_c */
+static int adjoint_forward(Condense *cd, const double *grad, double *r, Status *st)
 {
-  memcpy(cd->rhs->x, g, (size_t) cd->n * sizeof *g);
+  memcpy(cd->rhs->x, grad, (size_t) cd->n * sizeof *grad);
   if (condense_solve(cd, 0, &cd->rhs, st)) return st->code;
   const double *z = cd->rhs->x;
   for (int t = 0; t < cd->nk; t++) {
@@ -58,7 +58,7 @@ static int adjoint_condensed(const Condense *cd, const char *held,
   return code;
 }
 #line 1018 "paper/condense.nw"
-int condense_adjoint(Condense *cd, const double *x, const double *g,
+int condense_adjoint(Condense *cd, const double *x, const double *grad,
                      double *lam, char *held, Status *st)
 {
   int nk = cd->nk, code = STATUS_OK;
@@ -66,7 +66,7 @@ int condense_adjoint(Condense *cd, const double *x, const double *g,
   double *r = malloc(2 * ((size_t) nk + 1) * sizeof *r), *y = r + nk + 1;
   if (!h || !r) code = status_set(st, STATUS_MEMORY, "adjoint: out of memory");
   if (!code) adjoint_held(cd, x, h);
-  if (!code) code = adjoint_forward(cd, g, r, st);
+  if (!code) code = adjoint_forward(cd, grad, r, st);
   if (!code) code = adjoint_condensed(cd, h, r, y, st);
   if (!code) {
     double *v = cd->rhs->x;

@@ -58,7 +58,7 @@ static void ssor_free(Qp_workspace *w)
   const double *Ax = w->qp->A->x;
   double *z = w->mprgp.z, om = w->opt.omega;
   for (int i = 0; i < w->n; i++) {          /* (D + omega L) y = phi */
-    double s = w->g[i];
+    double s = w->grad[i];
     for (Sparse_index k = Ap[i]; k < Ap[i + 1] && Ai[k] < i; k++) s -= om * Ax[k] * z[Ai[k]];
     z[i] = qp_is_free(w, i) ? s / w->d[i] : 0;
   }
@@ -76,7 +76,7 @@ int mprgp_iterate(Qp_workspace *w, Status *st)
   int code = proportional(w) ? cg_or_expansion_step(w, st)
                              : proportioning_step(w, st);
   if (code) return code;
-  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
+  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->grad, w->T);
   if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
@@ -86,7 +86,7 @@ static int proportional(const Qp_workspace *w)
 {
   double bb = 0, fp = 0;
   for (int i = 0; i < w->n; i++) {
-    double gi = w->g[i];
+    double gi = w->grad[i];
     if (qp_is_free(w, i))
       fp += fmin((w->x[i] - w->lo[i]) / w->mprgp.abar, gi) * gi;
     else if (gi < 0)
@@ -100,7 +100,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
   for (int i = 0; i < w->n; i++)
-    mp->z[i] = !qp_is_free(w, i) && w->g[i] < 0 ? w->g[i] : 0;
+    mp->z[i] = !qp_is_free(w, i) && w->grad[i] < 0 ? w->grad[i] : 0;
   qp_matvec(w->qp->A, mp->z, mp->q);
   double bb = dot(w->n, mp->z, mp->z), bab = dot(w->n, mp->z, mp->q);
   if (!(bab > DBL_EPSILON * w->normA * bb))
@@ -108,7 +108,7 @@ static int proportioning_step(Qp_workspace *w, Status *st)
                        qp_count_active(w));
   double alpha = bb / bab;
   for (int i = 0; i < w->n; i++)
-    w->x[i] -= alpha * mp->z[i], w->g[i] -= alpha * mp->q[i];
+    w->x[i] -= alpha * mp->z[i], w->grad[i] -= alpha * mp->q[i];
   mp->restart = 1;
   return STATUS_OK;
 }
@@ -117,7 +117,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
   Mprgp_workspace *mp = &w->mprgp;
   int n = w->n;
-  if (mp->restart || !(dot(n, w->g, mp->p) > 0)) {
+  if (mp->restart || !(dot(n, w->grad, mp->p) > 0)) {
     ssor_free(w);
     memcpy(mp->p, mp->z, (size_t) n * sizeof *mp->p);
     mp->restart = 0;
@@ -126,7 +126,7 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   if (pp == 0) { qp_refresh(w); return STATUS_OK; }
   qp_matvec(w->qp->A, mp->p, mp->q);
   double pap = dot(n, mp->p, mp->q), af = feasible_step(w);
-  double acg = pap > DBL_EPSILON * w->normA * pp ? dot(n, w->g, mp->p) / pap
+  double acg = pap > DBL_EPSILON * w->normA * pp ? dot(n, w->grad, mp->p) / pap
                                                  : INFINITY;
   if (acg == INFINITY && af == INFINITY)
     return qp_not_held(w, st, "neither A nor a bound resists the CG direction",
@@ -152,7 +152,7 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   Mprgp_workspace *mp = &w->mprgp;
   for (int i = 0; i < w->n; i++) {
     w->x[i] = qp_proj(w, i, w->x[i] - acg * mp->p[i]);
-    w->g[i] -= acg * mp->q[i];
+    w->grad[i] -= acg * mp->q[i];
   }
   ssor_free(w);
   double gamma = dot(w->n, mp->z, mp->q) / pap;
@@ -166,10 +166,10 @@ static void expansion_step(Qp_workspace *w, double af)
   for (int i = 0; i < w->n; i++) {
     int tie = mp->p[i] > 0 && w->x[i] - w->lo[i] <= af * mp->p[i] * (1 + TIE);
     w->x[i] = tie ? w->lo[i] : qp_proj(w, i, w->x[i] - af * mp->p[i]);
-    w->g[i] -= af * mp->q[i];
+    w->grad[i] -= af * mp->q[i];
   }
   for (int i = 0; i < w->n; i++)
-    if (qp_is_free(w, i)) w->x[i] = qp_proj(w, i, w->x[i] - mp->abar * w->g[i]);
+    if (qp_is_free(w, i)) w->x[i] = qp_proj(w, i, w->x[i] - mp->abar * w->grad[i]);
   qp_refresh(w);
   mp->restart = 1;
 }
@@ -190,9 +190,9 @@ static double dual_grad(const Qp_workspace *w, int k)
    on an interval of width 0 */
 static double dual_chopped(const Qp_workspace *w, int k)
 {
-  double g = dual_grad(w, k);
+  double grad = dual_grad(w, k);
   if (w->flo[k] == w->fhi[k] || dual_free(w, k)) return 0;
-  return w->T[k] <= w->flo[k] ? fmin(g, 0) : fmax(g, 0);
+  return w->T[k] <= w->flo[k] ? fmin(grad, 0) : fmax(grad, 0);
 }
 
 /* v projected onto [flo_k, fhi_k]; a NaN stays */
@@ -273,10 +273,10 @@ static int dual_proportional(const Qp_workspace *w)
 {
   double bb = 0, fp = 0, a = w->mprgp.abar;
   for (int k = 0; k < w->nk; k++) {
-    double g = dual_grad(w, k), b = dual_chopped(w, k);
+    double grad = dual_grad(w, k), b = dual_chopped(w, k);
     if (dual_free(w, k))
-      fp += (g > 0 ? fmin((w->T[k] - w->flo[k]) / a, g)
-                   : fmax((w->T[k] - w->fhi[k]) / a, g)) * g;
+      fp += (grad > 0 ? fmin((w->T[k] - w->flo[k]) / a, grad)
+                   : fmax((w->T[k] - w->fhi[k]) / a, grad)) * grad;
     bb += b * b;
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
@@ -314,7 +314,7 @@ static void dual_restart(Qp_workspace *w, double *p)
   for (int k = 0; k < w->nk; k++) p[k] = dual_free(w, k) ? dual_grad(w, k) : 0;
 }
 
-/* g' p, g = y - pos */
+/* grad' p, grad = y - pos */
 static double dual_slope(const Qp_workspace *w, const double *p)
 {
   double s = 0;

@@ -97,11 +97,11 @@ static int alloc_common(Qp_workspace *w, Status *st)
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
   w->bnd = malloc(n * sizeof *w->bnd);
   w->lo = malloc(n * sizeof *w->lo), w->d = malloc(n * sizeof *w->d);
-  w->x = malloc(n * sizeof *w->x), w->g = malloc(n * sizeof *w->g);
+  w->x = malloc(n * sizeof *w->x), w->grad = malloc(n * sizeof *w->grad);
   w->T = malloc(nk * sizeof *w->T), w->ik = malloc(nk * sizeof *w->ik);
   w->pos = malloc(nk * sizeof *w->pos);
   w->flo = malloc(nk * sizeof *w->flo), w->fhi = malloc(nk * sizeof *w->fhi);
-  if (!w->bnd || !w->lo || !w->d || !w->x || !w->g || !w->T || !w->ik
+  if (!w->bnd || !w->lo || !w->d || !w->x || !w->grad || !w->T || !w->ik
       || !w->pos || !w->flo || !w->fhi)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (n = %d)",
                       w->n);
@@ -153,7 +153,7 @@ void qp_free(Qp_workspace *w)
   pdas_free(w);
   mprgp_free(w);
   free(w->bnd), free(w->lo), free(w->d);
-  free(w->x), free(w->g), free(w->T);
+  free(w->x), free(w->grad), free(w->T);
   free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
   free(w);
 }
@@ -303,7 +303,7 @@ int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
   return code;
 }
 #line 1237 "paper/qp.nw"
-int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
+int qp_adjoint(const Qp_workspace *w, const double *grad, double *lam,
                char *held, Status *st)
 {
   Condense *cd = condensed(w), *own = NULL;
@@ -311,7 +311,7 @@ int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
     return status_set(st, STATUS_INPUT, "adjoint: no condensation of the "
                       "friction state to solve with");
   if (!cd && !(cd = own = condense_apart(w, "adjoint", st))) return st->code;
-  int code = condense_adjoint(cd, w->x, g, lam, held, st);
+  int code = condense_adjoint(cd, w->x, grad, lam, held, st);
   condense_free(own);
   return code;
 }

@@ -85,7 +85,7 @@ int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st);
    (Section sec:condense-adjoint); held (nc + nt, may be NULL) receives 1
    at each held unknown, in the order of ic then it.  STATUS_NUMERIC when
    A_FF is singular. */
-int qp_adjoint(const Qp_workspace *w, const double *g, double *lam,
+int qp_adjoint(const Qp_workspace *w, const double *grad, double *lam,
                char *held, Status *st);
 
 /* y = A x, A stored with both triangles (as a Qp's); the package's one

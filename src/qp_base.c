@@ -4,17 +4,17 @@
 #line 403 "paper/qp.nw"
 static double qp_norm_bound(const cholmod_sparse *A);
 #line 612 "paper/qp.nw"
-/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
+/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; grad = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
-                   const double *g, double *T)
+                   const double *grad, double *T)
 {
   const double *b = qp->b;
   const Sparse_index *Ap = qp->A->p;
   double rf = 0, tn = 0, inf = 0, comp = 0, bb = 0, axax = 0, xx = 0, ll = 0;
   int m = 0;                               /* the longest column of A */
   for (int j = 0, c = 0, k = 0; j < (int) qp->A->ncol; j++) {
-    double r = g ? g[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
+    double r = grad ? grad[j] : qp_row_dot(qp->A, j, x) - b[j], axj = r + b[j];
     if (Ap[j + 1] - Ap[j] > m) m = (int) (Ap[j + 1] - Ap[j]);
     bb += b[j] * b[j];
     axax += axj * axj;
@@ -74,12 +74,12 @@ void qp_matvec(const cholmod_sparse *A, const double *x, double *y)
   for (int j = 0; j < (int) A->ncol; j++) y[j] = qp_row_dot(A, j, x);
 }
 
-/* g = A x - b, then kkt and T at x */
+/* grad = A x - b, then kkt and T at x */
 void qp_refresh(Qp_workspace *w)
 {
-  qp_matvec(w->qp->A, w->x, w->g);
-  for (int i = 0; i < w->n; i++) w->g[i] -= w->qp->b[i];
-  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->g, w->T);
+  qp_matvec(w->qp->A, w->x, w->grad);
+  for (int i = 0; i < w->n; i++) w->grad[i] -= w->qp->b[i];
+  w->kkt = qp_kkt_eval(w->qp, w->normA, w->x, w->grad, w->T);
 }
 #line 1052 "paper/qp.nw"
 const char *qp_method_name(Qp_method m)
@@ -121,7 +121,7 @@ int qp_expand(Qp_workspace *w, Status *st)
 
 int qp_refine(Qp_workspace *w, Status *st)
 {
-  int code = condense_refine(w->cond, w->g, w->x, st);
+  int code = condense_refine(w->cond, w->grad, w->x, st);
   if (!code) qp_refresh(w);
   return code;
 }

@@ -41,16 +41,16 @@ static inline double qp_ratio(double num, double den)
 
 /* the relative KKT residual from the norms of its four terms (rf, tn,
    inf; comp a sum), each less what rounding may explain: rho_f of a force,
-   g of a displacement, relative; over the scales sf and su.  A NaN
+   rho_u of a displacement, relative; over the scales sf and su.  A NaN
    anywhere gives NaN, which fmax would drop. */
 static inline double qp_kkt_combine(double rf, double tn, double inf,
                                     double comp, double sf, double su,
-                                    double rho_f, double g)
+                                    double rho_f, double rho_u)
 {
   double k = fmax(fmax(qp_ratio(qp_excess(rf, rho_f), sf),
                        qp_ratio(qp_excess(tn, rho_f), sf)),
-                  fmax(qp_ratio(qp_excess(inf, g * su), su),
-                       qp_ratio(qp_ratio(qp_excess(comp, (rho_f + g * sf) * su),
+                  fmax(qp_ratio(qp_excess(inf, rho_u * su), su),
+                       qp_ratio(qp_ratio(qp_excess(comp, (rho_f + rho_u * sf) * su),
                                          sf), su)));
   return isfinite(rf + tn + inf + comp + sf + su + rho_f) ? k : NAN;
 }

@@ -67,8 +67,8 @@ struct Qp_workspace {
   double gamma;          /* gamma_{m+2}, m the longest column of A: the
                             relative rounding of a residual (qp_kkt_eval) */
   double *x;             /* n: the iterate */
-  double *g;             /* n: the gradient A x - b at x */
-  double *T;             /* nk: the contact forces g[ik[k]] (4.6) */
+  double *grad;             /* n: the gradient A x - b at x */
+  double *T;             /* nk: the contact forces grad[ik[k]] (4.6) */
   double kkt;            /* qp_kkt at x */
   int iter;              /* iterations since qp_set */
   struct Condense *cond; /* the condensation (condense.c): pdas, and
@@ -91,11 +91,11 @@ static inline double qp_proj(const Qp_workspace *w, int i, double y)
 }
 
 #line 356 "paper/qp.nw"
-/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; g = Ax - b
+/* the relative KKT residual of x; normA = max_j sum_i |A_ij|; grad = Ax - b
    if known, else NULL; T (nc, may be NULL) receives the contact forces */
 double qp_kkt_eval(const Qp *qp, double normA, const double *x,
-                   const double *g, double *T);
-/* g = A x - b, then kkt and T at x */
+                   const double *grad, double *T);
+/* grad = A x - b, then kkt and T at x */
 void qp_refresh(Qp_workspace *w);
 /* bounded unknowns at their bound */
 int qp_count_active(const Qp_workspace *w);
@@ -105,9 +105,9 @@ int qp_not_held(const Qp_workspace *w, Status *st, const char *why,
 /* S, f and the factor of K at w's current values (condense_factor); a
    singular K is a body that nothing holds */
 int qp_condense(Qp_workspace *w, Status *st);
-/* x from the condensed y (condense_expand); g, kkt and T at x */
+/* x from the condensed y (condense_expand); grad, kkt and T at x */
 int qp_expand(Qp_workspace *w, Status *st);
-/* x_u refined by one step with the factor (condense_refine); g, kkt, T */
+/* x_u refined by one step with the factor (condense_refine); grad, kkt, T */
 int qp_refine(Qp_workspace *w, Status *st);
 #line 255 "paper/qp.nw"
 #endif
