@@ -200,10 +200,10 @@ static void side_load(FILE *f, const Side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1120 "paper/figures.nw"
-/* the sides' names at 1.2 times the text, their scripts at gnuplot's
-   0.8 of that, so that they print at 9.8 and 7.9 pt (the text's 8.2 pt,
-   fontpt) */
+#line 1121 "paper/figures.nw"
+/* the sides' names at 1.2 times the text, so that they print at 9.8 pt
+   (the text's 8.2 pt, fontpt); the stacked scripts of Gamma_P^k at 0.85 of
+   gnuplot's scripts (0.8), 6.7 pt, where the two clear each other */
 #define NAMEFONT " font sprintf(',%g', 1.2*fsz)"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
@@ -211,7 +211,7 @@ static void side_name(const Problem *p, int k, char *buf, size_t size)
   int m = 0;
   for (int j = 0; j <= k; j++) m += p->side[j].kind != BC_CLAMPED;
   if (p->side[k].kind == BC_CLAMPED) snprintf(buf, size, "Γ_D");
-  else snprintf(buf, size, "Γ@^{%d}_{P}", m);
+  else snprintf(buf, size, "Γ@^{/*0.85 %d}_{/*0.85 P}", m);
 }
 
 /* x1 of the top's name, and its height above the top in cm */
@@ -232,7 +232,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1160 "paper/figures.nw"
+#line 1161 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -257,7 +257,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1187 "paper/figures.nw"
+#line 1188 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -268,7 +268,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1202 "paper/figures.nw"
+#line 1203 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -278,7 +278,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1219 "paper/figures.nw"
+#line 1220 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -307,7 +307,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1261 "paper/figures.nw"
+#line 1262 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -338,7 +338,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1296 "paper/figures.nw"
+#line 1297 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -348,7 +348,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1314 "paper/figures.nw"
+#line 1315 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
