@@ -8,7 +8,8 @@
 # tests/prose.sh), a line of the article paper/article.tex (not a
 # comment; its numbers are macros of paper/article-numbers.sh) or of
 # README.md fails when it holds a number followed, past LaTeX
-# spacing (\, \  ~ $ }), by such a unit, or a percentage.  What matches
+# spacing (\, \  ~ $ }), by such a unit, a percentage, or a quantity
+# (a physical unit, a mantissa times a power of ten; below).  What matches
 # and is no measurement (a constant of the article, a default of a key, a
 # target or a threshold that is a setting) is taken out first by the
 # regular expressions of tests/numbers.allow, each with its reason.
