@@ -244,12 +244,15 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
           "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
           : "0.275", low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
-  fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right%s\n", name, L->ext[0] + LGAP, NAMEFONT);
+  fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right%s\n", name,
+          L->ext[0] + LGAP, NAMEFONT);
   side_name(p, SIDE_RIGHT, name, sizeof name);
-  fprintf(f, "  set label '%s' at b + cx(%.4g), 0.6*gamma left%s\n", name, L->ext[1] + LGAP, NAMEFONT);
+  fprintf(f, "  set label '%s' at b + cx(%.4g), 0.6*gamma left%s\n", name,
+          L->ext[1] + LGAP, NAMEFONT);
   side_name(p, SIDE_TOP, name, sizeof name);
   top_name_place(p, L, &x, &up);
-  fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center%s\n", name, plot_num(x), up, NAMEFONT);
+  fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center%s\n", name,
+          plot_num(x), up, NAMEFONT);
   fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
           narrow ? "0.5" : low ? "0.1" : "0.1875");
   foundation_text(p, g, sizeof g);
@@ -257,7 +260,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1188 "paper/figures.nw"
+#line 1191 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -268,7 +271,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1203 "paper/figures.nw"
+#line 1206 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -278,7 +281,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1220 "paper/figures.nw"
+#line 1223 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -307,7 +310,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1262 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -338,7 +341,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1297 "paper/figures.nw"
+#line 1300 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -348,7 +351,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1315 "paper/figures.nw"
+#line 1318 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
