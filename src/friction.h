@@ -1,11 +1,11 @@
-#line 345 "paper/friction.nw"
+#line 344 "paper/friction.nw"
 #ifndef CONTACTOPT_FRICTION_H
 #define CONTACTOPT_FRICTION_H
 #include "problem.h"
 #include "mesh.h"
 #include "fem.h"
 
-#line 358 "paper/friction.nw"
+#line 357 "paper/friction.nw"
 /* given friction: slip[k] = g omega_i, omega_i the tributary length of
    the node i = d->tangent_col[k] */
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Fem_dofs *d,
@@ -16,7 +16,7 @@ double friction_work(const Fem_dofs *d, const double *slip, const double *Q);
    gradient, at the design of the mesh */
 void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
                        const double *Q, double *G);
-#line 375 "paper/friction.nw"
+#line 374 "paper/friction.nw"
 /* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
    side holds both, a roller on the left or the right u1, on the top u2 */
 int friction_side_holds(const Problem *p, int component);
@@ -31,5 +31,5 @@ typedef struct {
 /* capacity and loads at the design the mesh admits where the margin
    capacity - load is least */
 Friction_hold friction_hold(const Problem *p);
-#line 352 "paper/friction.nw"
+#line 351 "paper/friction.nw"
 #endif

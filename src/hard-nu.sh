@@ -2,7 +2,8 @@
 # hard-nu.sh OUT: Example 5.1 solved by pdas in both plane models at
 # nu = 0.29, 0.45, 0.499, 0.4999 on N = 16 .. 256 into OUT/<model>-<nu>-<N>;
 # the table of the section "Near incompressibility" (LaTeX, on standard
-# output).  A solve that pdas ends unconverged at the default tolerance
+# output), and the macros \nuN{sinklo}, \nuN{sinkhi} of the sinking at
+# x1 = 2.  A solve that pdas ends unconverged at the default tolerance
 # (exit 3: the rounding of A u above it) is run again at solver.tol = 1e-9
 # and its cells are starred.  Tangled from paper/stability.nw; do not edit.
 set -e
@@ -49,4 +50,13 @@ printf '%s\n' '\bottomrule' '\end{tabular}'
 ls "$out"/*.star > /dev/null 2>&1 && printf '%s\n' '\\[2pt]{\footnotesize $^*$' \
   'solved at \texttt{solver.tol = 1e-9}: at $10^{-10}$ \texttt{pdas} stops' \
   'unconverged there (exit 3).}'
-true
+# the macros \nuN{sinklo}, \nuN{sinkhi}: the least and the most sinking
+# -u2 of the contact node at x1 = 2 (column N/2, row 0) over every run of
+# the table, in mm
+for f in "$out"/*/nodes.dat; do
+  N=$(awk '$1 == "N" { print $2 }' "${f%/nodes.dat}/summary.dat")
+  awk -v N=$N '$2 == N / 2 && $3 == 0 { printf "%.17g\n", -1000 * $7 }' "$f"
+done | sort -g | awk 'NR == 1 { lo = $1 } { hi = $1 }
+  END { printf "\\gdef\\nuN#1{\\csname nu:#1\\endcsname}\n"
+        printf "\\expandafter\\gdef\\csname nu:sinklo\\endcsname{%.1f}\n", lo
+        printf "\\expandafter\\gdef\\csname nu:sinkhi\\endcsname{%.1f}\n", hi }'

@@ -3,10 +3,10 @@
 # hard-thinner.scene in both plane models, solved by each state solver
 # and optimised by SLSQP and Algorithm 4.1 into OUT/<body>-<model>-<method>,
 # the four bodies side by side; the table of the section "Thin bodies"
-# (LaTeX, on standard output).  Projected SOR does not converge there in
-# its 10^5 sweeps (exit 3): its cell is the residual it gave up at, read
-# from its one line on the standard error.  Tangled from
-# paper/stability.nw; do not edit.
+# (LaTeX, on standard output) and its macro \thinN{same}.  Projected SOR
+# does not converge there in its 10^5 sweeps (exit 3): its cell is the
+# residual it gave up at, read from its one line on the standard error.
+# Tangled from paper/stability.nw; do not edit.
 set -e
 bin=${BIN:-bin/contactopt}
 out=$1
@@ -52,3 +52,12 @@ done
 printf '%s\n' '\bottomrule' '\end{tabular}\\[2pt]' \
   '{\footnotesize \texttt{psor}: its sweeps, or the residual at which' \
   'it gives up after $10^5$ (exit 3).}'
+# \thinN{same}: the largest relative difference of E* between SLSQP and
+# Algorithm 4.1 over the four bodies
+for n in "$out"/*-plane_*-slsqp; do
+  echo "$(v energy $n) $(v energy ${n%-slsqp}-projgrad)"
+done | awk '{ d = ($1 - $2) / $2; d = d < 0 ? -d : d; if (d > m) m = d }
+  END { printf "\\gdef\\thinN#1{\\csname thin:#1\\endcsname}\n"
+    if (m == 0) s = "$0$"
+    else { split(sprintf("%.1e", m), p, "e"); s = sprintf("$%s\\cdot10^{%d}$", p[1], p[2]) }
+    printf "\\expandafter\\gdef\\csname thin:same\\endcsname{%s}\n", s }'

@@ -55,3 +55,32 @@ for s in rise fall V Lambda; do
 done
 printf '%s\n' '\bottomrule' '\end{tabular}\\[2pt]' \
   '{\footnotesize iterations / state solves; $E(X^0)$ in plane stress.}'
+# \vertexN{KEY}: ref, stressrel, strain, strainspread, pglo, pghi, moved,
+# worst; a number grouped by thousands, a ratio as $a\cdot10^{k}$
+ref=$(awk '$1 == "energy_final" { print $2 }' data/reference/example-5.1.dat)
+for n in "$out"/*-plane_*-*/; do
+  n=${n%/}; m=${n#"$out"/}; m=${m#*-}; m=${m%-*}
+  printf '%s %s %s %s %s\n' "${n##*/}" "$m" "$(v energy $n)" \
+    "$(v projected_gradient $n)" "$(v initial_moved $n)"
+done | awk -v ref="$ref" -v e0="$(for s in rise fall V Lambda; do
+    awk '!/^#/ { print $2; exit }' $out/$s-plane_stress-slsqp/history.dat; done)" '
+  function abs(x) { return x < 0 ? -x : x }
+  function sci(x,  p) { if (x == 0) return "$0$"
+    split(sprintf("%.1e", x), p, "e"); return sprintf("$%s\\cdot10^{%d}$", p[1], p[2]) }
+  function group(x, d,  t, i, w, g) { t = sprintf("%." d "f", abs(x)); i = index(t, ".")
+    w = i ? substr(t, 1, i - 1) : t; g = ""
+    while (length(w) > 3) { g = "\\," substr(w, length(w) - 2) g; w = substr(w, 1, length(w) - 3) }
+    return (x < 0 ? "-" : "") w g (i ? substr(t, i) : "") }
+  function def(k, v) { printf "\\expandafter\\gdef\\csname vertex:%s\\endcsname{%s}\n", k, v }
+  BEGIN { n0 = split(e0, z, "\n"); lo0 = abs(z[1])
+    for (i = 2; i <= n0; i++) if (abs(z[i]) < lo0) lo0 = abs(z[i]) }
+  { e = $3; pg = $4 + 0
+    if (NR == 1 || pg < pglo) pglo = pg; if (NR == 1 || pg > pghi) pghi = pg
+    if ($1 ~ /^(V|Lambda)-/ && $5 + 0 > moved) moved = $5 + 0
+    if ($2 == "plane_stress") { r = abs(e - ref) / abs(ref); if (r > rel) rel = r
+      if (abs(e) > best) best = abs(e) }
+    else { if (!ns++ || e < slo) slo = e; if (ns == 1 || e > shi) shi = e } }
+  END { print "\\gdef\\vertexN#1{\\csname vertex:#1\\endcsname}"
+    def("ref", group(ref, 4)); def("stressrel", sci(rel)); def("strain", group(slo, 3))
+    def("strainspread", sci((shi - slo) / abs(slo))); def("pglo", sci(pglo)); def("pghi", sci(pghi))
+    def("moved", sci(moved)); def("worst", sprintf("%.0f", best / lo0)) }'

@@ -88,7 +88,7 @@ static void scale_by(Newton_workspace *w, const Newton_model *mdl, double phi)
       w->Hv[(size_t) c * m + e] = mdl->S[(size_t) c * m + e] * C0 / phi;
   }
 }
-#line 701 "paper/newton.nw"
+#line 700 "paper/newton.nw"
 enum { NEWTON_FACE_STEPS = 10, NEWTON_FACE_ROUNDS = 3 };
 static const double NEWTON_FACE_SOFT = 1e-4;   /* the weight of a soft face */
 
@@ -192,7 +192,7 @@ static int face_point(Newton_workspace *w, const int *col, double bmax,
   }
   return 0;
 }
-#line 920 "paper/newton.nw"
+#line 903 "paper/newton.nw"
 /* the point of the face act at the weight of face_weight and, if its
    dual, primal or area residual stays above tol, once more at
    NEWTON_FACE_SOFT times that weight; -1 as face_point */
@@ -204,7 +204,7 @@ static int face_point_soft(Newton_workspace *w, const int *col, double bmax,
   if (!q->finite || fmax(fmax(q->dual, q->primal), q->area) <= tol) return 0;
   return face_point(w, col, bmax, NEWTON_FACE_SOFT * om, q);
 }
-#line 934 "paper/newton.nw"
+#line 917 "paper/newton.nw"
 /* 1 if the point of the face passes; else the face takes the constraints
    its point violates and gives up those of negative multipliers, up to
    NEWTON_FACE_ROUNDS times, while that changes it; *singular counts the
@@ -227,7 +227,7 @@ static int face_solve(Newton_workspace *w, const int *col, double bmax, double t
   }
   return 0;
 }
-#line 1017 "paper/newton.nw"
+#line 1000 "paper/newton.nw"
 enum { NEWTON_MAX_ITER = 60 };
 static const double NEWTON_TOL = 1e-12, NEWTON_FACE_MU = 1e-7,
                     NEWTON_MU_ROUND = 4 * DBL_EPSILON;
@@ -312,7 +312,7 @@ int newton_solve(Newton_workspace *w, const Newton_model *mdl, double *d,
     measure(w, w->rd, w->rp, w->lam, w->s, NULL, re, scale, bmax, &q);
     if (!q.finite) { why = "reached residuals that are not finite"; break; }
     
-#line 1128 "paper/newton.nw"
+#line 1111 "paper/newton.nw"
 if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     && q.mu <= NEWTON_FACE_MU) {
   int same = faces > 0;
@@ -327,9 +327,9 @@ if (k > 0 && q.dual <= NEWTON_FACE_MU && q.primal <= NEWTON_FACE_MU
     if ((found = face_solve(w, mdl->col, bmax, tol, &fq, &singular))) break;
   }
 }
-#line 1101 "paper/newton.nw"
+#line 1084 "paper/newton.nw"
     
-#line 1118 "paper/newton.nw"
+#line 1101 "paper/newton.nw"
 if (q.mu <= NEWTON_MU_ROUND) {
   if ((found = q.dual <= tol && q.primal <= tol && q.area <= tol)) {
     memcpy(w->zf, w->z, (size_t) (n + m) * sizeof *w->z);
@@ -337,7 +337,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   } else why = "reached a complementarity at rounding, but not its residuals";
   break;
 }
-#line 1102 "paper/newton.nw"
+#line 1085 "paper/newton.nw"
     if (newton_predictor_corrector(w, mdl->col, gap, re)) {
       why = "met a Newton matrix whose contact block is not positive definite";
       break;
@@ -346,7 +346,7 @@ if (q.mu <= NEWTON_MU_ROUND) {
   if (rep) rep->iterations = k, rep->residual = found || faces ? fmax(fmax(fmax(fq.dual,
                            fq.primal), fmax(fq.outside, fq.negative)), fq.area) : HUGE_VAL;
   if (!found) 
-#line 1147 "paper/newton.nw"
+#line 1130 "paper/newton.nw"
 return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s after %d "
                           "iterations (complementarity %.1e of its scale); the last of %d "
                           "faces tried (%d not positive definite) has stationarity %.1e, "
@@ -358,7 +358,7 @@ return faces ? status_set(st, STATUS_NUMERIC, "newton: the interior point %s aft
                "(complementarity %.1e, dual residual %.1e, primal %.1e, each relative "
                "to its scale) before its active set could be tried", why, k, q.mu,
                q.dual, q.primal);
-#line 1110 "paper/newton.nw"
+#line 1093 "paper/newton.nw"
   for (int i = 0; i < n; i++) d[i] = C0 * w->zf[i];
   for (int c = 0; c < m; c++) v[c] = C0 * w->zf[n + c];
   if (rep) rep->pred = model_decrease(mdl, d, v, &rep->rounding);

@@ -6,7 +6,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1286 "paper/opt.nw"
+#line 1285 "paper/opt.nw"
 typedef struct {
   Opt_evaluator *ev;
   nlopt_opt opt;
@@ -33,7 +33,7 @@ typedef struct {
   double outside;         /* seconds in this file's callbacks, this start */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1315 "paper/opt.nw"
+#line 1314 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -54,7 +54,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
   for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1341 "paper/opt.nw"
+#line 1340 "paper/opt.nw"
 /* g (ny) = d c_k / d y for the inequality k of opt_constraints; its
    largest entry */
 static double mma_row(const Mma *q, int k, double *g)
@@ -82,7 +82,7 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   }
   q->outside += resources_clock() - start;
 }
-#line 1380 "paper/opt.nw"
+#line 1379 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static int mma_faces(Mma *q, const double *X, char *face);
 /* J(X(y)) / sigma, and its gradient in y */
@@ -102,7 +102,7 @@ static double mma_value(Mma *q, const double *y, double *grad)
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->J / q->scale;
 }
-#line 1404 "paper/opt.nw"
+#line 1403 "paper/opt.nw"
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
 {
@@ -112,7 +112,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return J;
 }
-#line 1416 "paper/opt.nw"
+#line 1415 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -132,7 +132,7 @@ static void mma_accept(Mma *q)
   else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1440 "paper/opt.nw"
+#line 1439 "paper/opt.nw"
 /* face[c] = 1 for each inequality c of opt_constraints on which X lies,
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
@@ -154,7 +154,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1470 "paper/opt.nw"
+#line 1469 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -188,7 +188,7 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1506 "paper/opt.nw"
+#line 1505 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 static void mma_varying(Mma *q);
@@ -208,7 +208,7 @@ static int mma_setup(Mma *q, const double *X)
   if (!rc) mma_varying(q);
   return rc;
 }
-#line 1531 "paper/opt.nw"
+#line 1530 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Opt_evaluator *ev = q->ev;
@@ -224,7 +224,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1555 "paper/opt.nw"
+#line 1554 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -238,14 +238,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1546 "paper/opt.nw"
+#line 1545 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1575 "paper/opt.nw"
+#line 1574 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Opt_evaluator *ev, double *X)
 {
@@ -269,14 +269,14 @@ int opt_mma(Opt_evaluator *ev, double *X)
   free(scratch), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1602 "paper/opt.nw"
+#line 1601 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Opt_evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1629 "paper/opt.nw"
+#line 1628 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -284,7 +284,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1608 "paper/opt.nw"
+#line 1607 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -293,18 +293,18 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1736 "paper/opt.nw"
+#line 1735 "paper/opt.nw"
 if (r > 0 && !q->own_dual && (ev->o->metric == OPT_METRIC_EUCLIDEAN
                               || objective_fits_schur(&ev->o->objective)))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
-#line 1616 "paper/opt.nw"
+#line 1615 "paper/opt.nw"
   double start = resources_clock();
   q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1642 "paper/opt.nw"
+#line 1641 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 int retry = !rc && !ev->rep->stop_reason[0] && r == NLOPT_FAILURE && !q->own_dual;
@@ -323,10 +323,10 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1622 "paper/opt.nw"
+#line 1621 "paper/opt.nw"
   return rc;
 }
-#line 1723 "paper/opt.nw"
+#line 1722 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {

@@ -119,7 +119,7 @@ if (pd->warm) condense_states_at(w->cond, w->x, w->T);
   condense_forces(w->cond, w->T);
   w->kkt = condense_kkt(w->cond, w->T, w->normA, w->gamma);
   
-#line 438 "paper/pdas.nw"
+#line 437 "paper/pdas.nw"
 memcpy(pd->prev, w->cond->act, (size_t) w->nk);
 int same = condense_predict(w->cond, w->T), solved = w->kkt <= w->opt.tol;
 if (solved && !same && settle(w)) {
@@ -136,7 +136,7 @@ return status_set(st, STATUS_NUMERIC, "pdas: the active set repeated at "
   "%.3g", w->iter + 1, w->kkt, w->opt.tol);
 #line 387 "paper/pdas.nw"
 }
-#line 472 "paper/pdas.nw"
+#line 471 "paper/pdas.nw"
 /* y = lo on the active set, the solution of the step system off it */
 static int pdas_step(Qp_workspace *w)
 {
@@ -145,7 +145,7 @@ static int pdas_step(Qp_workspace *w)
   int nk = w->nk, m = 0;
   const double *lo = w->pos;
   
-#line 496 "paper/pdas.nw"
+#line 495 "paper/pdas.nw"
 for (int c = 0; c < nk; c++)
   if (cd->act[c] == CONDENSE_HELD) cd->y[c] = lo[c];
   else pd->fr[m++] = c;
@@ -157,7 +157,7 @@ for (int a = 0; a < m; a++) {
   pd->r[a] = s;
   for (int b = 0; b < m; b++) cd->M[(size_t) a * m + b] = Sa[pd->fr[b]];
 }
-#line 480 "paper/pdas.nw"
+#line 479 "paper/pdas.nw"
   if (m == 0) return STATUS_OK;
   gsl_matrix_view M = gsl_matrix_view_array(cd->M, m, m);
   gsl_vector_view r = gsl_vector_view_array(pd->r, m);
@@ -167,7 +167,7 @@ for (int a = 0; a < m; a++) {
   for (int a = 0; a < m; a++) cd->y[pd->fr[a]] = pd->r[a];
   return STATUS_OK;
 }
-#line 577 "paper/pdas.nw"
+#line 576 "paper/pdas.nw"
 /* 1 if every tangential unknown is free (and there is one): N = the sum
    of their right-hand sides, noise = the rounding it may carry */
 static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
@@ -186,7 +186,7 @@ static int slide_imbalance(const Qp_workspace *w, double *N, double *noise)
   *N = sum, *noise = (w->nk + 2) * DBL_EPSILON * size;
   return w->nk > w->nc;
 }
-#line 599 "paper/pdas.nw"
+#line 598 "paper/pdas.nw"
 /* the free tangential unknown with an interval, its force of the sign of
    push (any if push is 0), that slides least: the first within TIE of
    the least; -1 if none */
@@ -207,7 +207,7 @@ static int least_slide(const Qp_workspace *w, int push)
   return least;
 }
 
-#line 558 "paper/pdas.nw"
+#line 557 "paper/pdas.nw"
 /* where every tangential unknown is free, hold those that stop first
    as the net force N pushes the body; 1 if it held any */
 static int hold_stopping(Qp_workspace *w)
@@ -222,7 +222,7 @@ static int hold_stopping(Qp_workspace *w)
   }
   return held > 0;
 }
-#line 629 "paper/pdas.nw"
+#line 628 "paper/pdas.nw"
 /* c has an interval of positive width for its force: a slip bound */
 static int slips(const Qp_workspace *w, int c)
 {
@@ -258,20 +258,20 @@ static int guide_start(Qp_workspace *w)
       gd->s[c] = slide, gd->t[c] = w->flo[c];
     } else {
       
-#line 678 "paper/pdas.nw"
+#line 677 "paper/pdas.nw"
 double quarter = 0.25 * (w->fhi[c] - w->flo[c]);
 gd->s[c] = fmax(slide, 0) + delta / w->d[w->ik[c]];
 gd->b[c] = fmax(-slide, 0) + delta / w->d[w->ik[c]];
 gd->t[c] = fmin(fmax(w->T[c], w->flo[c] + quarter), w->fhi[c] - quarter);
 if (!(gd->s[c] > 0 && gd->b[c] > 0 && isfinite(gd->t[c]))) return 0;
-#line 664 "paper/pdas.nw"
+#line 663 "paper/pdas.nw"
     }
   }
   memcpy(gd->pred, cd->act, (size_t) nk);   /* its first prediction */
   gd->state = GUIDE_ON;
   return 1;
 }
-#line 724 "paper/pdas.nw"
+#line 723 "paper/pdas.nw"
 /* e_s and e_b of a slipping unknown c, and its u, v and D */
 static void slip_pair(const Qp_workspace *w, int c, double sm, const double *cs,
                       const double *ct, const double *cb, double *es,
@@ -404,7 +404,7 @@ static int guide_step(Qp_workspace *w)
   }
   return !inside;
 }
-#line 865 "paper/pdas.nw"
+#line 864 "paper/pdas.nw"
 static void guide(Qp_workspace *w)
 {
   Pdas_workspace *pd = &w->pdas;

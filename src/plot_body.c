@@ -200,14 +200,18 @@ static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1117 "paper/figures.nw"
+#line 1121 "paper/figures.nw"
+/* the sides' names at 1.2 times the text, so that they print at 9.8 pt
+   (the text's 8.2 pt, fontpt); the stacked scripts of Gamma_P^k at 0.85 of
+   gnuplot's scripts (0.8), 6.7 pt, where the two clear each other */
+#define NAMEFONT " font sprintf(',%g', 1.2*fsz)"
 /* the name of side k: Gamma_D, or Gamma_P with its number among the others */
 static void side_name(const Problem *p, int k, char *buf, size_t size)
 {
   int m = 0;
   for (int j = 0; j <= k; j++) m += p->side[j].kind != BC_CLAMPED;
   if (p->side[k].kind == BC_CLAMPED) snprintf(buf, size, "Γ_D");
-  else snprintf(buf, size, "Γ@^{/*0.7 %d}_{/*0.7 P}", m);
+  else snprintf(buf, size, "Γ@^{/*0.85 %d}_{/*0.85 P}", m);
 }
 
 /* x1 of the top's name, and its height above the top in cm */
@@ -228,7 +232,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1153 "paper/figures.nw"
+#line 1161 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -240,12 +244,15 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
           "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
           : "0.275", low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
-  fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right\n", name, L->ext[0] + LGAP);
+  fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right%s\n", name,
+          L->ext[0] + LGAP, NAMEFONT);
   side_name(p, SIDE_RIGHT, name, sizeof name);
-  fprintf(f, "  set label '%s' at b + cx(%.4g), 0.6*gamma left\n", name, L->ext[1] + LGAP);
+  fprintf(f, "  set label '%s' at b + cx(%.4g), 0.6*gamma left%s\n", name,
+          L->ext[1] + LGAP, NAMEFONT);
   side_name(p, SIDE_TOP, name, sizeof name);
   top_name_place(p, L, &x, &up);
-  fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center\n", name, plot_num(x), up);
+  fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center%s\n", name,
+          plot_num(x), up, NAMEFONT);
   fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
           narrow ? "0.5" : low ? "0.1" : "0.1875");
   foundation_text(p, g, sizeof g);
@@ -253,7 +260,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1180 "paper/figures.nw"
+#line 1191 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -264,7 +271,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1195 "paper/figures.nw"
+#line 1206 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -274,7 +281,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1212 "paper/figures.nw"
+#line 1223 "paper/figures.nw"
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -303,7 +310,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1254 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -334,7 +341,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1289 "paper/figures.nw"
+#line 1300 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -344,7 +351,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1307 "paper/figures.nw"
+#line 1318 "paper/figures.nw"
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;

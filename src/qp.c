@@ -13,7 +13,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt, cholmod_common *cm
 static int alloc_common(Qp_workspace *w, Status *st);
 static int check_pattern(Qp_workspace *w, Status *st);
 static int not_converged(const Qp_workspace *w, Status *st);
-#line 758 "paper/qp.nw"
+#line 753 "paper/qp.nw"
 Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
                        cholmod_common *cm, Status *st)
 {
@@ -33,7 +33,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
   if (code) { qp_free(w); return NULL; }
   return w;
 }
-#line 781 "paper/qp.nw"
+#line 776 "paper/qp.nw"
 static int check_problem(const Qp *qp, const Qp_options *opt,
                          cholmod_common *cm, Status *st)
 {
@@ -56,7 +56,7 @@ static int check_problem(const Qp *qp, const Qp_options *opt,
                         "unknowns must increase within [0, %d)", c, qp->ic[c],
                         (int) A->ncol);
   
-#line 924 "paper/qp.nw"
+#line 919 "paper/qp.nw"
 if (qp->nt < 0 || qp->nt > (int) A->ncol || (qp->nt > 0 && (!qp->it || !qp->slip)))
   return status_set(st, STATUS_INPUT, "qp_alloc: nt = %d is not in [0, %d] "
                     "or it, slip is NULL", qp->nt, (int) A->ncol);
@@ -68,15 +68,15 @@ for (int k = 0; k < qp->nt; k++)
 if (qp->nt > 0 && opt->method == QP_PSOR)
   return status_set(st, STATUS_INPUT, "psor cannot solve contact with "
                     "friction: use solver.state = pdas or cgssor");
-#line 803 "paper/qp.nw"
+#line 798 "paper/qp.nw"
   return check_options(opt, st);
 }
-#line 808 "paper/qp.nw"
+#line 803 "paper/qp.nw"
 Qp_options qp_options_default(Qp_method method)
 {
   return (Qp_options) { method, 1e-10, method == QP_PDAS ? 100 : 100000, 1.5 };
 }
-#line 817 "paper/qp.nw"
+#line 812 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st)
 {
   if (opt->method != QP_PDAS && opt->method != QP_PSOR
@@ -91,7 +91,7 @@ static int check_options(const Qp_options *opt, Status *st)
                       opt->omega);
   return STATUS_OK;
 }
-#line 838 "paper/qp.nw"
+#line 833 "paper/qp.nw"
 static int alloc_common(Qp_workspace *w, Status *st)
 {
   size_t n = (size_t) w->n + 1, nk = (size_t) w->nk + 1;
@@ -121,7 +121,7 @@ static int alloc_common(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 875 "paper/qp.nw"
+#line 870 "paper/qp.nw"
 /* the pattern of A is symmetric: (i,j) is stored iff (j,i) is */
 static int check_pattern(Qp_workspace *w, Status *st)
 {
@@ -140,7 +140,7 @@ static int check_pattern(Qp_workspace *w, Status *st)
   return !bad ? STATUS_OK : status_set(st, STATUS_INPUT, "qp_alloc: the "
     "pattern of A is not symmetric (both triangles must be stored)");
 }
-#line 897 "paper/qp.nw"
+#line 892 "paper/qp.nw"
 void qp_release(Qp_workspace *w)
 {
   if (w) condense_release(w->cond);
@@ -157,7 +157,7 @@ void qp_free(Qp_workspace *w)
   free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
   free(w);
 }
-#line 946 "paper/qp.nw"
+#line 941 "paper/qp.nw"
 /* the diagonal of A, max_j sum_i |A_ij|, and finite values throughout */
 static int read_matrix(Qp_workspace *w, Status *st)
 {
@@ -181,7 +181,7 @@ static int read_matrix(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 976 "paper/qp.nw"
+#line 971 "paper/qp.nw"
 /* b, lo and slip finite; lo expanded to all unknowns; pos, flo, fhi */
 static int read_vectors(Qp_workspace *w, Status *st)
 {
@@ -204,7 +204,7 @@ static int read_vectors(Qp_workspace *w, Status *st)
   }
   return STATUS_OK;
 }
-#line 1001 "paper/qp.nw"
+#line 996 "paper/qp.nw"
 /* the current values of A, b and lo, read and checked */
 static int qp_read_values(Qp_workspace *w, Status *st)
 {
@@ -212,7 +212,7 @@ static int qp_read_values(Qp_workspace *w, Status *st)
   if (!code) code = read_vectors(w, st);
   return code;
 }
-#line 1013 "paper/qp.nw"
+#line 1008 "paper/qp.nw"
 int qp_set(Qp_workspace *w, const double *x0, Status *st)
 {
   int code = qp_read_values(w, st);
@@ -226,7 +226,7 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   if (w->opt.method == QP_CGSSOR) mprgp_set(w);
   return STATUS_OK;
 }
-#line 1034 "paper/qp.nw"
+#line 1029 "paper/qp.nw"
 int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
@@ -242,7 +242,7 @@ int qp_iterate(Qp_workspace *w, Status *st)
 int qp_test(const Qp_workspace *w) { return w->kkt <= w->opt.tol; }
 
 const double *qp_x(const Qp_workspace *w) { return w->x; }
-#line 1074 "paper/qp.nw"
+#line 1069 "paper/qp.nw"
 int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
              Qp_report *rep, Status *st)
 {
@@ -261,7 +261,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     code = mprgp_end(w, st);        /* for qp_schur; after the copies */
   return code;
 }
-#line 1105 "paper/qp.nw"
+#line 1100 "paper/qp.nw"
 static int not_converged(const Qp_workspace *w, Status *st)
 {
   return status_set(st, STATUS_NUMERIC, "%s: not converged after %d "
@@ -269,7 +269,7 @@ static int not_converged(const Qp_workspace *w, Status *st)
     qp_method_name(w->opt.method), w->iter, w->iter == 1 ? "" : "s",
     w->kkt, w->opt.tol, qp_count_active(w), w->nc);
 }
-#line 1198 "paper/qp.nw"
+#line 1193 "paper/qp.nw"
 /* w's problem without friction condensed onto its bounded unknowns at
    the values of the last qp_set; who names the caller in a message */
 static Condense *condense_apart(const Qp_workspace *w, const char *who,
@@ -292,7 +292,7 @@ static Condense *condensed(const Qp_workspace *w)
 {
   return w->cond && w->cond->condensed ? w->cond : NULL;
 }
-#line 1223 "paper/qp.nw"
+#line 1218 "paper/qp.nw"
 int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
 {
   Condense *cd = condensed(w);
@@ -302,7 +302,7 @@ int qp_schur(const Qp_workspace *w, double shift, double *S, Status *st)
   condense_free(cd);
   return code;
 }
-#line 1237 "paper/qp.nw"
+#line 1232 "paper/qp.nw"
 int qp_adjoint(const Qp_workspace *w, const double *grad, double *lam,
                char *held, Status *st)
 {

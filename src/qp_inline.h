@@ -7,7 +7,7 @@
 #include <math.h>
 #include "sparse.h"
 
-#line 548 "paper/qp.nw"
+#line 543 "paper/qp.nw"
 /* gamma_m = m u / (1 - m u): the relative rounding of a sum of m terms */
 static inline double qp_gamma(int m)
 {
@@ -66,7 +66,7 @@ static inline double qp_row_dot(const cholmod_sparse *A, int j,
   return s;
 }
 
-#line 720 "paper/qp.nw"
+#line 715 "paper/qp.nw"
 #define QP_RCOND_MIN (100 * DBL_EPSILON) /* smaller: taken to be singular */
 
 /* the squared pivots of the Cholesky factor L (m x m, row-major) spread

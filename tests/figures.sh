@@ -97,6 +97,23 @@ small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
 check "the results figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
 on=$(overlaps results)
 check "the results figure: no word on another [$on]" [ -z "$on" ]
+# the body figure (Figs. 5.1 and 5.3: contactopt plot --body) of the
+# same start, read the same way: the sides' names and their stacked
+# scripts (Gamma_P^1) too at 8 pt (scripts 6) or more, no word on another
+# (but the two scripts of a Gamma_P^k, stacked at the same place)
+$BIN plot $runs/results-start --body --title 'Example 5.1' -o $TMP/fig-body > /dev/null 2> $TMP/err
+check "contactopt plot --body draws Example 5.1 ($(head -c 200 $TMP/err))" \
+  sh -c "[ -s $TMP/fig-body.pdf ] && [ -s $TMP/fig-body.png ]"
+# (a stacked pair, "1P", is read as its digit: its width over a digit's
+# advance in DejaVu Sans, 0.636 of the font's size)
+words $TMP/fig-body | awk '$4 ~ /^[0-9]P$/ { $1 = sprintf("%.2f", ($6 - $5) / 0.636 / 2.54 * 72) } 1' \
+  > $TMP/words-body
+small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
+  $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
+  END { if (NR < 20) print "(only", NR, "words)" }' $TMP/words-body) || small="(awk failed)"
+check "the body figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
+on=$(overlaps body | tr ' ' '\n' | grep -v -E '^[0-9]+/P$' | tr '\n' ' ' | sed 's/ *$//')
+check "the body figure: no word on another [$on]" [ -z "$on" ]
 
 # the article's own figures (paper/article-*.gp), where make paper has
 # drawn them: the article includes them at their own size (16 cm wide)

@@ -227,8 +227,8 @@ check "rollers on both sides: four circles beside a and beside b" sh -c \
   "[ \$(grep -c 'do for \[k=1:4\]' $TMP/script.gp) -eq 2 ] &&
    grep -q 'circle at a - cx(0.154)' $TMP/script.gp && grep -q 'circle at b + cx(0.154)' $TMP/script.gp"
 check "rollers: the sides are named Γ_P 1, 2 and the loaded top 3" sh -c \
-  "grep -q \"label 'Γ@^{/\\*0.7 1}_{/\\*0.7 P}' at a\" $TMP/script.gp &&
-   grep -q \"label 'Γ@^{/\\*0.7 3}_{/\\*0.7 P}' at\" $TMP/script.gp"
+  "grep -q \"label 'Γ@^{/\\*0.85 1}_{/\\*0.85 P}' at a\" $TMP/script.gp &&
+   grep -q \"label 'Γ@^{/\\*0.85 3}_{/\\*0.85 P}' at\" $TMP/script.gp"
 script $TMP/free --body
 check "a free right side: nothing drawn beside b, no wall, no rollers" sh -c \
   "! grep -q 'b + cx(0.528)\\|circle\\|rect from b' $TMP/script.gp"
@@ -362,7 +362,7 @@ check "a body 0.5 m wide, 3 m tall: its panels widened to the strip's title ($(c
   holds '(h - l) * u >= 17' u=$1 l=$2 h=$3
 check "a tall body: two x1 tick marks, not five that run together" grep -q '^  set xtics 0, 0.5, 0.5 ' $TMP/script.gp
 check "a tall body: the top's name left of the arrows, clear of the load's value" \
-  grep -q "set label 'Γ@^{/\\*0.7 2}_{/\\*0.7 P}' at -0.1022" $TMP/script.gp
+  grep -q "set label 'Γ@^{/\\*0.85 2}_{/\\*0.85 P}' at -0.1022" $TMP/script.gp
 check "a tall body: the names of the body and of Γ_C in its middle, clear of its clamp" sh -c \
   "grep -q \"set label 'Ω({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp &&
    [ \$(grep -c \"set label 'Γ_C({/:Italic α}^0)' at a + 0.5\\*(b - a)\" $TMP/script.gp) -eq 2 ]"
