@@ -56,6 +56,12 @@ words() { w=$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')
                printf "%.2f %.3f %.3f %s %.3f %.3f\n", s / 1.164 * k,
                       v[3] * k / 72 * 2.54, v[5] * k / 72 * 2.54, t,
                       v[2] * k / 72 * 2.54, v[4] * k / 72 * 2.54 }'; }
+# small NAME MIN: the words of $TMP/words-NAME printed under 8 pt (a
+# sub- or superscript of at most 3 characters under 6), "WORD (SIZE pt)"
+# each, or a note when it read fewer than MIN words
+small() { LC_ALL=C awk -v min=$2 '{ t = $4; gsub(/[\200-\277]/, "", t) }  # characters, not bytes
+    $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
+    END { if (NR < min) print "(only", NR, "words)" }' $TMP/words-$1 || echo "(awk failed)"; }
 # overlaps FIG: the pairs of words of FIG whose boxes overlap by more than
 # 0.03 cm either way
 overlaps() { awk '{ t[NR] = $2; b[NR] = $3; w[NR] = $4; l[NR] = $5; r[NR] = $6 }
@@ -72,9 +78,7 @@ for fig in friction coulomb objectives accuracy; do
   check "fig-$fig.gp draws the made-up runs ($(head -c 200 $TMP/err))" \
     sh -c "[ -s $out.pdf ] && [ -s $out.png ] && [ ! -s $TMP/err ]"
   words $out > $TMP/words-$fig
-  small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }   # its characters, not bytes
-    $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
-    END { if (NR < 20) print "(only", NR, "words)" }' $TMP/words-$fig) || small="(awk failed)"
+  small=$(small $fig 20)
   check "fig-$fig at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
   on=$(overlaps $fig)
   check "fig-$fig: no word on another [$on]" [ -z "$on" ]
@@ -91,9 +95,7 @@ $BIN solve data/example-5.1.scene -o $runs/results-start > /dev/null 2>&1 &&
 check "contactopt plot --results draws Example 5.1 ($(head -c 200 $TMP/err))" \
   sh -c "[ -s $TMP/fig-results.pdf ] && [ -s $TMP/fig-results.png ]"
 words $TMP/fig-results | awk '$4 !~ /^(▷|◁|○|●|□|■|△|▽)$/' > $TMP/words-results
-small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
-  $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
-  END { if (NR < 20) print "(only", NR, "words)" }' $TMP/words-results) || small="(awk failed)"
+small=$(small results 20)
 check "the results figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
 on=$(overlaps results)
 check "the results figure: no word on another [$on]" [ -z "$on" ]
@@ -108,9 +110,7 @@ check "contactopt plot --body draws Example 5.1 ($(head -c 200 $TMP/err))" \
 # advance in DejaVu Sans, 0.636 of the font's size)
 words $TMP/fig-body | awk '$4 ~ /^[0-9]P$/ { $1 = sprintf("%.2f", ($6 - $5) / 0.636 / 2.54 * 72) } 1' \
   > $TMP/words-body
-small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
-  $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
-  END { if (NR < 20) print "(only", NR, "words)" }' $TMP/words-body) || small="(awk failed)"
+small=$(small body 20)
 check "the body figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
 on=$(overlaps body | tr ' ' '\n' | grep -v -E '^[0-9]+/P$' | tr '\n' ' ' | sed 's/ *$//')
 check "the body figure: no word on another [$on]" [ -z "$on" ]
@@ -121,9 +121,7 @@ for f in figures/article-*.pdf; do
   [ -f "$f" ] || { echo "# skip: no figures/article-*.pdf (make paper draws them)"; break; }
   n=$(basename $f .pdf)
   words ${f%.pdf} 16 | awk '$4 !~ /^(▷|◁|○|●|□|■|△|▽)$/' > $TMP/words-$n
-  small=$(LC_ALL=C awk '{ t = $4; gsub(/[\200-\277]/, "", t) }
-    $1 < 7.95 && length(t) > 3 || $1 < 6 { printf "%s (%s pt) ", $4, $1 }
-    END { if (NR < 10) print "(only", NR, "words)" }' $TMP/words-$n) || small="(awk failed)"
+  small=$(small $n 10)
   check "$n at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
   on=$(overlaps $n)
   check "$n: no word on another [$on]" [ -z "$on" ]
