@@ -13,21 +13,21 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # model, the figures' parts, the parts of the scene and output modules),
 # which share the module's private header; and the program.
 MODULES := status resources problem scene mesh fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
- INNER   := qp_base pdas mprgp psor condense_adjoint objective_grad model_read objective_evaluate grad_check design_project newton_ip opt_eval opt_projgrad opt_slsqp opt_mma opt_newton \
+ INNER   := qp_base pdas cgssor psor condense_adjoint objective_grad model_read objective_evaluate grad_check design_project newton_ip opt_eval opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_state plot_body plot_results \
            scene_keys scene_message scene_ini scene_value scene_check scene_shape scene_write \
            output_path output_state output_vtu output_solve output_optimize \
            design_set
 # A header of no module: the index type of CHOLMOD's arrays (paper/fem.nw).
 HEADERS := sparse
-PRIVATE := qp_private qp_inline model_private pdas mprgp psor opt_private plot_private design_private newton_private scene_private output_private
+PRIVATE := qp_private qp_inline model_private pdas cgssor psor opt_private plot_private design_private newton_private scene_private output_private
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
 SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
            src/objectives.sh src/fig-objectives.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/accuracy-numbers.sh src/fig-accuracy.gp \
            src/huge.sh src/man.sh src/completion.sh \
-           src/hard-nu.sh src/hard-units.sh src/hard-thin.sh src/hard-vertex.sh src/mprgp-table.sh \
+           src/hard-nu.sh src/hard-units.sh src/hard-thin.sh src/hard-vertex.sh src/cgssor-table.sh \
            src/depends.sh
 TANGLED := $(HEADERS:%=src/%.h) $(MODULES:%=src/%.h) $(PRIVATE:%=src/%.h) $(SOURCES) src/main.c src/example.c $(SCRIPTS)
 # make SAN=1 check: the whole suite under AddressSanitizer and UBSan, built
@@ -48,10 +48,10 @@ FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png
            figures/fig-coulomb.pdf figures/fig-coulomb.png figures/coulomb.tex \
            figures/fig-objectives.pdf figures/fig-objectives.png figures/objectives.tex
 # The tables of the hard cases (paper/stability.nw) and of MPRGP's cost
-# (paper/mprgp.nw), each written by the script that runs its cases (under
+# (paper/cgssor.nw), each written by the script that runs its cases (under
 # a minute together): rebuilt, not tracked (the last one is timed).
 HARD_FIGS := figures/hard-nu.tex figures/hard-units.tex figures/hard-thin.tex figures/hard-vertex.tex \
-             figures/mprgp.tex
+             figures/cgssor.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -358,9 +358,9 @@ figures/hard-%.tex: src/hard-%.sh bin/contactopt data/example-5.1.scene
 	@mkdir -p figures
 	sh $< out/hard-$* > $@.partial && mv $@.partial $@
 figures/hard-thin.tex: tests/scenes/hard-thin.scene tests/scenes/hard-thinner.scene
-figures/mprgp.tex: src/mprgp-table.sh bin/contactopt data/example-5.1-tresca.scene
+figures/cgssor.tex: src/cgssor-table.sh bin/contactopt data/example-5.1-tresca.scene
 	@mkdir -p figures
-	sh $< out/mprgp > $@.partial && mv $@.partial $@
+	sh $< out/cgssor > $@.partial && mv $@.partial $@
 figures/accuracy-numbers.tex: src/accuracy-numbers.sh out/accuracy/sweep.dat paper/bench-state.tex
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat paper/bench-state.tex > $@.partial && mv $@.partial $@

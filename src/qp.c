@@ -5,7 +5,7 @@
 #include <string.h>
 #include "qp_private.h"
 #include "pdas.h"
-#include "mprgp.h"
+#include "cgssor.h"
 #include "psor.h"
 #line 407 "paper/qp.nw"
 static int check_options(const Qp_options *opt, Status *st);
@@ -29,7 +29,7 @@ Qp_workspace *qp_alloc(const Qp *qp, const Qp_options *opt,
       && !(w->cond = condense_alloc(qp->A, w->nk, w->ik, &ct, cm, st)))
     code = st->code;               /* CG--SSOR with friction condenses too */
   if (!code && opt->method == QP_PDAS) code = pdas_alloc(w, st);
-  if (!code && opt->method == QP_CGSSOR) code = mprgp_alloc(w, st);
+  if (!code && opt->method == QP_CGSSOR) code = cgssor_alloc(w, st);
   if (code) { qp_free(w); return NULL; }
   return w;
 }
@@ -151,7 +151,7 @@ void qp_free(Qp_workspace *w)
   if (!w) return;
   condense_free(w->cond);
   pdas_free(w);
-  mprgp_free(w);
+  cgssor_free(w);
   free(w->bnd), free(w->lo), free(w->d);
   free(w->x), free(w->grad), free(w->T);
   free(w->ik), free(w->pos), free(w->flo), free(w->fhi);
@@ -223,7 +223,7 @@ int qp_set(Qp_workspace *w, const double *x0, Status *st)
   if (!isfinite(w->kkt))
     return status_set(st, STATUS_NUMERIC, "qp_set: the starting point is not finite");
   if (w->opt.method == QP_PDAS) pdas_set(w, x0 != NULL);
-  if (w->opt.method == QP_CGSSOR) mprgp_set(w);
+  if (w->opt.method == QP_CGSSOR) cgssor_set(w);
   return STATUS_OK;
 }
 #line 1029 "paper/qp.nw"
@@ -231,7 +231,7 @@ int qp_iterate(Qp_workspace *w, Status *st)
 {
   Qp_method m = w->opt.method;
   int code = m == QP_PDAS ? pdas_iterate(w, st)
-           : m == QP_PSOR ? psor_iterate(w, st) : mprgp_iterate(w, st);
+           : m == QP_PSOR ? psor_iterate(w, st) : cgssor_iterate(w, st);
   w->iter++;
   if (!code && !isfinite(w->kkt))
     code = status_set(st, STATUS_NUMERIC, "%s: NaN or infinity after %d "
@@ -258,7 +258,7 @@ int qp_solve(Qp_workspace *w, const double *x0, double *x, double *T,
     rep->active = qp_count_active(w), rep->converged = qp_test(w);
   }
   if (!code && w->opt.method == QP_CGSSOR)
-    code = mprgp_end(w, st);        /* for qp_schur; after the copies */
+    code = cgssor_end(w, st);        /* for qp_schur; after the copies */
   return code;
 }
 #line 1100 "paper/qp.nw"

@@ -2,7 +2,7 @@
 #ifndef CONTACTOPT_QP_PRIVATE_H
 #define CONTACTOPT_QP_PRIVATE_H
 /* The state solver's workspace, and what qp_base.c gives the methods:
-   qp.c, qp_base.c, pdas.c, mprgp.c and psor.c include it, no other
+   qp.c, qp_base.c, pdas.c, cgssor.c and psor.c include it, no other
    module does. */
 #include "qp.h"
 #include "qp_inline.h"
@@ -46,7 +46,7 @@ typedef struct {
   int restart;           /* 1: p must restart from z (the face changed) */
   int factored;          /* friction: S is condensed and factored for the
                             values of the last qp_set */
-} Mprgp_workspace;
+} Cgssor_workspace;
 
 #line 268 "paper/qp.nw"
 struct Qp_workspace {
@@ -74,7 +74,7 @@ struct Qp_workspace {
   struct Condense *cond; /* the condensation (condense.c): pdas, and
                             cgssor with friction; NULL otherwise */
   Pdas_workspace pdas;   /* method pdas only (pdas.c), zero otherwise */
-  Mprgp_workspace mprgp; /* method cgssor only (mprgp.c), zero otherwise */
+  Cgssor_workspace cgssor; /* method cgssor only (cgssor.c), zero otherwise */
 };
 
 #line 695 "paper/qp.nw"

@@ -4,20 +4,20 @@
    c->rc (and c->st); close_case frees what the steps made, wherever they
    stopped.  Which test uses which:
      open_case (Example 5.1 with overrides, solved): test_friction.c,
-       test_mprgp.c, test_qp.c, test_coulomb.c;
+       test_cgssor.c, test_qp.c, test_coulomb.c;
      case_load, case_model, case_solve (any scene; the test checks each
        step, or changes c->s before the model, or the model before the
        solve): test_condense.c, test_grad.c, test_model.c,
        test_objective.c, test_output.c, test_coulomb.c (open_coulomb);
        case_load alone, its models one per state solver (solve_cold):
-       weakly_active.h (test_pdas.c, test_psor.c, test_mprgp.c,
+       weakly_active.h (test_pdas.c, test_psor.c, test_cgssor.c,
        test_model.c);
      case_load_refined (-s mesh.refine=k, by setup.h's load_refined):
        test_condense.c, test_model.c;
-     max_abs, max_diff: test_friction.c, test_mprgp.c, test_coulomb.c.
+     max_abs, max_diff: test_friction.c, test_cgssor.c, test_coulomb.c.
    Two models are built outside case_model: test_scene_write.c's energy
    (of a scene written and read back; CHOLMOD by setup.h's test_start)
-   and test_mprgp.c's, on a case's scene with a state solver that the
+   and test_cgssor.c's, on a case's scene with a state solver that the
    scene refuses. */
 #ifndef CONTACTOPT_TEST_CASE_H
 #define CONTACTOPT_TEST_CASE_H

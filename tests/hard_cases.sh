@@ -280,7 +280,7 @@ for point in "design.C2=4 0 0.00625 0" "design.C2=3.8 0.05 0.00625 0" "design.C1
 done
 
 # ---- a node touching with zero force ---------------------------------------
-# tests/weakly_active.h (test_pdas.c, test_psor.c, test_mprgp.c) solves at
+# tests/weakly_active.h (test_pdas.c, test_psor.c, test_cgssor.c) solves at
 # a weakly active node of Examples 5.1 and 5.2 with every solver (and
 # tests/test_grad.c checks (4.8) there).  The
 # extreme case: no load at all.  On rollers (the flat punch, alpha = 0)

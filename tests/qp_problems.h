@@ -1,7 +1,7 @@
 /* qp_problems.h: small bound-constrained QPs of the form of the state
    problem (4.3), min 1/2 x'Ax - b'x, x[ic] >= lo, built with
    cholmod_triplet, and the checks that every state solver passes on them
-   (tests/test_qp.c, test_pdas.c, test_psor.c, test_mprgp.c):
+   (tests/test_qp.c, test_pdas.c, test_psor.c, test_cgssor.c):
    (a) 1D obstacle problems, (b) a semidefinite 1D Neumann problem held only
    by the bounds, (c) 2D grid Laplacians with mixed contact, (d) a small
    elastic body of Example 5.1 (not an M-matrix).  The reference

@@ -1,12 +1,12 @@
 /* setup.h: what every test program of the model does first.  Which test
    uses which:
      test_start (CHOLMOD started and quiet, GSL's handler off):
-       test_qp.c, test_pdas.c, test_psor.c, test_mprgp.c (on
+       test_qp.c, test_pdas.c, test_psor.c, test_cgssor.c (on
        qp_problems.h's cm), test_fem.c, test_scene_write.c, and through
        case.h every test that opens a case (test_condense.c,
        test_coulomb.c, test_friction.c, test_grad.c, test_model.c,
        test_objective.c, test_output.c, and weakly_active.h for
-       test_pdas.c, test_psor.c, test_mprgp.c, test_model.c);
+       test_pdas.c, test_psor.c, test_cgssor.c, test_model.c);
      test_start_gsl (GSL's handler off alone, no CHOLMOD): test_newton.c;
      load_refined: through case.h's case_load_refined, test_condense.c
        and test_model.c.

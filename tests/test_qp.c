@@ -2,7 +2,7 @@
    enumeration that the solvers' tests compare with finds the solution of
    each small problem of qp_problems.h; qp_alloc refuses the input errors
    of the contract and psor with friction; qp_solve refuses NaN in the
-   data.  The solvers themselves: test_pdas.c, test_psor.c, test_mprgp.c;
+   data.  The solvers themselves: test_pdas.c, test_psor.c, test_cgssor.c;
    the Schur complement that qp_schur hands over: test_condense.c. */
 #include "qp_problems.h"
 #include "case.h"

@@ -8,7 +8,7 @@
    and just below it, to the same state as the active set method started
    cold.  weakly_active_nodes(m) makes the checks of method m: for pdas
    (test_pdas.c) the design found and pdas's convergence, for psor and
-   cgssor (test_psor.c, test_mprgp.c) their agreement with pdas. */
+   cgssor (test_psor.c, test_cgssor.c) their agreement with pdas. */
 #ifndef CONTACTOPT_TEST_WEAKLY_ACTIVE_H
 #define CONTACTOPT_TEST_WEAKLY_ACTIVE_H
 #include <math.h>

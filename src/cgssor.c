@@ -1,4 +1,4 @@
-#line 139 "paper/mprgp.nw"
+#line 139 "paper/cgssor.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,13 +6,13 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "qp_private.h"
-#include "mprgp.h"
-#line 150 "paper/mprgp.nw"
+#include "cgssor.h"
+#line 150 "paper/cgssor.nw"
 #define MPRGP_GAMMA 1.0  /* proportioning: ||beta||^2 <= Gamma^2 phi~'phi */
 #define MPRGP_ABAR 1.9   /* expansion step length abar = 1.9 / ||A|| */
-#line 372 "paper/mprgp.nw"
+#line 372 "paper/cgssor.nw"
 #define TIE (4 * DBL_EPSILON)  /* blocking steps this close are equal */
-#line 129 "paper/mprgp.nw"
+#line 129 "paper/cgssor.nw"
 static int proportional(const Qp_workspace *w);
 static int proportioning_step(Qp_workspace *w, Status *st);
 static double feasible_step(const Qp_workspace *w);
@@ -20,17 +20,17 @@ static void cg_step(Qp_workspace *w, double acg, double pap);
 static void expansion_step(Qp_workspace *w, double af);
 static int cg_or_expansion_step(Qp_workspace *w, Status *st);
 static int dual_iterate(Qp_workspace *w, Status *st);
-#line 156 "paper/mprgp.nw"
+#line 156 "paper/cgssor.nw"
 static double dot(int n, const double *u, const double *v)
 {
   double s = 0;
   for (int i = 0; i < n; i++) s += u[i] * v[i];
   return s;
 }
-#line 167 "paper/mprgp.nw"
-int mprgp_alloc(Qp_workspace *w, Status *st)
+#line 167 "paper/cgssor.nw"
+int cgssor_alloc(Qp_workspace *w, Status *st)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   size_t n = (size_t) w->n + 1;
   mp->p = malloc(n * sizeof *mp->p), mp->q = malloc(n * sizeof *mp->q);
   mp->z = malloc(n * sizeof *mp->z);
@@ -38,25 +38,25 @@ int mprgp_alloc(Qp_workspace *w, Status *st)
     return status_set(st, STATUS_MEMORY, "qp_alloc: out of memory (cgssor)");
   return STATUS_OK;
 }
-#line 181 "paper/mprgp.nw"
-void mprgp_set(Qp_workspace *w)
+#line 181 "paper/cgssor.nw"
+void cgssor_set(Qp_workspace *w)
 {
-  w->mprgp.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
-  w->mprgp.restart = 1, w->mprgp.factored = 0;
+  w->cgssor.abar = MPRGP_ABAR / w->normA;   /* with friction: at the first step */
+  w->cgssor.restart = 1, w->cgssor.factored = 0;
   if (w->cond) w->cond->condensed = 0;   /* S is the last values' */
 }
 
-void mprgp_free(Qp_workspace *w)
+void cgssor_free(Qp_workspace *w)
 {
-  free(w->mprgp.p), free(w->mprgp.q), free(w->mprgp.z);
+  free(w->cgssor.p), free(w->cgssor.q), free(w->cgssor.z);
 }
-#line 208 "paper/mprgp.nw"
+#line 208 "paper/cgssor.nw"
 /* z = SSOR(omega) of A restricted to the free set, applied to phi */
 static void ssor_free(Qp_workspace *w)
 {
   const Sparse_index *Ap = w->qp->A->p, *Ai = w->qp->A->i;
   const double *Ax = w->qp->A->x;
-  double *z = w->mprgp.z, om = w->opt.omega;
+  double *z = w->cgssor.z, om = w->opt.omega;
   for (int i = 0; i < w->n; i++) {          /* (D + omega L) y = phi */
     double s = w->grad[i];
     for (Sparse_index k = Ap[i]; k < Ap[i + 1] && Ai[k] < i; k++) s -= om * Ax[k] * z[Ai[k]];
@@ -69,8 +69,8 @@ static void ssor_free(Qp_workspace *w)
     z[i] -= om * s / w->d[i];
   }
 }
-#line 237 "paper/mprgp.nw"
-int mprgp_iterate(Qp_workspace *w, Status *st)
+#line 237 "paper/cgssor.nw"
+int cgssor_iterate(Qp_workspace *w, Status *st)
 {
   if (w->nk > w->nc) return dual_iterate(w, st);   /* friction */
   int code = proportional(w) ? cg_or_expansion_step(w, st)
@@ -80,7 +80,7 @@ int mprgp_iterate(Qp_workspace *w, Status *st)
   if (w->kkt <= w->opt.tol) qp_refresh(w);   /* confirm from scratch */
   return STATUS_OK;
 }
-#line 250 "paper/mprgp.nw"
+#line 250 "paper/cgssor.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi */
 static int proportional(const Qp_workspace *w)
 {
@@ -88,17 +88,17 @@ static int proportional(const Qp_workspace *w)
   for (int i = 0; i < w->n; i++) {
     double gi = w->grad[i];
     if (qp_is_free(w, i))
-      fp += fmin((w->x[i] - w->lo[i]) / w->mprgp.abar, gi) * gi;
+      fp += fmin((w->x[i] - w->lo[i]) / w->cgssor.abar, gi) * gi;
     else if (gi < 0)
       bb += gi * gi;
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 271 "paper/mprgp.nw"
+#line 271 "paper/cgssor.nw"
 /* x <- x - alpha beta, the exact minimiser along the chopped gradient */
 static int proportioning_step(Qp_workspace *w, Status *st)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   for (int i = 0; i < w->n; i++)
     mp->z[i] = !qp_is_free(w, i) && w->grad[i] < 0 ? w->grad[i] : 0;
   qp_matvec(w->qp->A, mp->z, mp->q);
@@ -112,10 +112,10 @@ static int proportioning_step(Qp_workspace *w, Status *st)
   mp->restart = 1;
   return STATUS_OK;
 }
-#line 303 "paper/mprgp.nw"
+#line 303 "paper/cgssor.nw"
 static int cg_or_expansion_step(Qp_workspace *w, Status *st)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   int n = w->n;
   if (mp->restart || !(dot(n, w->grad, mp->p) > 0)) {
     ssor_free(w);
@@ -135,21 +135,21 @@ static int cg_or_expansion_step(Qp_workspace *w, Status *st)
   else expansion_step(w, af);
   return STATUS_OK;
 }
-#line 328 "paper/mprgp.nw"
+#line 328 "paper/cgssor.nw"
 /* the largest alpha with x - alpha p >= lo */
 static double feasible_step(const Qp_workspace *w)
 {
   double af = INFINITY;
   for (int i = 0; i < w->n; i++)
-    if (w->mprgp.p[i] > 0 && w->bnd[i] >= 0)
-      af = fmin(af, (w->x[i] - w->lo[i]) / w->mprgp.p[i]);
+    if (w->cgssor.p[i] > 0 && w->bnd[i] >= 0)
+      af = fmin(af, (w->x[i] - w->lo[i]) / w->cgssor.p[i]);
   return af;
 }
-#line 345 "paper/mprgp.nw"
+#line 345 "paper/cgssor.nw"
 /* x <- x - acg p; p <- z - gamma p, A-conjugate to the old p */
 static void cg_step(Qp_workspace *w, double acg, double pap)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   for (int i = 0; i < w->n; i++) {
     w->x[i] = qp_proj(w, i, w->x[i] - acg * mp->p[i]);
     w->grad[i] -= acg * mp->q[i];
@@ -158,11 +158,11 @@ static void cg_step(Qp_workspace *w, double acg, double pap)
   double gamma = dot(w->n, mp->z, mp->q) / pap;
   for (int i = 0; i < w->n; i++) mp->p[i] = mp->z[i] - gamma * mp->p[i];
 }
-#line 376 "paper/mprgp.nw"
+#line 376 "paper/cgssor.nw"
 /* x <- P(x_half - abar phi(x_half)), x_half = x - af p */
 static void expansion_step(Qp_workspace *w, double af)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   for (int i = 0; i < w->n; i++) {
     int tie = mp->p[i] > 0 && w->x[i] - w->lo[i] <= af * mp->p[i] * (1 + TIE);
     w->x[i] = tie ? w->lo[i] : qp_proj(w, i, w->x[i] - af * mp->p[i]);
@@ -173,7 +173,7 @@ static void expansion_step(Qp_workspace *w, double af)
   qp_refresh(w);
   mp->restart = 1;
 }
-#line 512 "paper/mprgp.nw"
+#line 512 "paper/cgssor.nw"
 /* T_k strictly inside its interval (a width 0 never is) */
 static int dual_free(const Qp_workspace *w, int k)
 {
@@ -200,7 +200,7 @@ static double dual_proj(const Qp_workspace *w, int k, double v)
 {
   return v < w->flo[k] ? w->flo[k] : v > w->fhi[k] ? w->fhi[k] : v;
 }
-#line 542 "paper/mprgp.nw"
+#line 542 "paper/cgssor.nw"
 /* u = S^-1 v = L^-T L^-1 v (u and v distinct) */
 static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 {
@@ -214,15 +214,15 @@ static void dual_hessian(const Qp_workspace *w, const double *v, double *u)
 /* y = S^-1 (f + T), from scratch */
 static void dual_state(Qp_workspace *w)
 {
-  double *r = w->mprgp.z;
+  double *r = w->cgssor.z;
   for (int k = 0; k < w->nk; k++) r[k] = w->cond->f[k] + w->T[k];
   dual_hessian(w, r, w->cond->y);
 }
-#line 506 "paper/mprgp.nw"
+#line 506 "paper/cgssor.nw"
 #define POWER_TOL 1e-2   /* stop when ||S^-1 v - rho v|| <= POWER_TOL rho */
 #define POWER_MAX 100    /* power iterations at most */
 
-#line 564 "paper/mprgp.nw"
+#line 564 "paper/cgssor.nw"
 /* M = L, S = L L' by dense Cholesky; STATUS_NUMERIC if S is singular */
 static int factor_schur(Qp_workspace *w, Status *st)
 {
@@ -242,7 +242,7 @@ static int factor_schur(Qp_workspace *w, Status *st)
    from the ones vector reaches, ||r|| <= POWER_TOL rho */
 static double norm_inverse(Qp_workspace *w)
 {
-  double *v = w->mprgp.p, *u = w->mprgp.q, rho = 0, res = INFINITY;
+  double *v = w->cgssor.p, *u = w->cgssor.q, rho = 0, res = INFINITY;
   int nk = w->nk;
   for (int k = 0; k < nk; k++) v[k] = 1 / sqrt(nk);
   for (int it = 0; it < POWER_MAX && !(res <= POWER_TOL * rho); it++) {
@@ -255,23 +255,23 @@ static double norm_inverse(Qp_workspace *w)
   }
   return rho + res;
 }
-#line 600 "paper/mprgp.nw"
+#line 600 "paper/cgssor.nw"
 static int dual_setup(Qp_workspace *w, Status *st)
 {
   int code = qp_condense(w, st);
   if (!code) code = factor_schur(w, st);
   if (code) return code;
-  w->mprgp.abar = MPRGP_ABAR / norm_inverse(w);
+  w->cgssor.abar = MPRGP_ABAR / norm_inverse(w);
   for (int k = 0; k < w->nk; k++) w->T[k] = dual_proj(w, k, w->T[k]);
   dual_state(w);
-  w->mprgp.restart = 1, w->mprgp.factored = 1;
+  w->cgssor.restart = 1, w->cgssor.factored = 1;
   return STATUS_OK;
 }
-#line 615 "paper/mprgp.nw"
+#line 615 "paper/cgssor.nw"
 /* ||beta||^2 <= Gamma^2 phi~' phi on the box */
 static int dual_proportional(const Qp_workspace *w)
 {
-  double bb = 0, fp = 0, a = w->mprgp.abar;
+  double bb = 0, fp = 0, a = w->cgssor.abar;
   for (int k = 0; k < w->nk; k++) {
     double grad = dual_grad(w, k), b = dual_chopped(w, k);
     if (dual_free(w, k))
@@ -281,7 +281,7 @@ static int dual_proportional(const Qp_workspace *w)
   }
   return bb <= MPRGP_GAMMA * MPRGP_GAMMA * fp;
 }
-#line 631 "paper/mprgp.nw"
+#line 631 "paper/cgssor.nw"
 /* the largest alpha with flo <= T - alpha d <= fhi */
 static double dual_feasible_step(const Qp_workspace *w, const double *d)
 {
@@ -291,11 +291,11 @@ static double dual_feasible_step(const Qp_workspace *w, const double *d)
     else if (d[k] < 0) af = fmin(af, (w->T[k] - w->fhi[k]) / d[k]);
   return af;
 }
-#line 645 "paper/mprgp.nw"
+#line 645 "paper/cgssor.nw"
 /* T <- T - alpha beta, y <- y - alpha H beta */
 static void dual_proportioning_step(Qp_workspace *w)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   int nk = w->nk;
   for (int k = 0; k < nk; k++) mp->z[k] = dual_chopped(w, k);
   dual_hessian(w, mp->z, mp->q);
@@ -307,7 +307,7 @@ static void dual_proportioning_step(Qp_workspace *w)
   }
   mp->restart = 1;
 }
-#line 665 "paper/mprgp.nw"
+#line 665 "paper/cgssor.nw"
 /* p <- the free gradient, where the face changed */
 static void dual_restart(Qp_workspace *w, double *p)
 {
@@ -322,11 +322,11 @@ static double dual_slope(const Qp_workspace *w, const double *p)
   return s;
 }
 
-#line 699 "paper/mprgp.nw"
+#line 699 "paper/cgssor.nw"
 /* T <- T - acg p, y <- y - acg Hp; p <- z - gamma p */
 static void dual_cg_step(Qp_workspace *w, double acg, double php)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   for (int k = 0; k < w->nk; k++) {
     w->T[k] = dual_proj(w, k, w->T[k] - acg * mp->p[k]);
     w->cond->y[k] -= acg * mp->q[k];
@@ -336,11 +336,11 @@ static void dual_cg_step(Qp_workspace *w, double acg, double php)
   for (int k = 0; k < w->nk; k++) mp->p[k] = mp->z[k] - gamma * mp->p[k];
 }
 
-#line 717 "paper/mprgp.nw"
+#line 717 "paper/cgssor.nw"
 /* T <- P(T_half - abar phi(T_half)), T_half = T - af p; y from scratch */
 static void dual_expansion_step(Qp_workspace *w, double af)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   for (int k = 0; k < w->nk; k++) {
     double p = mp->p[k], end = p > 0 ? w->flo[k] : w->fhi[k];
     int tie = p != 0 && fabs(w->T[k] - end) <= af * fabs(p) * (1 + TIE);
@@ -353,10 +353,10 @@ static void dual_expansion_step(Qp_workspace *w, double af)
   mp->restart = 1;
 }
 
-#line 683 "paper/mprgp.nw"
+#line 683 "paper/cgssor.nw"
 static void dual_cg_or_expansion_step(Qp_workspace *w)
 {
-  Mprgp_workspace *mp = &w->mprgp;
+  Cgssor_workspace *mp = &w->cgssor;
   int nk = w->nk;
   if (mp->restart || !(dual_slope(w, mp->p) > 0))
     dual_restart(w, mp->p), mp->restart = 0;
@@ -367,7 +367,7 @@ static void dual_cg_or_expansion_step(Qp_workspace *w)
   if (acg <= af) dual_cg_step(w, acg, php);
   else dual_expansion_step(w, af);
 }
-#line 741 "paper/mprgp.nw"
+#line 741 "paper/cgssor.nw"
 /* y_k = pos_k where T_k is inside; y_k on the allowed side at an end */
 static void dual_snap(Qp_workspace *w)
 {
@@ -387,16 +387,16 @@ static double dual_snapped_kkt(Qp_workspace *w)
   gsl_matrix_const_view S = gsl_matrix_const_view_array(cd->S, w->nk, w->nk);
   gsl_vector_view y = gsl_vector_view_array(cd->y, w->nk),
                   T = gsl_vector_view_array(w->T, w->nk);
-  memcpy(w->mprgp.z, cd->y, size), memcpy(w->mprgp.q, w->T, size);
+  memcpy(w->cgssor.z, cd->y, size), memcpy(w->cgssor.q, w->T, size);
   dual_snap(w);
   memcpy(w->T, cd->f, size);
   gsl_blas_dgemv(CblasNoTrans, 1.0, &S.matrix, &y.vector, -1.0, &T.vector);
   double kkt = condense_kkt(cd, w->T, w->normA, w->gamma);
   if (!(kkt <= w->opt.tol))
-    memcpy(cd->y, w->mprgp.z, size), memcpy(w->T, w->mprgp.q, size);
+    memcpy(cd->y, w->cgssor.z, size), memcpy(w->T, w->cgssor.q, size);
   return kkt;
 }
-#line 779 "paper/mprgp.nw"
+#line 779 "paper/cgssor.nw"
 static int dual_finish(Qp_workspace *w, Status *st)
 {
   int met = w->kkt <= w->opt.tol, code;
@@ -409,11 +409,11 @@ static int dual_finish(Qp_workspace *w, Status *st)
     "tolerance at step %d, and the whole state formed from it, refined once, "
     "has kkt = %.3g > tol = %.3g", w->iter + 1, w->kkt, w->opt.tol);
 }
-#line 798 "paper/mprgp.nw"
+#line 798 "paper/cgssor.nw"
 static int dual_iterate(Qp_workspace *w, Status *st)
 {
   int code;
-  if (!w->mprgp.factored && (code = dual_setup(w, st))) return code;
+  if (!w->cgssor.factored && (code = dual_setup(w, st))) return code;
   if (dual_proportional(w)) dual_cg_or_expansion_step(w);
   else dual_proportioning_step(w);
   w->kkt = condense_kkt(w->cond, w->T, w->normA, w->gamma);
@@ -424,8 +424,8 @@ static int dual_iterate(Qp_workspace *w, Status *st)
     return dual_finish(w, st);
   return STATUS_OK;
 }
-#line 820 "paper/mprgp.nw"
-int mprgp_end(Qp_workspace *w, Status *st)
+#line 820 "paper/cgssor.nw"
+int cgssor_end(Qp_workspace *w, Status *st)
 {
   int code = STATUS_OK;
   if (w->nk > w->nc && !w->cond->condensed && !(code = qp_condense(w, st)))

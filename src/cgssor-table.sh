@@ -1,13 +1,13 @@
 #!/bin/sh
-# mprgp-table.sh OUT: Example 5.1 with given friction, g = 2.5e8 Pa, solved
+# cgssor-table.sh OUT: Example 5.1 with given friction, g = 2.5e8 Pa, solved
 # by pdas and by cgssor (MPRGP on the dual) on N = 16, 64, 256 into
 # OUT/<solver>-<N>, each three times; the table of the paragraph "Cost" of
-# paper/mprgp.nw (LaTeX, on standard output): the steps and the best of
+# paper/cgssor.nw (LaTeX, on standard output): the steps and the best of
 # the three times (the seconds of summary.dat: the whole solve, the
 # condensation included), the machine's load under it, and the macro
-# \mprgpexponent, the observed exponent p of MPRGP's steps ~ N^p from
+# \cgssorexponent, the observed exponent p of MPRGP's steps ~ N^p from
 # N = 16 to 256.  Timed, so rebuilt and not tracked.  Tangled from
-# paper/mprgp.nw; do not edit.
+# paper/cgssor.nw; do not edit.
 set -e
 bin=${BIN:-bin/contactopt}
 out=$1; sc=data/example-5.1-tresca.scene
@@ -19,7 +19,7 @@ best() { for i in 1 2 3; do
       -s solver.state=$2 > "$out/$2-$1.log"
     echo "$(v iterations "$out/$2-$1") $(v seconds "$out/$2-$1")"
   done | awk 'NR == 1 || $2 < t { t = $2 } { n = $1 } END { printf "%d & %.2g", n, t }'; }
-echo "% written by src/mprgp-table.sh; do not edit"
+echo "% written by src/cgssor-table.sh; do not edit"
 printf '%s\n' '\begin{tabular}{rrrrr}' '\toprule' \
   '$N$ & \multicolumn{2}{c}{\texttt{pdas}} & \multicolumn{2}{c}{\texttt{cgssor}} \\' \
   '    & steps & s & steps & s \\' '\midrule'
@@ -30,5 +30,5 @@ printf '%s\n' '\bottomrule' '\end{tabular}'
 printf '%s %s, %s cores, load %s.}\n' \
   '\par\smallskip{\footnotesize Measured by \texttt{make figures} on' \
   "$(date -u +%F)" "$(v cores "$out/cgssor-256")" "$(v load_average "$out/cgssor-256")"
-printf '\\gdef\\mprgpexponent{%.2f}\n' "$(awk -v a="$(v iterations "$out/cgssor-16")" \
+printf '\\gdef\\cgssorexponent{%.2f}\n' "$(awk -v a="$(v iterations "$out/cgssor-16")" \
   -v b="$(v iterations "$out/cgssor-256")" 'BEGIN { print log(b / a) / log(16) }')"

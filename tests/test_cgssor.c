@@ -1,9 +1,9 @@
-/* test_mprgp.c: MPRGP (solver.state = cgssor, paper/mprgp.nw) on the
+/* test_cgssor.c: MPRGP (solver.state = cgssor, paper/cgssor.nw) on the
    small problems of qp_problems.h: against the enumeration and pdas,
    invariant under scaling, warm starts, its failures; then at a weakly
    active node of Examples 5.1 and 5.2 (weakly_active.h), where it must
    agree with pdas.  Then MPRGP on the dual (solver.state = cgssor with
-   friction, paper/mprgp.nw) against the active set method on Example 5.1:
+   friction, paper/cgssor.nw) against the active set method on Example 5.1:
    - given friction at g = 1e7, 2.5e8, 1e9 Pa on N = 16 and 64, and Coulomb
      friction F = 0.2: E to 1e-10 relative, the normal and tangential
      forces to 1e-8 of max|T|, the same nodes in contact and sticking, and
