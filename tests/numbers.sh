@@ -21,7 +21,7 @@
 # spacing, the unit
 num='(^|[^A-Za-z0-9_.^{=/:\\])[0-9]+([.][0-9]+)?'
 sep='(\\[,;: ]|\\thinspace|~|[$}]| )'
-unit='(s|ms|min|minutes?|seconds?|hours?|B|kB|MB|GB|KiB|MiB|GiB|times|iterations?|solves?|steps?|calls?|checks?|pages?|evaluations?)'
+unit='(s|ms|min|minutes?|seconds?|hours?|B|kB|MB|GB|KiB|MiB|GiB|times|iterations?|solves?|steps?|calls?|checks?|pages?|evaluations?|sweeps?|allocations?|sites|writes)'
 pattern="$num$sep+$unit([^A-Za-z0-9]|\$)|$num$sep*\\\\?%"
 
 # and the phrases that quote a measurement without such a unit, matched
