@@ -25,7 +25,8 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   for (int k = 0; objective_names[k]; k++)     /* E: above; undefined: no line */
     if (!objective_is_energy(k) && !isnan(J.value[k]))
       fprintf(f, "%s %.15g\n", objective_names[k], J.value[k]);
-  fprintf(f, "kkt_residual %.3e\niterations %d\n", model_report(md)->kkt, model_report(md)->iterations);
+  fprintf(f, "kkt_residual %.3e\niterations %d\n", model_report(md)->kkt,
+          model_report(md)->iterations);
   fprintf(f, "active_contact_nodes %d\nseconds %.6f\n", model_report(md)->active,
           model_seconds(md));
   output_reactions(f, md, &ms);
@@ -33,7 +34,7 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1489 "paper/output.nw"
+#line 1490 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
@@ -47,7 +48,7 @@ void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1527 "paper/output.nw"
+#line 1528 "paper/output.nw"
 int output_objectives(const Model *md, double q, Objective_values *J, Status *st)
 {
   for (int k = 0; objective_names[k]; k++) {
@@ -59,7 +60,7 @@ int output_objectives(const Model *md, double q, Objective_values *J, Status *st
   }
   return STATUS_OK;
 }
-#line 1545 "paper/output.nw"
+#line 1546 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = model_problem(md);
@@ -74,7 +75,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             model_fixed_point_iterations(md), model_fixed_point_residual(md));
 }
-#line 1564 "paper/output.nw"
+#line 1565 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -99,7 +100,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1600 "paper/output.nw"
+#line 1601 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {
