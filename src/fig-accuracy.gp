@@ -72,6 +72,7 @@ do for [fmt in "pdf png"] {
       spacing 1.1 samplen 2 Left reverse font keyfont
   set ylabel sprintf("|{/:Italic E}^* − {/:Italic E}_%s| / |{/:Italic E}_%s|", inf, inf)
   set title "(a) error against the limit"
+  set autoscale y                    # not the range (b) set for the other format
   set xtics 100
   plot for [f in varN] sweep using (strcol(1) eq f ? $13 : NaN):9 \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) title fam_title(f), \
