@@ -111,8 +111,11 @@ do for [fmt in "pdf png"] {
          using (strcol(1) eq f && f ne "mesh" ? $13 : NaN):($10 > eps ? $10 : eps) \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) notitle, \
        for [f in oneN] sweep \
-         using (strcol(1) eq f ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
-         with labels offset 0, 0.75 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
+         using (strcol(1) eq f && f[strlen(f)-1:] eq "64" ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
+         with labels right offset -0.5, 0 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
+       for [f in oneN] sweep \
+         using (strcol(1) eq f && f[strlen(f)-1:] ne "64" ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
+         with labels left offset 0.5, 0 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
        for [k in kinds] NaN with linespoints lw 1.5 pt 7 ps 0.9 lc rgb fam_color(k."-64") \
          title kind_title(k), \
        NaN with points pt 7 ps 0.9 lc "black" title "{/:Italic N} = 64", \
