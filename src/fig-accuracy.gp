@@ -105,16 +105,18 @@ do for [fmt in "pdf png"] {
   set arrow 1 from graph 0, first eps to graph 1, first eps nohead dt 2 lc "gray50"
   set label 1 "rounding" at graph 0.02, first 0.3*eps left tc "gray40" font sprintf(",%g", fsz)
   fam_exp(f) = floor(log10(f[1:7] eq "opttol-" ? $7 : $5) + 0.5)
+  tol_exp(f) = sprintf("%d", fam_exp(f))
+  at64(f) = f[strlen(f)-1:] eq "64"    # a family at N = 64: its labels left
   kinds = "pdas cgssor opttol"
   kind_title(k) = k eq "opttol" ? "optimizer.tol" : k." solver.tol"
   plot for [f in varN." ".oneN] sweep \
          using (strcol(1) eq f && f ne "mesh" ? $13 : NaN):($10 > eps ? $10 : eps) \
          with linespoints lw 1.5 pt fam_pt(f) ps 0.9 lc rgb fam_color(f) notitle, \
        for [f in oneN] sweep \
-         using (strcol(1) eq f && f[strlen(f)-1:] eq "64" ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
+         using (strcol(1) eq f && at64(f) ? $13 : NaN):($10 > eps ? $10 : NaN):(tol_exp(f)) \
          with labels right offset -0.5, 0 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
        for [f in oneN] sweep \
-         using (strcol(1) eq f && f[strlen(f)-1:] ne "64" ? $13 : NaN):($10 > eps ? $10 : NaN):(sprintf("%d", fam_exp(f))) \
+         using (strcol(1) eq f && !at64(f) ? $13 : NaN):($10 > eps ? $10 : NaN):(tol_exp(f)) \
          with labels left offset 0.5, 0 font sprintf(",%g", fsz) tc rgb fam_color(f) notitle, \
        for [k in kinds] NaN with linespoints lw 1.5 pt 7 ps 0.9 lc rgb fam_color(k."-64") \
          title kind_title(k), \
