@@ -301,7 +301,7 @@ static void test_scale(void)
   if (check(!a.rc && !b.rc, "scaled by 1e7: both solved"))
     check(model_report(a.md)->iterations == model_report(b.md)->iterations
           && fabs(model_energy(b.md) / 1e7 - model_energy(a.md)) <= 1e-9 * fabs(model_energy(a.md)),
-          "scaled by 1e7: %d and %d Newton steps, E / 1e7 to %.1e",
+          "scaled by 1e7: %d and %d active-set steps, E / 1e7 to %.1e",
           model_report(a.md)->iterations, model_report(b.md)->iterations,
           fabs(model_energy(b.md) / 1e7 - model_energy(a.md)) / fabs(model_energy(a.md)));
   close_case(&a), close_case(&b);
