@@ -21,9 +21,9 @@ do for [e in ex] { do for [m in meth] {
   if (STATS_min < Estar) { Estar = STATS_min }
 } }
 gap(E) = (E - Estar) / abs(Estar) > 1e-15 ? (E - Estar) / abs(Estar) : NaN
-set multiplot layout 1,2 margins 0.1, 0.985, 0.33, 0.9 spacing 0.1, 0
+set multiplot layout 1,2 margins 0.11, 0.985, 0.33, 0.9 spacing 0.1, 0
 set logscale y; set format y "10^{%T}"; set yrange [1e-15:3]
-set ylabel "(E_h − E_h^*) / |E_h^*|"
+set ylabel "(E_h − E_h^*) / |E_h^*|" offset 0.6, 0
 set grid lc rgb "#dddddd"
 unset key
 set xlabel "1 + iteration"; set title "(a) against the iteration"

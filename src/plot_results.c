@@ -175,7 +175,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "top = 2.4; rowgap = 3.0; graphh = %s; bodyh = (byhi - bylo)*ucm*vex\n"
           "Wcm = %s\n"
           "graphgap = rowgap + 0.8          # between two rows of graphs, room for x labels\n"
-          "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + %d*0.8 + 1.6\n",
+          "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + %d*0.8 + 2.0\n",
           plot_real(L->ucm, 6), plot_real(L->vex, 0), plot_real(COLW, 0), plot_real(GRAPHH, 0),
           results_width(pl), L->graphs, L->graphs > 1 ? L->graphs - 1 : 0);
   fputs(plot_page_lines, f);

@@ -56,6 +56,12 @@ words() { w=$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')
                printf "%.2f %.3f %.3f %s %.3f %.3f\n", s / 1.164 * k,
                       v[3] * k / 72 * 2.54, v[5] * k / 72 * 2.54, t,
                       v[2] * k / 72 * 2.54, v[4] * k / 72 * 2.54 }'; }
+# off_page FIG: the words of FIG.pdf whose box passes an edge of the page
+# by more than 1 pt (a clipped label), "WORD" each
+off_page() { pdftotext -bbox $1.pdf - | awk -v W="$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')" \
+    -v H="$(pdfinfo $1.pdf | awk '/^Page size/ { print $5 }')" '
+  /<word / { split($0, a, "\""); t = $0; sub(/.*">/, "", t); sub(/<\/word>.*/, "", t)
+             if (a[2] < -1 || a[4] < -1 || a[6] > W + 1 || a[8] > H + 1) printf "%s ", t }'; }
 # small NAME MIN: the words of $TMP/words-NAME printed under 8 pt (a
 # sub- or superscript of at most 3 characters under 6), "WORD (SIZE pt)"
 # each, or a note when it read fewer than MIN words
@@ -82,6 +88,8 @@ for fig in friction coulomb objectives accuracy; do
   check "fig-$fig at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
   on=$(overlaps $fig)
   check "fig-$fig: no word on another [$on]" [ -z "$on" ]
+  off=$(off_page $out)
+  check "fig-$fig: every word on the page [$off]" [ -z "$off" ]
 done
 # the results figures of Section 5 (Figs. 5.2 and 5.4: contactopt plot
 # --results, the gnuplot text of paper/figures.nw), drawn from a run of
@@ -99,6 +107,8 @@ small=$(small results 20)
 check "the results figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
 on=$(overlaps results)
 check "the results figure: no word on another [$on]" [ -z "$on" ]
+off=$(off_page $TMP/fig-results)
+check "the results figure: every word on the page [$off]" [ -z "$off" ]
 # the body figure (Figs. 5.1 and 5.3: contactopt plot --body) of the
 # same start, read the same way: the sides' names and their stacked
 # scripts (Gamma_P^1) too at 8 pt (scripts 6) or more, no word on another
@@ -114,6 +124,8 @@ small=$(small body 20)
 check "the body figure at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
 on=$(overlaps body | tr ' ' '\n' | grep -v -E '^[0-9]+/P$' | tr '\n' ' ' | sed 's/ *$//')
 check "the body figure: no word on another [$on]" [ -z "$on" ]
+off=$(off_page $TMP/fig-body)
+check "the body figure: every word on the page [$off]" [ -z "$off" ]
 
 # the article's own figures (paper/article-*.gp), where make paper has
 # drawn them: the article includes them at their own size (16 cm wide)
@@ -125,6 +137,8 @@ for f in figures/article-*.pdf; do
   check "$n at print size: no text under 8 pt (sub- and superscripts 6) [$small]" [ -z "$small" ]
   on=$(overlaps $n)
   check "$n: no word on another [$on]" [ -z "$on" ]
+  off=$(off_page ${f%.pdf})
+  check "$n: every word on the page [$off]" [ -z "$off" ]
 done
 
 # below BELOW ABOVE FIG: every word BELOW is under every word ABOVE
