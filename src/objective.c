@@ -1,9 +1,9 @@
-#line 174 "paper/objective.nw"
+#line 172 "paper/objective.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
-#line 182 "paper/objective.nw"
+#line 180 "paper/objective.nw"
 const char *const objective_names[] = {"energy", "compliance", "pressure_spread",
                                        "pressure_peak", NULL};
 
@@ -23,13 +23,8 @@ const char *objective_unit(Objective_kind k)
 {
   return k == OBJECTIVE_ENERGY || k == OBJECTIVE_COMPLIANCE ? " J/m" : "";
 }
-#line 208 "paper/objective.nw"
+#line 206 "paper/objective.nw"
 int objective_is_energy(Objective_kind k) { return k == OBJECTIVE_ENERGY; }
-
-int objective_of_pressure(Objective_kind k)
-{
-  return k == OBJECTIVE_SPREAD || k == OBJECTIVE_PEAK;
-}
 
 int objective_has_exponent(Objective_kind k) { return k == OBJECTIVE_PEAK; }
 
@@ -37,12 +32,12 @@ int objective_has_kinks(const Model *md, const Objective *o)
 {
   return !objective_is_energy(o->kind) || model_problem(md)->contact == CONTACT_COULOMB;
 }
-#line 231 "paper/objective.nw"
+#line 224 "paper/objective.nw"
 int objective_fits_schur(const Objective *o)
 {
   return o->kind == OBJECTIVE_ENERGY || o->kind == OBJECTIVE_COMPLIANCE;
 }
-#line 241 "paper/objective.nw"
+#line 234 "paper/objective.nw"
 /* T_c >= 0 of each contact unknown, and omega_c its tributary length */
 static void objective_forces(const Model *md, double *T, double *w)
 {
@@ -53,7 +48,7 @@ static void objective_forces(const Model *md, double *T, double *w)
     w[c] = mesh_tributary(model_mesh(md), d->contact_col[c]);
   }
 }
-#line 258 "paper/objective.nw"
+#line 251 "paper/objective.nw"
 /* J_s of T, omega (nc) and S1 = sum T > 0; dT, dw its partial derivatives */
 static double spread(int nc, const double *T, const double *w, double S1,
                      double *dT, double *dw)
@@ -67,7 +62,7 @@ static double spread(int nc, const double *T, const double *w, double S1,
   }
   return L * S2 / (S1 * S1) - 1;
 }
-#line 278 "paper/objective.nw"
+#line 271 "paper/objective.nw"
 /* J_q of T, omega (nc), S1 = sum T > 0 and the exponent q >= 1 */
 static double peak(int nc, const double *T, const double *w, double S1,
                    double q, double *dT, double *dw)
@@ -83,7 +78,7 @@ static double peak(int nc, const double *T, const double *w, double S1,
   }
   return J;
 }
-#line 298 "paper/objective.nw"
+#line 291 "paper/objective.nw"
 /* J, and dT, dw (nc, may be NULL) its partial derivatives in T and omega */
 int objective_partials(const Model *md, const Objective *o, double *J,
                        double *dT, double *dw, Status *st)
@@ -119,7 +114,7 @@ int objective_value(const Model *md, const Objective *o, double *J, Status *st)
 {
   return objective_partials(md, o, J, NULL, NULL, st);
 }
-#line 337 "paper/objective.nw"
+#line 330 "paper/objective.nw"
 int objective_same_sets(const Model *md, char *held, int write)
 {
   const Fem_dofs *d = model_dofs(md);

@@ -39,10 +39,8 @@ int objective_partials(const Model *md, const Objective *o, double *J,
 int objective_same_sets(const Model *md, char *held, int write);
 /* the properties of a kind that its callers ask for: 1 if it is the
    energy E (the Newton method's model, (4.8), a line of its own in a
-   summary); 1 if it is a functional of the contact pressure (J_s, J_q);
-   1 if it takes the exponent q (J_q) */
+   summary); 1 if it takes the exponent q (J_q) */
 int objective_is_energy(Objective_kind k);
-int objective_of_pressure(Objective_kind k);
 int objective_has_exponent(Objective_kind k);
 /* 1 if J at the model's problem has a kink where the held sets change:
    another objective than E, or any under Coulomb friction (J_F) */

@@ -1,10 +1,10 @@
-#line 359 "paper/objective.nw"
+#line 352 "paper/objective.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "objective.h"
-#line 370 "paper/objective.nw"
+#line 363 "paper/objective.nw"
 /* g = dJ/dQ + A_{:H} t, t = dT on the held contact unknowns */
 static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
                         const double *dT, double *g)
@@ -26,7 +26,7 @@ static void adjoint_rhs(const Model *md, Objective_kind kind, const double *AQ,
       for (Sparse_index k = Ap[d->contact[c]]; k < Ap[d->contact[c] + 1]; k++)
         g[Ai[k]] += Ax[k] * dT[c];
 }
-#line 395 "paper/objective.nw"
+#line 388 "paper/objective.nw"
 static void held_term(const Model *md, const char *held, const double *g,
                       const double *lam, double *G)
 {
@@ -42,7 +42,7 @@ static void held_term(const Model *md, const char *held, const double *g,
     G[d->contact_col[c]] -= g[j] - Al;
   }
 }
-#line 415 "paper/objective.nw"
+#line 408 "paper/objective.nw"
 /* d (u'K_e q) / d y_m: eu, eq the strains (times d) of u and q, Du, Dq
    D times them, d = 2|T| */
 static double bilinear_height(const double gy[3], const double u[6],
@@ -57,7 +57,7 @@ static double bilinear_height(const double gy[3], const double u[6],
   return (du0 * Dq[0] + du2 * Dq[2] + dq0 * Du[0] + dq2 * Du[2]) / (2 * d)
        - uDq * gy[m] / (2 * d * d);
 }
-#line 434 "paper/objective.nw"
+#line 427 "paper/objective.nw"
 /* the strain (times d) of q on the triangle, and D times it */
 static void strain_of(const Model *md, const double gx[3], const double gy[3],
                       const double q[6], double e[3], double De[3])
@@ -96,7 +96,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
     G[node % m->ncol] += rate * dy;
   }
 }
-#line 478 "paper/objective.nw"
+#line 471 "paper/objective.nw"
 /* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
 static void tributary_term(const Mesh *m, int nc, const int *col,
                            const double *dw, double *G)
@@ -110,7 +110,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
         G[k + 1] += r, G[k] -= r;
       }
 }
-#line 498 "paper/objective.nw"
+#line 491 "paper/objective.nw"
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
@@ -127,7 +127,7 @@ static int sliding_term(const Model *md, const char *held, const double *lam,
   free(dw);
   return STATUS_OK;
 }
-#line 536 "paper/objective.nw"
+#line 529 "paper/objective.nw"
 /* eps sum_i |w_i| rho_i, rho_i = sum_j |A_ij Q_j| + |b_i| */
 static double state_rounding(const Model *md, const double *w)
 {
@@ -143,7 +143,7 @@ static double state_rounding(const Model *md, const double *w)
   }
   return DBL_EPSILON * (double) s;
 }
-#line 555 "paper/objective.nw"
+#line 548 "paper/objective.nw"
 /* G from the partials dT, dw already in v; kind OBJECTIVE_COUNT: a
    functional of T alone */
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
@@ -187,7 +187,7 @@ static int gradient_scratch(const Model *md, double **v, char **held, Status *st
   free(*v), free(*held);
   return status_set(st, STATUS_MEMORY, "objective: out of memory");
 }
-#line 609 "paper/objective.nw"
+#line 602 "paper/objective.nw"
 int objective_gradient_fixed(const Model *md, const Objective *o,
                              const double *t, double *lam, char *held_out,
                              double *G, double *state, Status *st)
