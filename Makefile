@@ -75,7 +75,7 @@ endif
 # paper prints and tests/cycles.sh checks, src/depends.sh).
 PACKAGES := noweb libgsl-dev libnlopt-dev gnuplot-nox numdiff libinih-dev \
             libsuitesparse-dev libblas-dev libopenblas0-pthread pkg-config lmodern valgrind \
-            python3-meshio universal-ctags \
+            python3-meshio universal-ctags libgmsh-dev \
             groff-base man-db mandoc bsdextrautils \
             texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended poppler-utils

@@ -77,10 +77,10 @@ Fem_hooke fem_hooke(const Problem *p)
 {
   Fem_hooke H;
   double (*D)[3] = H.D;
-  double mu = p->young / (2 * (1 + p->nu));
+  double mu = p->material.young / (2 * (1 + p->material.nu));
   double lambda = p->model == MODEL_PLANE_STRAIN
-    ? p->young * p->nu / ((1 + p->nu) * (1 - 2 * p->nu))
-    : p->young * p->nu / (1 - p->nu * p->nu);
+    ? p->material.young * p->material.nu / ((1 + p->material.nu) * (1 - 2 * p->material.nu))
+    : p->material.young * p->material.nu / (1 - p->material.nu * p->material.nu);
   memset(D, 0, 9 * sizeof D[0][0]);
   D[0][0] = D[1][1] = lambda + 2 * mu;
   D[0][1] = D[1][0] = lambda;

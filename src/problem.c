@@ -1,12 +1,12 @@
-#line 208 "paper/problem.nw"
+#line 258 "paper/problem.nw"
 #include <stddef.h>
 #include "problem.h"
 
-#line 214 "paper/problem.nw"
+#line 264 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
-                                        "traction", NULL};
+                                        "traction", "pressure", NULL};
 const char *const problem_contact_names[] = {"frictionless", "tresca",
                                              "coulomb", NULL};
 
@@ -17,14 +17,14 @@ const char *problem_model_name(Problem_plane_model m)
 
 const char *problem_bc_name(Problem_bc_kind k)
 {
-  return (unsigned)k <= BC_TRACTION ? problem_bc_names[k] : "?";
+  return (unsigned)k <= BC_PRESSURE ? problem_bc_names[k] : "?";
 }
 
 const char *problem_contact_name(Problem_contact_law law)
 {
   return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
 }
-#line 240 "paper/problem.nw"
+#line 290 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;

@@ -2,12 +2,13 @@
 #ifndef CONTACTOPT_PROBLEM_H
 #define CONTACTOPT_PROBLEM_H
 
-#line 110 "paper/problem.nw"
+#line 112 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
    (u1 = 0 on left/right, u2 = 0 on top), or carries a traction. */
-typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION } Problem_bc_kind;
+typedef enum { BC_FREE, BC_CLAMPED, BC_ROLLER, BC_TRACTION, BC_PRESSURE }
+  Problem_bc_kind;   /* BC_PRESSURE: on a named curve of a part only */
 
 typedef struct {
   Problem_bc_kind kind; /* the condition on the side */
@@ -15,12 +16,39 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Problem_side;
-#line 127 "paper/problem.nw"
+#line 130 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Problem_plane_model;
-#line 136 "paper/problem.nw"
+#line 139 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Problem_contact_law;
-#line 141 "paper/problem.nw"
+#line 151 "paper/problem.nw"
+typedef enum { MATERIAL_ISOTROPIC, MATERIAL_ORTHOTROPIC } Problem_material_kind;
+typedef struct {
+  Problem_material_kind kind;
+  double young, nu;          /* isotropic: Young's modulus (Pa), Poisson */
+  double E1, E2, nu12, G12;  /* orthotropic, in its axes (Pa, 1, Pa) */
+  double E3, nu13, nu23;     /* orthotropic in plane strain */
+  double angle;              /* orthotropic: axis 1 from x1, degrees */
+} Problem_material;
+#line 169 "paper/problem.nw"
+enum { PROBLEM_NAME = 64, PROBLEM_NAMED = 32 };
+typedef struct {
+  char name[PROBLEM_NAME]; /* a physical curve of the geometry */
+  Problem_bc_kind kind;    /* free, clamped, roller, traction, pressure */
+  double P[2];             /* BC_TRACTION: the traction (P1, P2), Pa */
+  double pressure;         /* BC_PRESSURE: Pa, pushing into the body */
+} Problem_curve;
+typedef struct {
+  char name[PROBLEM_NAME]; /* a physical surface of the geometry */
+  Problem_material material;
+} Problem_region;
+typedef struct {
+  char geometry[4096];     /* the geometry's absolute path; "": rectangle */
+  int ncurve, nregion;     /* named curves and surfaces given a value */
+  Problem_curve curve[PROBLEM_NAMED];
+  Problem_region region[PROBLEM_NAMED];
+} Problem_part;
+#line 189 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -31,10 +59,12 @@ typedef struct {
   /* the mesh: M moving rows of cells up to C0prime, R fixed ones above */
   int M, R;
   double C0prime;
-  /* the material: isotropic, unit thickness, Young's modulus in N/m^2
-     (the scene's key E) and Poisson's ratio */
-  double young, nu;
+  /* the material of the strip (and of a part outside its named
+     surfaces), unit thickness, and the plane model of the whole body */
+  Problem_material material;
   Problem_plane_model model;
+  /* a part of the user's own above the strip, or the rectangle */
+  Problem_part part;
   /* the conditions of the sides: Gamma_D and Gamma_P */
   Problem_side side[SIDE_COUNT];
   /* the body force F = (F1, F2), N/m^3, constant */
@@ -49,7 +79,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 188 "paper/problem.nw"
+#line 238 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
@@ -58,5 +88,5 @@ const char *problem_bc_name(Problem_bc_kind k);
 const char *problem_contact_name(Problem_contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
-#line 104 "paper/problem.nw"
+#line 106 "paper/problem.nw"
 #endif

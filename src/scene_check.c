@@ -1,4 +1,4 @@
-#line 1530 "paper/scene.nw"
+#line 1533 "paper/scene.nw"
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include "friction.h"
 #include "scene_private.h"
-#line 1571 "paper/scene.nw"
+#line 1574 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -39,14 +39,14 @@ static int check_load(Scene_loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
   char r[STATUS_NUMBER];
-  if (x == 0 || in_window(x * times, s->problem.young)) return 0;
+  if (x == 0 || in_window(x * times, s->problem.material.young)) return 0;
   return scene_blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                      "1e30] times E, where every product the solvers form is "
-                     "finite", what, outside(fabs(x) * times / s->problem.young, r));
+                     "finite", what, outside(fabs(x) * times / s->problem.material.young, r));
 }
-#line 1544 "paper/scene.nw"
+#line 1547 "paper/scene.nw"
 static int read_contact(Scene_loader *L, Scene *s);
-#line 1617 "paper/scene.nw"
+#line 1620 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Scene_loader *L, Scene *s)
 {
@@ -69,7 +69,7 @@ static int read_geometry(Scene_loader *L, Scene *s)
     return scene_blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1649 "paper/scene.nw"
+#line 1652 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Scene_loader *L, Scene *s)
 {
@@ -87,7 +87,7 @@ static int read_design(Scene_loader *L, Scene *s)
     return scene_blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1678 "paper/scene.nw"
+#line 1681 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Scene_loader *L, Scene *s)
@@ -102,7 +102,7 @@ static int read_mesh(Scene_loader *L, Scene *s)
   if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1716 "paper/scene.nw"
+#line 1719 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : "R"),
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -112,7 +112,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    s->problem.N, s->problem.M, s->problem.R, k,
                    2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R),
                    INT_MAX / 36);
-#line 1692 "paper/scene.nw"
+#line 1695 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
@@ -125,7 +125,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1749 "paper/scene.nw"
+#line 1752 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Scene_loader *L, Scene *s)
 {
@@ -138,24 +138,24 @@ static int check_admissible(Scene_loader *L, Scene *s)
                    "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2117 "paper/scene.nw"
+#line 2120 "paper/scene.nw"
 /* [material]: E > 0, -1 < nu < 1/2, the plane model */
 static int read_material(Scene_loader *L, Scene *s)
 {
   int rc;
   if ((rc = scene_get(L, s, "material", "E"))) return rc;
-  if (!(s->problem.young > 0)) return scene_blame(L, "Young's modulus must be > 0");
-  if (!in_window(s->problem.young, 1))
+  if (!(s->problem.material.young > 0)) return scene_blame(L, "Young's modulus must be > 0");
+  if (!in_window(s->problem.material.young, 1))
     return scene_blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
                        "product the solvers form is finite");
   if ((rc = scene_get(L, s, "material", "nu"))) return rc;
-  if (!(s->problem.nu < 0.5))
+  if (!(s->problem.material.nu < 0.5))
     return scene_blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
                        "where this displacement method locks");
-  if (!(s->problem.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
+  if (!(s->problem.material.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
   return scene_get(L, s, "material", "model");
 }
-#line 2143 "paper/scene.nw"
+#line 2146 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -164,7 +164,7 @@ static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2165 "paper/scene.nw"
+#line 2168 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -180,7 +180,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2151 "paper/scene.nw"
+#line 2154 "paper/scene.nw"
   if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = scene_get(L, s, sec, "P2"))
@@ -191,7 +191,7 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2184 "paper/scene.nw"
+#line 2187 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -203,7 +203,7 @@ static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
     return rc;
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2211 "paper/scene.nw"
+#line 2214 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Scene_loader *L, Scene *s)
 {
@@ -218,17 +218,17 @@ static int check_held(Scene_loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2234 "paper/scene.nw"
+#line 2237 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2225 "paper/scene.nw"
+#line 2228 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2243 "paper/scene.nw"
+#line 2246 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
   return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
                     "onto the foundation (the load that presses it down is %g N/m), "
@@ -244,9 +244,9 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2227 "paper/scene.nw"
+#line 2230 "paper/scene.nw"
 }
-#line 2262 "paper/scene.nw"
+#line 2265 "paper/scene.nw"
 /* the three sides */
 static int read_sides(Scene_loader *L, Scene *s)
 {
@@ -255,7 +255,7 @@ static int read_sides(Scene_loader *L, Scene *s)
     if ((rc = read_side(L, s, (Problem_side_id)id))) return rc;
   return 0;
 }
-#line 2287 "paper/scene.nw"
+#line 2290 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Scene_loader *L, Scene *s)
 {
@@ -270,7 +270,7 @@ static int read_loads(Scene_loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2305 "paper/scene.nw"
+#line 2308 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Scene_loader *L, Scene *s)
 {
@@ -294,7 +294,7 @@ static int read_contact(Scene_loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2337 "paper/scene.nw"
+#line 2340 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Scene_loader *L, Scene *s)
 {
@@ -306,7 +306,7 @@ static int read_solver(Scene_loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2365 "paper/scene.nw"
+#line 2368 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
@@ -317,7 +317,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2348 "paper/scene.nw"
+#line 2351 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -328,7 +328,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2407 "paper/scene.nw"
+#line 2410 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies
    (opt_refusal) */
@@ -375,7 +375,7 @@ static int read_optimizer(Scene_loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2460 "paper/scene.nw"
+#line 2463 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Scene_loader *L, Scene *s)
 {
@@ -392,7 +392,7 @@ static int read_objective(Scene_loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2486 "paper/scene.nw"
+#line 2489 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s)
 {

@@ -1,4 +1,4 @@
-#line 906 "paper/scene.nw"
+#line 909 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -6,10 +6,10 @@
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
-#line 919 "paper/scene.nw"
+#line 922 "paper/scene.nw"
 static int nul_byte(Scene_loader *L);
 static int long_line(Scene_loader *L, const char *buf, int size);
-#line 943 "paper/scene.nw"
+#line 946 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
@@ -17,7 +17,7 @@ static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *k
   char where[640], list[256];
   scene_origin(L, L->override, where, sizeof where);
   
-#line 964 "paper/scene.nw"
+#line 967 "paper/scene.nw"
 if (!*sec)
   return scene_fail(L, "%s: line %d: %s = %s comes before any [section]", where,
                     L->line, key, val);
@@ -27,7 +27,7 @@ if (!scene_section_known(sec))
 if (!scene_key_find(sec, key))
   return scene_fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
                     key, val, sec, scene_key_names(sec, list, sizeof list));
-#line 950 "paper/scene.nw"
+#line 953 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return scene_fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                       key, (int)sizeof e->val - 1);
@@ -38,7 +38,7 @@ if (!scene_key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 977 "paper/scene.nw"
+#line 980 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
 {
@@ -48,7 +48,7 @@ Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 991 "paper/scene.nw"
+#line 994 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
 {
@@ -59,7 +59,7 @@ static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 1022 "paper/scene.nw"
+#line 1025 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -78,14 +78,14 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1043 "paper/scene.nw"
+#line 1046 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Scene_loader *L)
 {
   return scene_fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
                     "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 1063 "paper/scene.nw"
+#line 1066 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line)
 {
@@ -110,7 +110,7 @@ static int long_line(Scene_loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 1094 "paper/scene.nw"
+#line 1097 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -121,7 +121,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1111 "paper/scene.nw"
+#line 1114 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   scene_fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -129,18 +129,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
              L->line, sec, key);
   return 0;
 }
-#line 1104 "paper/scene.nw"
+#line 1107 "paper/scene.nw"
   
-#line 1122 "paper/scene.nw"
+#line 1125 "paper/scene.nw"
 if ((old = scene_find(L, sec, key))) {
   scene_bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
             old->line);
   return 0;
 }
-#line 1105 "paper/scene.nw"
+#line 1108 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1163 "paper/scene.nw"
+#line 1166 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
 int scene_for_memory(Scene_loader *L, int e)
 {
@@ -149,7 +149,7 @@ int scene_for_memory(Scene_loader *L, int e)
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1136 "paper/scene.nw"
+#line 1139 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 int scene_read_file(Scene_loader *L)
 {
@@ -169,18 +169,18 @@ int scene_read_file(Scene_loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1174 "paper/scene.nw"
+#line 1177 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   scene_fail(L, "%s: line %d: syntax error: expected [section], key = value, "
              "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1155 "paper/scene.nw"
+#line 1158 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1196 "paper/scene.nw"
+#line 1199 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -191,7 +191,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1213 "paper/scene.nw"
+#line 1216 "paper/scene.nw"
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Scene_loader *L, const Scene_entry *e)
 {
@@ -206,7 +206,7 @@ static void drop_unused(Scene_loader *L, const Scene_entry *e)
         && (old = scene_find(L, e->sec, scene_keys[i].key)) && !old->override)
       *old = L->e[--L->n];
 }
-#line 1233 "paper/scene.nw"
+#line 1236 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 int scene_apply_override(Scene_loader *L, const char *o)
 {
@@ -219,7 +219,7 @@ int scene_apply_override(Scene_loader *L, const char *o)
   eq = strchr(copy, '=');
   dot = strchr(copy, '.');
   
-#line 1258 "paper/scene.nw"
+#line 1261 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -231,7 +231,7 @@ if (!sec || !*sec || !*key)
              L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1245 "paper/scene.nw"
+#line 1248 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);

@@ -4,10 +4,13 @@
 #include "scene_private.h"
 #line 392 "paper/scene.nw"
 const char *const scene_side_names[] = {"left", "right", "top", NULL};
+/* the conditions of a side: those of problem_bc_names before pressure */
+static const char *const scene_side_bc_names[] = {"free", "clamped",
+  "roller", "traction", NULL};
 static const char *const state_names[] = {"pdas", "psor", "cgssor", NULL};
 const char *const scene_initial_names[] = {"arc", "line", "constant",
   "file", NULL};
-#line 399 "paper/scene.nw"
+#line 402 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w)
 {
@@ -16,7 +19,7 @@ int scene_name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 412 "paper/scene.nw"
+#line 415 "paper/scene.nw"
 /* append s to the string buf of size bytes, cut to fit */
 static void cat(char *buf, size_t size, const char *s)
 {
@@ -39,7 +42,7 @@ const char *scene_name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 450 "paper/scene.nw"
+#line 453 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -61,10 +64,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else status_number(d.tol, buf);
   return buf;
 }
-#line 669 "paper/scene.nw"
+#line 672 "paper/scene.nw"
 const Scene_key scene_keys[] = {
   
-#line 515 "paper/scene.nw"
+#line 518 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -105,9 +108,9 @@ const Scene_key scene_keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder (with -s too)"},
-#line 671 "paper/scene.nw"
+#line 674 "paper/scene.nw"
   
-#line 558 "paper/scene.nw"
+#line 561 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-",
@@ -117,17 +120,17 @@ const Scene_key scene_keys[] = {
  .meaning = "top of the moving rows of cells"},
 {"mesh", "refine", KEY_INT, .at = AT_DEFAULT, .unit = "-", .dflt = "1",
  .accepted = ">= 1", .meaning = "multiplies N, M and R: a finer mesh"},
-{"material", "E", KEY_REAL, .at = AT(problem.young), .unit = "Pa",
+{"material", "E", KEY_REAL, .at = AT(problem.material.young), .unit = "Pa",
  .accepted = "1e-30 <= E <= 1e30", .meaning = "Young's modulus"},
-{"material", "nu", KEY_REAL, .at = AT(problem.nu), .unit = "1",
+{"material", "nu", KEY_REAL, .at = AT(problem.material.nu), .unit = "1",
  .accepted = "-1 < nu < 0.5", .meaning = "Poisson's ratio"},
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model"},
-#line 672 "paper/scene.nw"
+#line 675 "paper/scene.nw"
   
-#line 578 "paper/scene.nw"
+#line 581 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what)                                    \
-  {sec, "bc", KEY_WORD, problem_bc_names, AT(problem.side[i].kind), "-",   \
+  {sec, "bc", KEY_WORD, scene_side_bc_names, AT(problem.side[i].kind), "-",\
    "free", .meaning = "the condition of the " what},                       \
   {sec, "from", KEY_REAL, .at = AT(problem.side[i].from), .unit = "m",     \
    .selector = "bc", .when = "traction", .accepted = lo,                   \
@@ -149,9 +152,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b"),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma"),
-#line 673 "paper/scene.nw"
+#line 676 "paper/scene.nw"
   
-#line 605 "paper/scene.nw"
+#line 608 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.body_force[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -170,9 +173,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 674 "paper/scene.nw"
+#line 677 "paper/scene.nw"
   
-#line 626 "paper/scene.nw"
+#line 629 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -204,19 +207,19 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "starts", KEY_INT, .at = AT(optimizer.starts), .unit = "-",
  .dflt = "1", .accepted = "1 <= starts <= 100",
  .meaning = "starts: the scene's and starts - 1 waves in B; the best kept"},
-#line 675 "paper/scene.nw"
+#line 678 "paper/scene.nw"
   
-#line 661 "paper/scene.nw"
+#line 664 "paper/scene.nw"
 {"objective", "kind", KEY_WORD, objective_names, AT(optimizer.objective.kind),
  "-", "energy", .meaning = "what the design minimises"},
 {"objective", "q", KEY_REAL, .at = AT(optimizer.objective.q), .unit = "1",
  .dflt = "8", .selector = "kind", .when = "pressure_peak",
  .accepted = "1 <= q <= 1000", .meaning = "the exponent of pressure_peak"},
-#line 676 "paper/scene.nw"
+#line 679 "paper/scene.nw"
 };
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
-#line 687 "paper/scene.nw"
+#line 690 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 const Scene_key *scene_key_find(const char *sec, const char *key)
 {
@@ -235,7 +238,7 @@ int scene_section_known(const char *sec)
     if (strcmp(scene_keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 710 "paper/scene.nw"
+#line 713 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size)
 {
@@ -251,7 +254,7 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 729 "paper/scene.nw"
+#line 732 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Scene_key *k, const char *w)
 {
@@ -263,7 +266,7 @@ int scene_key_means(const Scene_key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 2552 "paper/scene.nw"
+#line 2555 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Scene_key *k, char *buf, size_t size)
@@ -292,7 +295,7 @@ static const char *default_text(const Scene_key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 2584 "paper/scene.nw"
+#line 2587 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Scene_key *k, char *buf, size_t size)
 {
@@ -316,7 +319,7 @@ static const char *meaning_text(const Scene_key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 2612 "paper/scene.nw"
+#line 2615 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -329,7 +332,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 2630 "paper/scene.nw"
+#line 2633 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -353,14 +356,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 2659 "paper/scene.nw"
+#line 2662 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 2653 "paper/scene.nw"
+#line 2656 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include "scene.h"
 
-#line 479 "paper/scene.nw"
+#line 482 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
 typedef const char *Scene_default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -56,7 +56,7 @@ int scene_section_known(const char *sec);
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Scene_key *k, const char *w);
-#line 752 "paper/scene.nw"
+#line 755 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,
                "a scene's values fit the loader");
@@ -67,7 +67,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Scene_entry;
-#line 769 "paper/scene.nw"
+#line 772 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -81,13 +81,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Scene_entry last;      /* the value converted last: a check blames it */
 } Scene_loader;
-#line 823 "paper/scene.nw"
+#line 826 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 807 "paper/scene.nw"
+#line 810 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 PRINTF_LIKE(2, 3) int scene_fail(Scene_loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
@@ -98,7 +98,7 @@ PRINTF_LIKE(2, 3) int scene_blame(Scene_loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size);
-#line 926 "paper/scene.nw"
+#line 929 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key);
 /* the table = the entries of the scene file L->path */
@@ -109,7 +109,7 @@ int scene_apply_override(Scene_loader *L, const char *o);
 int scene_for_memory(Scene_loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1305 "paper/scene.nw"
+#line 1308 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
@@ -123,10 +123,10 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1790 "paper/scene.nw"
+#line 1793 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s);
-#line 1548 "paper/scene.nw"
+#line 1551 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s);
 #line 328 "paper/scene.nw"

@@ -1,11 +1,11 @@
-#line 2674 "paper/scene.nw"
+#line 2677 "paper/scene.nw"
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
 
-#line 2689 "paper/scene.nw"
+#line 2692 "paper/scene.nw"
 /* buf = the value of k in s, as a scene writes it */
 static const char *scene_value(const Scene *s, const Scene_key *k, char *buf,
                                size_t size)
@@ -21,7 +21,7 @@ static const char *scene_value(const Scene *s, const Scene_key *k, char *buf,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 2712 "paper/scene.nw"
+#line 2715 "paper/scene.nw"
 int scene_write(const Scene *s, FILE *f, Status *st)
 {
   char buf[64], sel[64];

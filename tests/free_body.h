@@ -12,7 +12,7 @@ static Problem free_body(int N, int M, int R, Problem_plane_model model)
   Problem p;
   memset(&p, 0, sizeof p);
   p.a = 0; p.b = 4; p.gamma = 1; p.N = N; p.M = M; p.R = R;
-  p.C0 = 0.05; p.C0prime = 0.25; p.young = 2.15e11; p.nu = 0.29; p.model = model;
+  p.C0 = 0.05; p.C0prime = 0.25; p.material.young = 2.15e11; p.material.nu = 0.29; p.model = model;
   return p;                          /* every side free: all DOFs unknowns */
 }
 

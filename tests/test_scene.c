@@ -38,7 +38,7 @@ static void test_example_5_1(void)
   check(s.problem.N == 16 && s.problem.C0 == 0.05 && s.problem.C1 == 0.025 && s.problem.C2 == 3.91,
         "5.1: N = 16, C0 = 0.05, C1 = 0.025, C2 = 3.91");
   check(s.problem.M == 1 && s.problem.R == 3 && s.problem.C0prime == 0.25, "5.1: M = 1, R = 3, C0' = 0.25");
-  check(s.problem.young == 2.15e11 && s.problem.nu == 0.29 && s.problem.model == MODEL_PLANE_STRESS,
+  check(s.problem.material.young == 2.15e11 && s.problem.material.nu == 0.29 && s.problem.model == MODEL_PLANE_STRESS,
         "5.1: E = 2.15e11, nu = 0.29, plane stress");
   check(s.problem.side[SIDE_LEFT].kind == BC_CLAMPED
         && s.problem.side[SIDE_RIGHT].kind == BC_ROLLER, "5.1: left clamped, right roller");

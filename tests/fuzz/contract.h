@@ -21,8 +21,8 @@ static void check_contract(int rc, const Scene *s, const Status *st,
         || !(72.0 * s->problem.N * ((double)s->problem.M + s->problem.R) <= INT_MAX)
         || !(s->problem.a < s->problem.b) || !isfinite(s->problem.gamma * (s->problem.b - s->problem.a))
         || !(s->problem.C0 > 0) || !(s->problem.C1 >= 0) || !(s->problem.C2 > 0) || !(s->problem.C0 < s->problem.C0prime)
-        || !(s->problem.C0prime < s->problem.gamma) || !(s->problem.young > 0) || !(s->problem.nu > -1)
-        || !(s->problem.nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
+        || !(s->problem.C0prime < s->problem.gamma) || !(s->problem.material.young > 0) || !(s->problem.material.nu > -1)
+        || !(s->problem.material.nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
         || s->solver.max_iter < 1 || !(s->solver.omega > 0 && s->solver.omega < 2)
         || !(s->optimizer.tol > 0 && s->optimizer.tol < 1) || s->optimizer.max_iter < 1
         || strcmp(s->path, path) != 0)
