@@ -1,8 +1,8 @@
-#line 258 "paper/problem.nw"
+#line 260 "paper/problem.nw"
 #include <stddef.h>
 #include "problem.h"
 
-#line 264 "paper/problem.nw"
+#line 266 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
@@ -24,7 +24,7 @@ const char *problem_contact_name(Problem_contact_law law)
 {
   return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
 }
-#line 290 "paper/problem.nw"
+#line 292 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;

@@ -44,11 +44,13 @@ typedef struct {
 } Problem_region;
 typedef struct {
   char geometry[4096];     /* the geometry's absolute path; "": rectangle */
+  int refine;              /* mesh.refine: the geometry's own mesh sizes
+                              are divided by it (N, M are multiplied) */
   int ncurve, nregion;     /* named curves and surfaces given a value */
   Problem_curve curve[PROBLEM_NAMED];
   Problem_region region[PROBLEM_NAMED];
 } Problem_part;
-#line 189 "paper/problem.nw"
+#line 191 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -79,7 +81,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 238 "paper/problem.nw"
+#line 240 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
