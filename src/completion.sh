@@ -40,7 +40,7 @@ echo "_contactopt_keys='$(awk -F '  +' 'NR > 1 { printf "%s%s", (NR > 2 ? " " : 
 echo "_contactopt_values() {"
 echo "  case \$1 in"
 awk -F '  +' 'NR > 1 && $4 ~ /^[a-z_0-9]+(, [a-z_0-9]+)+$/ {
-    v[$4] = v[$4] (v[$4] == "" ? "" : "|") $1 }
+    k = $1; sub(/[.]NAME[.]/, ".*.", k); v[$4] = v[$4] (v[$4] == "" ? "" : "|") k }
   END { for (a in v) { w = a; gsub(/,/, "", w); printf "    %s) echo %s ;;\n", v[a], w } }' \
   "$tmp/keytable" | sort
 echo "  esac; }"

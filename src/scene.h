@@ -10,8 +10,9 @@
 
 typedef struct {
   char path[512];        /* the scene file, as given: every message names it */
-  Problem problem;       /* [geometry] [design] [mesh] [material] [left]
-                            [right] [top] [body_force] [contact] */
+  Problem problem;       /* [geometry] [design] [mesh] [material] [part]
+                            [boundary.NAME] [material.NAME] [left] [right]
+                            [top] [body_force] [contact] */
   char initial[16];      /* design.initial: arc, line, constant or file */
   Design_shape shape;    /* arc, line, constant: the formula of alpha0 */
   char shape_file[4096]; /* file: the shape file's absolute path */

@@ -1,12 +1,14 @@
-#line 1533 "paper/scene.nw"
+#line 1778 "paper/scene.nw"
+#include <errno.h>
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "friction.h"
 #include "scene_private.h"
-#line 1574 "paper/scene.nw"
+#line 1828 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -32,27 +34,76 @@ static const char *outside(double r, char *buf)
   return buf;
 }
 
+/* the modulus E of the material m that the window measures loads by:
+   Young's modulus, or the larger of E1 and E2 */
+static double modulus(const Problem_material *m)
+{
+  return m->kind == MATERIAL_ISOTROPIC ? m->young : fmax(m->E1, m->E2);
+}
+
 /* refuse the load x = the value converted last, times `times`, unless
-   it is 0 or in the window times Young's modulus; what names it in the
+   it is 0 or in the window times the body's modulus; what names it in the
    message */
 static int check_load(Scene_loader *L, const Scene *s, double x, double times,
                       const char *what)
 {
+  double E = modulus(&s->problem.material);
   char r[STATUS_NUMBER];
-  if (x == 0 || in_window(x * times, s->problem.material.young)) return 0;
+  if (x == 0 || in_window(x * times, E)) return 0;
   return scene_blame(L, "%s / E = %s: a load must be 0 or lie within [1e-30, "
                      "1e30] times E, where every product the solvers form is "
-                     "finite", what, outside(fabs(x) * times / s->problem.material.young, r));
+                     "finite", what, outside(fabs(x) * times / E, r));
 }
-#line 1547 "paper/scene.nw"
+#line 1794 "paper/scene.nw"
 static int read_contact(Scene_loader *L, Scene *s);
-#line 1620 "paper/scene.nw"
+#line 1888 "paper/scene.nw"
+/* [part] geometry: a readable file, kept by its absolute path; "": none */
+static int read_part(Scene_loader *L, Scene *s)
+{
+  char path[sizeof s->problem.part.geometry];
+  FILE *f;
+  int e;
+  if (!scene_entry(L, "part", "geometry")) return L->failed;
+  if (!L->last.val[0]) return 0;
+  if (scene_resolve(s->path, L->last.val, path, sizeof path))
+    return scene_blame(L, "path longer than %d characters", (int)sizeof path - 1);
+  errno = 0;
+  if ((f = fopen(path, "r"))) {
+    (void)getc(f);                  /* a folder opens, and fails to read */
+    e = ferror(f) ? errno : 0;
+    fclose(f);
+  } else e = errno ? errno : EIO;
+  if (e) {
+    scene_blame(L, "cannot read the geometry file %s: %s", path, strerror(e));
+    return scene_for_memory(L, e);
+  }
+  if (scene_absolute(path, s->problem.part.geometry,
+                     sizeof s->problem.part.geometry))
+    return scene_blame(L, "cannot make %s an absolute path", path);
+  return 0;
+}
+#line 1921 "paper/scene.nw"
+/* with a part: refuse any key of the rectangle in sec */
+static int refuse_rectangle(Scene_loader *L, const Scene *s, const char *sec)
+{
+  int i;
+  if (!s->problem.part.geometry[0]) return 0;
+  for (i = 0; i < L->n; i++)
+    if (strcmp(L->e[i].sec, sec) == 0
+        && scene_key_find(L->e[i].sec, L->e[i].key)->rectangle)
+      return scene_bad(L, &L->e[i], "has no effect with part.geometry: the "
+                       "part above the strip is the geometry's, not the "
+                       "rectangle's");
+  return 0;
+}
+#line 1943 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Scene_loader *L, Scene *s)
 {
   char w[STATUS_NUMBER];
   int rc;
-  if ((rc = scene_get(L, s, "geometry", "a"))
+  if ((rc = refuse_rectangle(L, s, "geometry"))
+      || (rc = scene_get(L, s, "geometry", "a"))
       || (rc = scene_get(L, s, "geometry", "b")))
     return rc;
   if (!(s->problem.b > s->problem.a))
@@ -64,12 +115,13 @@ static int read_geometry(Scene_loader *L, Scene *s)
     return scene_blame(L, "the width b - a = %s must lie in [1e-30, 1e30], where "
                        "every product the solvers form is finite",
                        outside(s->problem.b - s->problem.a, w));
+  if (s->problem.part.geometry[0]) return 0;   /* gamma: with the mesh */
   if ((rc = scene_get(L, s, "geometry", "gamma"))) return rc;
   if (!isfinite(s->problem.gamma * (s->problem.b - s->problem.a)))
     return scene_blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 1652 "paper/scene.nw"
+#line 1977 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Scene_loader *L, Scene *s)
 {
@@ -87,24 +139,28 @@ static int read_design(Scene_loader *L, Scene *s)
     return scene_blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 1681 "paper/scene.nw"
+#line 2013 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Scene_loader *L, Scene *s)
 {
   char v[STATUS_NUMBER];
   int rc, k;
-  if ((rc = scene_get(L, s, "mesh", "M"))) return rc;
+  int part = s->problem.part.geometry[0] != '\0';
+  if ((rc = refuse_rectangle(L, s, "mesh"))
+      || (rc = scene_get(L, s, "mesh", "M")))
+    return rc;
   if (s->problem.M < 1)
     return scene_blame(L, "must be >= 1 (moving rows of cells)");
-  if ((rc = scene_get(L, s, "mesh", "R"))) return rc;
-  if (s->problem.R < 1) return scene_blame(L, "must be >= 1 (fixed rows of cells)");
+  if (!part && (rc = scene_get(L, s, "mesh", "R"))) return rc;
+  if (!part && s->problem.R < 1)
+    return scene_blame(L, "must be >= 1 (fixed rows of cells)");
   if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 1719 "paper/scene.nw"
+#line 2060 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
-  return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : "R"),
+  return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : part ? "M" : "R"),
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
                    "mesh.refine = %d the mesh has 2 N (M + R) = %.0f triangles, "
                    "more than INT_MAX / 36 = %d: the stiffness matrix has 36 "
@@ -112,20 +168,25 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    s->problem.N, s->problem.M, s->problem.R, k,
                    2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R),
                    INT_MAX / 36);
-#line 1695 "paper/scene.nw"
+#line 2031 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
+  if (part) s->problem.part.refine = k;
   if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
   if (!(s->problem.C0prime > s->problem.C0))
     return scene_blame(L, "must exceed design.C0 = %s: the moving boundary must "
                        "stay below the fixed part of the mesh",
                        status_number(s->problem.C0, v));
+  if (part) {
+    s->problem.gamma = s->problem.C0prime;
+    return 0;
+  }
   if (!(s->problem.gamma > s->problem.C0prime))
     return scene_bad(L, scene_find(L, "geometry", "gamma"), "must exceed mesh.C0prime "
                      "= %s: the fixed part of the mesh needs a height",
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 1752 "paper/scene.nw"
+#line 2093 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Scene_loader *L, Scene *s)
 {
@@ -134,28 +195,131 @@ static int check_admissible(Scene_loader *L, Scene *s)
   char v[2][STATUS_NUMBER];
   if (S >= -slack && S <= s->problem.C0 * w + slack) return 0;
   return scene_bad(L, scene_find(L, "design", "C2"), "C0, C1, C2 admit no shape: the "
-                   "area under alpha would be S = gamma (b-a) - C2 = %s, outside "
-                   "[0, C0 (b-a)] = [0, %s]", status_number(S, v[0]),
+                   "area under alpha would be S = %s (b-a) - C2 = %s, outside "
+                   "[0, C0 (b-a)] = [0, %s]", s->problem.part.geometry[0]
+                   ? "C0prime" : "gamma", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2120 "paper/scene.nw"
-/* [material]: E > 0, -1 < nu < 1/2, the plane model */
+#line 2468 "paper/scene.nw"
+/* the modulus E = the value converted last: > 0 and in the window; what
+   names it in the message */
+static int check_modulus(Scene_loader *L, double E, const char *what)
+{
+  if (!(E > 0)) return scene_blame(L, "%s must be > 0", what);
+  if (!in_window(E, 1))
+    return scene_blame(L, "%s must lie in [1e-30, 1e30], where every "
+                       "product the solvers form is finite", what);
+  return 0;
+}
+
+/* the isotropic material m of sec: E > 0 in the window, -1 < nu < 1/2 */
+static int read_isotropic(Scene_loader *L, Scene *s, const char *sec,
+                          const Problem_material *m)
+{
+  int rc;
+  if ((rc = scene_get(L, s, sec, "E"))
+      || (rc = check_modulus(L, m->young, "Young's modulus"))
+      || (rc = scene_get(L, s, sec, "nu")))
+    return rc;
+  if (!(m->nu < 0.5))
+    return scene_blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
+                       "where this displacement method locks");
+  if (!(m->nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
+  return 0;
+}
+#line 2503 "paper/scene.nw"
+/* with plane stress: refuse the keys of the third axis in sec */
+static int refuse_third_axis(Scene_loader *L, const char *sec)
+{
+  int i;
+  for (i = 0; i < L->n; i++)
+    if (strcmp(L->e[i].sec, sec) == 0
+        && scene_key_find(L->e[i].sec, L->e[i].key)->strain)
+      return scene_bad(L, &L->e[i], "has no effect with material.model = "
+                       "plane_stress: the stress across the plane is zero");
+  return 0;
+}
+
+/* the orthotropic material m of sec: its moduli > 0 in the window */
+static int read_orthotropic(Scene_loader *L, Scene *s, const char *sec,
+                            const Problem_material *m)
+{
+  int rc;
+  if ((rc = scene_get(L, s, sec, "E1")) || (rc = check_modulus(L, m->E1, "E1"))
+      || (rc = scene_get(L, s, sec, "E2")) || (rc = check_modulus(L, m->E2, "E2"))
+      || (rc = scene_get(L, s, sec, "nu12"))
+      || (rc = scene_get(L, s, sec, "G12"))
+      || (rc = check_modulus(L, m->G12, "G12"))
+      || (rc = scene_get(L, s, sec, "angle")))
+    return rc;
+  if (s->problem.model != MODEL_PLANE_STRAIN) return refuse_third_axis(L, sec);
+  if ((rc = scene_get(L, s, sec, "E3")) || (rc = check_modulus(L, m->E3, "E3"))
+      || (rc = scene_get(L, s, sec, "nu13")) || (rc = scene_get(L, s, sec, "nu23")))
+    return rc;
+  return 0;
+}
+#line 2549 "paper/scene.nw"
+/* NULL, or why m is no elastic material under the plane model: in
+   place of the physics' own fem_material_refusal */
+static const char *material_refusal(const Problem_material *m,
+                                    Problem_plane_model model, char *buf,
+                                    size_t size)
+{
+  double nu21, nu31, nu32;
+  if (m->kind == MATERIAL_ISOTROPIC) return NULL;
+  if (!(m->nu12 * m->nu12 < m->E1 / m->E2))
+    return snprintf(buf, size, "nu12^2 = %.6g is not below E1 / E2 = %.6g: the "
+                    "material's energy would not be positive", m->nu12 * m->nu12,
+                    m->E1 / m->E2), buf;
+  if (model != MODEL_PLANE_STRAIN) return NULL;
+  nu21 = m->nu12 * m->E2 / m->E1;
+  nu31 = m->nu13 * m->E3 / m->E1;
+  nu32 = m->nu23 * m->E3 / m->E2;
+  if (!(m->nu13 * m->nu13 < m->E1 / m->E3))
+    return snprintf(buf, size, "nu13^2 = %.6g is not below E1 / E3 = %.6g: the "
+                    "material's energy would not be positive", m->nu13 * m->nu13,
+                    m->E1 / m->E3), buf;
+  if (!(m->nu23 * m->nu23 < m->E2 / m->E3))
+    return snprintf(buf, size, "nu23^2 = %.6g is not below E2 / E3 = %.6g: the "
+                    "material's energy would not be positive", m->nu23 * m->nu23,
+                    m->E2 / m->E3), buf;
+  if (!(1 - m->nu12 * nu21 - m->nu23 * nu32 - m->nu13 * nu31
+        - 2 * nu21 * nu32 * m->nu13 > 0))
+    return snprintf(buf, size, "1 - nu12 nu21 - nu23 nu32 - nu13 nu31 - 2 nu21 "
+                    "nu32 nu13 is not > 0: the material's energy would not be "
+                    "positive"), buf;
+  return NULL;
+}
+#line 2584 "paper/scene.nw"
+/* [material] or [material.NAME]: the kind, its keys, the material as a
+   whole */
+static int read_material_of(Scene_loader *L, Scene *s, const char *sec,
+                            Problem_material *m)
+{
+  Scene_entry kind;
+  char buf[256];
+  const char *why;
+  int rc;
+  if ((rc = scene_get(L, s, sec, "kind"))) return rc;
+  kind = L->last;
+  if ((rc = scene_refuse_unused(L, sec, "kind",
+                                scene_material_kind_names[m->kind]))
+      || (rc = m->kind == MATERIAL_ISOTROPIC ? read_isotropic(L, s, sec, m)
+                                             : read_orthotropic(L, s, sec, m)))
+    return rc;
+  if ((why = material_refusal(m, s->problem.model, buf, sizeof buf)))
+    return scene_bad(L, &kind, "%s", why);
+  return 0;
+}
+#line 2608 "paper/scene.nw"
+/* [material]: the plane model, then the material of the body */
 static int read_material(Scene_loader *L, Scene *s)
 {
   int rc;
-  if ((rc = scene_get(L, s, "material", "E"))) return rc;
-  if (!(s->problem.material.young > 0)) return scene_blame(L, "Young's modulus must be > 0");
-  if (!in_window(s->problem.material.young, 1))
-    return scene_blame(L, "Young's modulus must lie in [1e-30, 1e30], where every "
-                       "product the solvers form is finite");
-  if ((rc = scene_get(L, s, "material", "nu"))) return rc;
-  if (!(s->problem.material.nu < 0.5))
-    return scene_blame(L, "nu must be < 0.5: 0.5 is the incompressible limit, "
-                       "where this displacement method locks");
-  if (!(s->problem.material.nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
-  return scene_get(L, s, "material", "model");
+  if ((rc = scene_get(L, s, "material", "model"))) return rc;
+  return read_material_of(L, s, "material", &s->problem.material);
 }
-#line 2146 "paper/scene.nw"
+#line 2625 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -164,7 +328,7 @@ static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2168 "paper/scene.nw"
+#line 2647 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -180,7 +344,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2154 "paper/scene.nw"
+#line 2633 "paper/scene.nw"
   if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = scene_get(L, s, sec, "P2"))
@@ -191,7 +355,7 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2187 "paper/scene.nw"
+#line 2669 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -201,16 +365,29 @@ static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
   if ((rc = scene_get(L, s, sec, "bc"))
       || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[*kind])))
     return rc;
+  if (*kind == BC_TRACTION && s->problem.part.geometry[0])
+    return scene_blame(L, "a side of the strip moves with the design over its "
+                       "whole height under part.geometry: load a named curve, "
+                       "[boundary.NAME]");
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2214 "paper/scene.nw"
+#line 2705 "paper/scene.nw"
+/* the number of the named curves of a part whose condition is kind */
+static int curves(const Problem *p, Problem_bc_kind kind)
+{
+  int j, n = 0;
+  for (j = 0; j < p->part.ncurve; j++) n += p->part.curve[j].kind == kind;
+  return n;
+}
+
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Scene_loader *L, Scene *s)
 {
   const Problem *p = &s->problem;
   Friction_hold h = friction_hold(p);
   char sides[96];
-  if (friction_side_holds(p, 0)) return 0;
+  if (friction_side_holds(p, 0) || curves(p, BC_CLAMPED) || curves(p, BC_ROLLER))
+    return 0;
   snprintf(sides, sizeof sides, "left.bc = %s, right.bc = %s, top.bc = %s",
            problem_bc_name(p->side[0].kind), problem_bc_name(p->side[1].kind),
            problem_bc_name(p->side[2].kind));
@@ -218,17 +395,17 @@ static int check_held(Scene_loader *L, Scene *s)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2237 "paper/scene.nw"
+#line 2737 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2228 "paper/scene.nw"
+#line 2728 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2246 "paper/scene.nw"
+#line 2746 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
   return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
                     "onto the foundation (the load that presses it down is %g N/m), "
@@ -244,18 +421,79 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2230 "paper/scene.nw"
+#line 2730 "paper/scene.nw"
 }
-#line 2265 "paper/scene.nw"
-/* the three sides */
+#line 2765 "paper/scene.nw"
+/* the three sides; with a part, the left and right ones, and no top */
 static int read_sides(Scene_loader *L, Scene *s)
 {
   int id, rc;
+  if ((rc = refuse_rectangle(L, s, "top"))) return rc;
   for (id = 0; id < SIDE_COUNT; id++)
-    if ((rc = read_side(L, s, (Problem_side_id)id))) return rc;
+    if ((id != SIDE_TOP || !s->problem.part.geometry[0])
+        && (rc = read_side(L, s, (Problem_side_id)id)))
+      return rc;
   return 0;
 }
-#line 2290 "paper/scene.nw"
+#line 2792 "paper/scene.nw"
+/* [boundary.NAME]: the condition of the curve c */
+static int read_curve(Scene_loader *L, Scene *s, const char *sec,
+                      Problem_curve *c)
+{
+  int rc;
+  if ((rc = scene_get(L, s, sec, "bc"))
+      || (rc = scene_refuse_unused(L, sec, "bc", problem_bc_names[c->kind])))
+    return rc;
+  if (c->kind == BC_TRACTION) {
+    if ((rc = scene_get(L, s, sec, "P1"))
+        || (rc = check_load(L, s, c->P[0], 1, "|P1|"))
+        || (rc = scene_get(L, s, sec, "P2"))
+        || (rc = check_load(L, s, c->P[1], 1, "|P2|")))
+      return rc;
+    if (c->P[0] == 0 && c->P[1] == 0)
+      return scene_bad(L, scene_find(L, sec, "bc"), "the traction (%s.P1, %s.P2) "
+                       "is zero: use bc = free", sec, sec);
+  }
+  if (c->kind == BC_PRESSURE) {
+    if ((rc = scene_get(L, s, sec, "p"))
+        || (rc = check_load(L, s, c->pressure, 1, "|p|")))
+      return rc;
+    if (c->pressure == 0) return scene_blame(L, "a pressure of 0: use bc = free");
+  }
+  return 0;
+}
+
+/* [boundary.NAME] and [material.NAME]: with a part only, each in its slot */
+static int read_named(Scene_loader *L, Scene *s)
+{
+  Problem_part *part = &s->problem.part;
+  const char *sec[PROBLEM_NAMED], *name;
+  int j, n, rc;
+  if (!part->geometry[0]) {
+    for (j = 0; j < L->n; j++)
+      if (scene_named_kind(L->e[j].sec, NULL) >= 0)
+        return scene_bad(L, &L->e[j], "a named section needs part.geometry: "
+                         "the rectangle has no named curves or surfaces");
+    return 0;
+  }
+  n = scene_named_list(L, SCENE_BOUNDARY, sec, PROBLEM_NAMED);
+  for (j = 0; j < n; j++) {
+    scene_named_kind(sec[j], &name);
+    snprintf(part->curve[j].name, sizeof part->curve[j].name, "%s", name);
+    if ((rc = read_curve(L, s, sec[j], &part->curve[j]))) return rc;
+  }
+  part->ncurve = n;
+  n = scene_named_list(L, SCENE_MATERIAL, sec, PROBLEM_NAMED);
+  for (j = 0; j < n; j++) {
+    scene_named_kind(sec[j], &name);
+    snprintf(part->region[j].name, sizeof part->region[j].name, "%s", name);
+    if ((rc = read_material_of(L, s, sec[j], &part->region[j].material)))
+      return rc;
+  }
+  part->nregion = n;
+  return 0;
+}
+#line 2866 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Scene_loader *L, Scene *s)
 {
@@ -270,7 +508,7 @@ static int read_loads(Scene_loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2308 "paper/scene.nw"
+#line 2884 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Scene_loader *L, Scene *s)
 {
@@ -294,7 +532,7 @@ static int read_contact(Scene_loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2340 "paper/scene.nw"
+#line 2916 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Scene_loader *L, Scene *s)
 {
@@ -306,9 +544,10 @@ static int read_solver(Scene_loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 2368 "paper/scene.nw"
+#line 2944 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
-    && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1)))
+    && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1))
+    && !curves(&s->problem, BC_CLAMPED))
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
                      "the sides do not hold in both directions (left.bc = %s, "
                      "right.bc = %s, top.bc = %s): its dual needs the stiffness "
@@ -317,7 +556,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      problem_bc_name(s->problem.side[0].kind),
                      problem_bc_name(s->problem.side[1].kind),
                      problem_bc_name(s->problem.side[2].kind));
-#line 2351 "paper/scene.nw"
+#line 2927 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -328,7 +567,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 2410 "paper/scene.nw"
+#line 2987 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies
    (opt_refusal) */
@@ -375,7 +614,7 @@ static int read_optimizer(Scene_loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 2463 "paper/scene.nw"
+#line 3040 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Scene_loader *L, Scene *s)
 {
@@ -392,13 +631,14 @@ static int read_objective(Scene_loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 2489 "paper/scene.nw"
+#line 3069 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s)
 {
-  static int (*const step[])(Scene_loader *, Scene *) = {read_geometry,
-    read_design, read_mesh, check_admissible, scene_read_initial, read_material,
-    read_sides, read_loads, read_solver, read_objective, read_optimizer};
+  static int (*const step[])(Scene_loader *, Scene *) = {read_part,
+    read_geometry, read_design, read_mesh, check_admissible, scene_read_initial,
+    read_material, read_sides, read_named, read_loads, read_solver,
+    read_objective, read_optimizer};
   size_t i;
   int rc = 0;
   for (i = 0; !rc && i < sizeof step / sizeof step[0]; i++)

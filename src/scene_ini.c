@@ -1,4 +1,4 @@
-#line 909 "paper/scene.nw"
+#line 1064 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -6,10 +6,10 @@
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
-#line 922 "paper/scene.nw"
+#line 1077 "paper/scene.nw"
 static int nul_byte(Scene_loader *L);
 static int long_line(Scene_loader *L, const char *buf, int size);
-#line 946 "paper/scene.nw"
+#line 1106 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
@@ -17,17 +17,36 @@ static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *k
   char where[640], list[256];
   scene_origin(L, L->override, where, sizeof where);
   
-#line 967 "paper/scene.nw"
+#line 1128 "paper/scene.nw"
 if (!*sec)
   return scene_fail(L, "%s: line %d: %s = %s comes before any [section]", where,
                     L->line, key, val);
 if (!scene_section_known(sec))
   return scene_fail(L, "%s: [%s]: unknown section (the sections are %s)", where,
                     sec, scene_key_names(NULL, list, sizeof list));
+if (scene_named_kind(sec, NULL) == SCENE_MATERIAL && strcmp(key, "model") == 0)
+  return scene_fail(L, "%s: %s.%s = %s: the plane model is the whole body's: "
+                    "give it as material.model", where, sec, key, val);
 if (!scene_key_find(sec, key))
   return scene_fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
                     key, val, sec, scene_key_names(sec, list, sizeof list));
-#line 953 "paper/scene.nw"
+#line 1113 "paper/scene.nw"
+  
+#line 1145 "paper/scene.nw"
+{
+  const char *name;
+  const char *named[PROBLEM_NAMED];
+  int kind = scene_named_kind(sec, &name);
+  if (kind >= 0 && !scene_name_ok(name))
+    return scene_fail(L, "%s: %s.%s = %s: [%s]: a NAME is 1 to %d letters, "
+                      "digits or _", where, sec, key, val, sec, PROBLEM_NAME - 1);
+  if (kind >= 0 && scene_slot(L, sec) < 0
+      && scene_named_list(L, kind, named, PROBLEM_NAMED) == PROBLEM_NAMED)
+    return scene_fail(L, "%s: %s.%s = %s: more than %d [%s.NAME] sections",
+                      where, sec, key, val, PROBLEM_NAMED,
+                      scene_named[kind].prefix);
+}
+#line 1114 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return scene_fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                       key, (int)sizeof e->val - 1);
@@ -38,7 +57,7 @@ if (!scene_key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 980 "paper/scene.nw"
+#line 1162 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
 {
@@ -48,7 +67,32 @@ Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 994 "paper/scene.nw"
+#line 1178 "paper/scene.nw"
+/* sec[] = the sections of the named kind in the table, in the order of
+   their first entries; their number (at most max) */
+int scene_named_list(const Scene_loader *L, int kind, const char **sec, int max)
+{
+  int i, j, n = 0;
+  for (i = 0; i < L->n; i++) {
+    if (scene_named_kind(L->e[i].sec, NULL) != kind) continue;
+    for (j = 0; j < n && strcmp(sec[j], L->e[i].sec) != 0; j++) continue;
+    if (j == n && n < max) sec[n++] = L->e[i].sec;
+  }
+  return n;
+}
+
+/* the slot of the named section sec among those of its kind, or -1 */
+int scene_slot(const Scene_loader *L, const char *sec)
+{
+  const char *named[PROBLEM_NAMED];
+  int kind = scene_named_kind(sec, NULL), n, j;
+  if (kind < 0) return -1;
+  n = scene_named_list(L, kind, named, PROBLEM_NAMED);
+  for (j = 0; j < n; j++)
+    if (strcmp(named[j], sec) == 0) return j;
+  return -1;
+}
+#line 1207 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
 {
@@ -59,7 +103,13 @@ static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
   L->e[L->n] = *e;
   return &L->e[L->n++];
 }
-#line 1025 "paper/scene.nw"
+
+/* remove the entry e of the table, keeping the order of the others */
+static void remove_entry(Scene_loader *L, Scene_entry *e)
+{
+  memmove(e, e + 1, (size_t)(L->e + --L->n - e) * sizeof *e);
+}
+#line 1244 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -78,14 +128,14 @@ static char *read_line(char *buf, int size, void *user)
     return NULL;
   return buf;
 }
-#line 1046 "paper/scene.nw"
+#line 1265 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Scene_loader *L)
 {
   return scene_fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
                     "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 1066 "paper/scene.nw"
+#line 1285 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line)
 {
@@ -110,7 +160,7 @@ static int long_line(Scene_loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 1097 "paper/scene.nw"
+#line 1316 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -121,7 +171,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1114 "paper/scene.nw"
+#line 1333 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   scene_fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -129,18 +179,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
              L->line, sec, key);
   return 0;
 }
-#line 1107 "paper/scene.nw"
+#line 1326 "paper/scene.nw"
   
-#line 1125 "paper/scene.nw"
+#line 1344 "paper/scene.nw"
 if ((old = scene_find(L, sec, key))) {
   scene_bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
             old->line);
   return 0;
 }
-#line 1108 "paper/scene.nw"
+#line 1327 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1166 "paper/scene.nw"
+#line 1385 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
 int scene_for_memory(Scene_loader *L, int e)
 {
@@ -149,7 +199,7 @@ int scene_for_memory(Scene_loader *L, int e)
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1139 "paper/scene.nw"
+#line 1358 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 int scene_read_file(Scene_loader *L)
 {
@@ -169,18 +219,18 @@ int scene_read_file(Scene_loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1177 "paper/scene.nw"
+#line 1396 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   scene_fail(L, "%s: line %d: syntax error: expected [section], key = value, "
              "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1158 "paper/scene.nw"
+#line 1377 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1199 "paper/scene.nw"
+#line 1419 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -191,35 +241,52 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1216 "paper/scene.nw"
+#line 1439 "paper/scene.nw"
+/* whether the override e switches off the entry x */
+static int switched_off(const Scene_entry *e, const Scene_entry *x)
+{
+  const char *xs = scene_table_section(x->sec);
+  const Scene_key *k = scene_key_find(x->sec, x->key);
+  if (strcmp(e->sec, "material") == 0 && strcmp(e->key, "model") == 0)
+    return k->strain && strcmp(e->val, "plane_strain") != 0;
+  if (strcmp(e->sec, "part") != 0 || strcmp(e->key, "geometry") != 0) return 0;
+  if (*e->val) return k->rectangle;
+  return strcmp(xs, x->sec) != 0;     /* a named section */
+}
+
 /* e overrides a selector: drop the file's keys meaningless with its word */
 static void drop_unused(Scene_loader *L, const Scene_entry *e)
 {
   const Scene_key *sel = scene_key_find(e->sec, e->key);
   const char *w = *e->val ? e->val : sel->dflt;
+  const char *sec = scene_table_section(e->sec);
   Scene_entry *old;
   int i;
   for (i = 0; w && i < SCENE_NKEYS; i++)
-    if (scene_keys[i].selector && strcmp(scene_keys[i].sec, e->sec) == 0
+    if (scene_keys[i].selector && strcmp(scene_keys[i].sec, sec) == 0
         && strcmp(scene_keys[i].selector, e->key) == 0
         && !scene_key_means(&scene_keys[i], w)
         && (old = scene_find(L, e->sec, scene_keys[i].key)) && !old->override)
-      *old = L->e[--L->n];
+      remove_entry(L, old);
+  for (i = L->n - 1; i >= 0; i--)
+    if (!L->e[i].override && switched_off(e, &L->e[i]))
+      remove_entry(L, &L->e[i]);
 }
-#line 1236 "paper/scene.nw"
+#line 1475 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 int scene_apply_override(Scene_loader *L, const char *o)
 {
-  char *copy, *eq, *dot, *sec = NULL, *key = NULL, *val = NULL;
+  char *copy, *eq, *dot = NULL, *p, *sec = NULL, *key = NULL, *val = NULL;
   Scene_entry e, *old;
   L->override = o;
   if (!(copy = malloc(strlen(o) + 1)))
     return L->failed = status_set(L->st, STATUS_MEMORY, "out of memory");
   strcpy(copy, o);
   eq = strchr(copy, '=');
-  dot = strchr(copy, '.');
+  for (p = copy; eq && p < eq; p++)
+    if (*p == '.') dot = p;
   
-#line 1261 "paper/scene.nw"
+#line 1501 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -231,13 +298,13 @@ if (!sec || !*sec || !*key)
              L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1248 "paper/scene.nw"
+#line 1488 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);
   if ((old = scene_find(L, e.sec, e.key))) {
     if (*e.val) *old = e;
-    else *old = L->e[--L->n];          /* unset: the last entry fills the gap */
+    else remove_entry(L, old);         /* unset */
   } else if (*e.val) add(L, &e);
   return L->failed;
 }

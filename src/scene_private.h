@@ -1,4 +1,4 @@
-#line 309 "paper/scene.nw"
+#line 310 "paper/scene.nw"
 #ifndef CONTACTOPT_SCENE_PRIVATE_H
 #define CONTACTOPT_SCENE_PRIVATE_H
 /* The scene module's own header: the files scene*.c include it, no other
@@ -8,12 +8,11 @@
 #include <stdio.h>
 #include "scene.h"
 
-#line 482 "paper/scene.nw"
+#line 558 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
 typedef const char *Scene_default_of(const char *key, int k, char *buf,
                                size_t size);
 #define AT(field) ((long)offsetof(Scene, field))
-#define AT_DEFAULT (-1L)  /* no field: written as its default */
 
 typedef struct {
   const char *sec, *key;     /* the section and the key */
@@ -28,21 +27,40 @@ typedef struct {
                                 blank-separated (NULL: all of them) */
   const char *accepted;      /* the values accepted (NULL: the words) */
   const char *meaning;       /* one line */
+  int strain;                /* means something in plane strain only */
+  int rectangle;             /* a key of the rectangle: none with a part */
+  int quiet;                 /* written only where it is not its default */
 } Scene_key;
 
 _Static_assert(sizeof(Problem_plane_model) == sizeof(int)
                && sizeof(Problem_bc_kind) == sizeof(int)
                && sizeof(Problem_contact_law) == sizeof(int)
+               && sizeof(Problem_material_kind) == sizeof(int)
                && sizeof(Qp_method) == sizeof(int)
                && sizeof(Opt_method) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int)
                && sizeof(Objective_kind) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 352 "paper/scene.nw"
-enum { SCENE_NKEYS = 55 };  /* the records of the table of keys */
+#line 353 "paper/scene.nw"
+enum { SCENE_NKEYS = 80 };  /* the records of the table of keys */
 extern const char *const scene_side_names[];    /* left, right, top */
 extern const char *const scene_initial_names[]; /* arc, line, constant, file */
+extern const char *const scene_material_kind_names[]; /* isotropic, ... */
 extern const Scene_key scene_keys[SCENE_NKEYS]; /* the table of keys */
+/* the named sections: [boundary.NAME], [material.NAME] */
+enum { SCENE_BOUNDARY, SCENE_MATERIAL, SCENE_NAMED_KINDS };
+typedef struct {
+  const char *prefix;  /* boundary, material */
+  const char *table;   /* the section of their records: boundary.NAME */
+  size_t stride;       /* the bytes from one slot of problem.part to the next */
+} Scene_named;
+extern const Scene_named scene_named[SCENE_NAMED_KINDS];
+/* the kind of the named section sec, or -1; *name = its NAME */
+int scene_named_kind(const char *sec, const char **name);
+/* whether name is a NAME: [A-Za-z0-9_]+, shorter than PROBLEM_NAME */
+int scene_name_ok(const char *name);
+/* the section of the table that holds the keys of sec: sec, or PREFIX.NAME */
+const char *scene_table_section(const char *sec);
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w);
 /* buf = the names, comma-separated (cut to size) */
@@ -56,18 +74,19 @@ int scene_section_known(const char *sec);
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Scene_key *k, const char *w);
-#line 755 "paper/scene.nw"
-enum { ENTRY_VALUE = 256, TABLE_MAX = 64 };
+#line 909 "paper/scene.nw"
+enum { ENTRY_VALUE = 256, NAMED_KEYS = 15,
+       TABLE_MAX = SCENE_NKEYS - NAMED_KEYS + PROBLEM_NAMED * NAMED_KEYS };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,
                "a scene's values fit the loader");
 
 typedef struct {
-  char sec[16], key[16];  /* a section and a key of the table of keys */
+  char sec[PROBLEM_NAME + 16], key[16]; /* a section and a key of the table */
   char val[ENTRY_VALUE];  /* the value, without blanks around or comment */
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Scene_entry;
-#line 772 "paper/scene.nw"
+#line 927 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -81,13 +100,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Scene_entry last;      /* the value converted last: a check blames it */
 } Scene_loader;
-#line 826 "paper/scene.nw"
+#line 981 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 810 "paper/scene.nw"
+#line 965 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 PRINTF_LIKE(2, 3) int scene_fail(Scene_loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
@@ -98,9 +117,14 @@ PRINTF_LIKE(2, 3) int scene_blame(Scene_loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size);
-#line 929 "paper/scene.nw"
+#line 1084 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key);
+/* sec[] = the sections of the named kind in the table, in the order of
+   their first entries; their number (at most max) */
+int scene_named_list(const Scene_loader *L, int kind, const char **sec, int max);
+/* the slot of the named section sec among those of its kind, or -1 */
+int scene_slot(const Scene_loader *L, const char *sec);
 /* the table = the entries of the scene file L->path */
 int scene_read_file(Scene_loader *L);
 /* apply the override o = "section.key=value" onto the table */
@@ -109,7 +133,7 @@ int scene_apply_override(Scene_loader *L, const char *o);
 int scene_for_memory(Scene_loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1308 "paper/scene.nw"
+#line 1548 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
@@ -123,11 +147,15 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 1793 "paper/scene.nw"
+#line 2136 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s);
-#line 1551 "paper/scene.nw"
+/* buf = file, relative to the directory of the scene file; 0 if it fits */
+int scene_resolve(const char *scene, const char *file, char *buf, size_t size);
+/* buf = path, absolute; 0 if it fits */
+int scene_absolute(const char *path, char *buf, size_t size);
+#line 1798 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s);
-#line 328 "paper/scene.nw"
+#line 329 "paper/scene.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 1294 "paper/scene.nw"
+#line 1534 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 #include "scene_private.h"
-#line 1324 "paper/scene.nw"
+#line 1564 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -47,7 +47,7 @@ const char *scene_to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1367 "paper/scene.nw"
+#line 1607 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -60,7 +60,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1383 "paper/scene.nw"
+#line 1623 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -71,7 +71,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1403 "paper/scene.nw"
+#line 1643 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf,
@@ -86,7 +86,7 @@ static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf
   w = scene_name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1420 "paper/scene.nw"
+#line 1660 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key)
 {
@@ -105,7 +105,7 @@ const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key
   }
   return &L->last;
 }
-#line 1442 "paper/scene.nw"
+#line 1682 "paper/scene.nw"
 /* x = the number sec.key */
 static int scene_real(Scene_loader *L, const char *sec, const char *key, double *x)
 {
@@ -115,7 +115,7 @@ static int scene_real(Scene_loader *L, const char *sec, const char *key, double 
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1454 "paper/scene.nw"
+#line 1694 "paper/scene.nw"
 /* k = the integer sec.key */
 int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
 {
@@ -125,7 +125,7 @@ int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1466 "paper/scene.nw"
+#line 1706 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
 {
@@ -136,14 +136,16 @@ int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
   return scene_blame(L, "unknown value (accepted: %s)",
                      scene_name_list(names, list, sizeof list));
 }
-#line 1489 "paper/scene.nw"
+#line 1731 "paper/scene.nw"
 /* the field of s that sec.key's record names = the value of sec.key */
 int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
 {
   const Scene_key *k = scene_key_find(sec, key);
+  int slot = scene_slot(L, sec);
   char *at = (char *)s + k->at;
   double x;
   int v, rc;
+  if (slot > 0) at += (size_t)slot * scene_named[scene_named_kind(sec, NULL)].stride;
   if (k->type == KEY_REAL) {
     if (!(rc = scene_real(L, sec, key, &x))) memcpy(at, &x, sizeof x);
   } else if (!(rc = k->type == KEY_INT ? scene_integer(L, sec, key, &v)
@@ -151,15 +153,16 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
     memcpy(at, &v, sizeof v);
   return rc;
 }
-#line 1509 "paper/scene.nw"
+#line 1753 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w)
 {
   const Scene_entry *e;
+  const char *table = scene_table_section(sec);
   int i;
   for (i = 0; i < SCENE_NKEYS; i++)
-    if (scene_keys[i].selector && strcmp(scene_keys[i].sec, sec) == 0
+    if (scene_keys[i].selector && strcmp(scene_keys[i].sec, table) == 0
         && strcmp(scene_keys[i].selector, selector) == 0
         && !scene_key_means(&scene_keys[i], w)
         && (e = scene_find(L, sec, scene_keys[i].key)))

@@ -6,7 +6,10 @@
    selector ("100 (pdas), 100000 (psor, cgssor)") is tried with each word.
    For every key printed as required, the scene without it is refused as
    missing that key.  The base is Example 5.1, with the overrides that make
-   the key mean something (a loaded left side for left.P1, ...).  The names
+   the key mean something (a loaded left side for left.P1, a part for the
+   keys of a named section, an orthotropic material for E1, ...); the
+   default of boundary.NAME.bc, whose section has no other key under it,
+   shows in the refusal of a traction key without it.  The names
    themselves (every key printed is accepted, every key accepted is
    printed) are checked by tests/keys.sh.  Run from the repository root. */
 #include <stdio.h>
@@ -19,11 +22,40 @@
 
 static const char *base = "data/example-5.1.scene";
 static char shape[64];          /* a shape file for design.file */
+static char geo[64];            /* a geometry file for part.geometry */
 
 /* the overrides that make a key mean something in the base, by the first
    prefix of section.key that matches */
 #define NO_ARC "design.arc_x1=", "design.arc_x2=", "design.arc_radius="
-static struct { const char *prefix, *over[8]; } enable[] = {
+/* a part: its geometry (which drops gamma, R and the top), and C2 as the
+   strip's area, C0prime (b - a) - 0.09 */
+#define PART geo, "design.C2=0.91"
+#define ORTHO(sec) sec ".kind=orthotropic", sec ".E1=2e11", sec ".E2=1e11", \
+  sec ".nu12=0.3", sec ".G12=5e10"
+#define THIRD(sec) "material.model=plane_strain", sec ".E3=1e11", \
+  sec ".nu13=0.25", sec ".nu23=0.2"
+#define NAMED(k) "material.NAME." k
+static struct { const char *prefix, *over[16]; } enable[] = {
+  {"boundary.NAME.p", {PART, "boundary.NAME.bc=pressure", "boundary.NAME.p=1e6"}},
+  {"boundary.NAME.", {PART, "boundary.NAME.bc=traction", "boundary.NAME.P1=1e6",
+                      "boundary.NAME.P2=1e6"}},
+  {NAMED("E3"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("nu13"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("nu23"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("E1"), {PART, ORTHO("material.NAME")}},
+  {NAMED("E2"), {PART, ORTHO("material.NAME")}},
+  {NAMED("nu12"), {PART, ORTHO("material.NAME")}},
+  {NAMED("G12"), {PART, ORTHO("material.NAME")}},
+  {NAMED("angle"), {PART, ORTHO("material.NAME")}},
+  {"material.NAME.", {PART, NAMED("E=1e9"), NAMED("nu=0.3")}},
+  {"material.E3", {ORTHO("material"), THIRD("material")}},
+  {"material.nu13", {ORTHO("material"), THIRD("material")}},
+  {"material.nu23", {ORTHO("material"), THIRD("material")}},
+  {"material.E1", {ORTHO("material")}},
+  {"material.E2", {ORTHO("material")}},
+  {"material.nu12", {ORTHO("material")}},
+  {"material.G12", {ORTHO("material")}},
+  {"material.angle", {ORTHO("material")}},
   {"left.bc", {NULL}},
   {"left.", {"left.bc=traction", "left.from=0.5", "left.to=1",
              "left.P1=1e6", "left.P2=1e6"}},
@@ -50,7 +82,7 @@ static int overrides(const char *name, char **ov, char *const *more)
   int n = 0, j;
   for (i = 0; i < sizeof enable / sizeof enable[0]; i++)
     if (strncmp(name, enable[i].prefix, strlen(enable[i].prefix)) == 0) {
-      for (j = 0; j < 8 && enable[i].over[j]; j++)
+      for (j = 0; j < 16 && enable[i].over[j]; j++)
         ov[n++] = (char *)enable[i].over[j];
       break;
     }
@@ -78,7 +110,7 @@ static int split(char *line, char **field, int max)
    name deleted as with name = value */
 static void same_default(const char *name, const char *value, const char *sel)
 {
-  char del[64], set[96], *ov[24], *more[3] = {NULL, NULL, NULL};
+  char del[64], set[96], *ov[32], *more[3] = {NULL, NULL, NULL};
   Scene a, b;
   Status sa = {STATUS_OK, ""}, sb = {STATUS_OK, ""};
   const char *diff = "";
@@ -119,7 +151,7 @@ static void same_defaults(const char *name, const char *text)
 /* name without a default is refused as missing when not given */
 static void required(const char *name)
 {
-  char del[64], *ov[24], *more[2] = {del, NULL};
+  char del[64], *ov[32], *more[2] = {del, NULL};
   Scene s;
   Status st = {STATUS_OK, ""};
   int rc;
@@ -132,6 +164,31 @@ static void required(const char *name)
   scene_free(&s);
 }
 
+/* boundary.NAME.bc: under its printed default a traction is refused, and
+   bc = the default is that condition, in the part's first slot */
+static void named_bc_default(const char *value)
+{
+  char want[64], set[64], *ov[8] = {PART, "boundary.NAME.P1=1e6"};
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  int rc;
+  snprintf(want, sizeof want, "has no effect with bc = %s", value);
+  rc = scene_load(&s, base, 3, ov, &st);
+  check(rc == STATUS_INPUT && strstr(st.msg, "boundary.NAME.P1") && strstr(st.msg, want),
+        "boundary.NAME.bc: without it, a traction is refused with bc = %s: %s",
+        value, st.msg);
+  scene_free(&s);
+  snprintf(set, sizeof set, "boundary.NAME.bc=%s", value);
+  ov[2] = set;
+  rc = scene_load(&s, base, 3, ov, &st);
+  check(!rc && s.problem.part.ncurve == 1
+        && strcmp(problem_bc_name(s.problem.part.curve[0].kind), value) == 0
+        && strcmp(s.problem.part.curve[0].name, "NAME") == 0,
+        "boundary.NAME.bc = %s fills the part's first curve %s", value,
+        rc ? st.msg : "");
+  scene_free(&s);
+}
+
 int main(void)
 {
   char line[512], *f[5];
@@ -139,7 +196,9 @@ int main(void)
   int n = 0, i;
   FILE *sh;
   snprintf(shape, sizeof shape, "design.file=/tmp/test_scene_keys.%d.dat", (int)getpid());
-  if (!fp || !(sh = fopen(shape + 12, "w"))) {
+  snprintf(geo, sizeof geo, "part.geometry=/tmp/test_scene_keys.%d.geo", (int)getpid());
+  if (!fp || !(sh = fopen(geo + 14, "w")) || fputs("// a part\n", sh) < 0
+      || fclose(sh) || !(sh = fopen(shape + 12, "w"))) {
     perror("test_scene_keys");
     return 1;
   }
@@ -154,12 +213,15 @@ int main(void)
       check(0, "a printed line has five fields: %s", line);
       continue;
     }
-    if (strcmp(f[2], "required") == 0) required(f[0]);
+    if (strcmp(f[0], "boundary.NAME.bc") == 0) named_bc_default(f[2]);
+    else if (strcmp(f[2], "(empty)") == 0) same_default(f[0], "", NULL);
+    else if (strcmp(f[2], "required") == 0) required(f[0]);
     else if (strchr(f[2], '(')) same_defaults(f[0], f[2]);
     else same_default(f[0], f[2], NULL);
   }
-  check(n == 55, "contactopt keys prints %d keys", n);
+  check(n == 80, "contactopt keys prints %d keys", n);
   fclose(fp);
   unlink(shape + 12);
+  unlink(geo + 14);
   return check_done();
 }
