@@ -13,7 +13,7 @@
 #include "scene.h"
 
 static char tmpdir[] = "/tmp/test_scene.XXXXXX";
-static char made[128][256];   /* files written in tmpdir, removed at the end */
+static char made[256][256];   /* files written in tmpdir, removed at the end */
 static int nmade;
 
 /* The base of every bad scene: Example 5.2, one key a line, line numbers
@@ -27,6 +27,23 @@ static const char base[] =
   "[left]\nbc = clamped\n[right]\nbc = roller\n"                  /* 20-23 */
   "[top]\nbc = traction\nfrom = 2\nto = 4\nP2 = -5.75e8\n";       /* 24-28 */
 
+/* A part: the base without the rectangle's keys (gamma, R, the top), C2
+   the strip's area, a geometry file beside it (which the loader only
+   finds: the mesher reads it), three named curves and a named surface,
+   the curves in the order top, bore, seat. */
+static const char part_base[] =
+  "[geometry]\na = 0\nb = 4\n"
+  "[design]\nN = 16\nC0 = 0.05\nC1 = 0.025\nC2 = 0.91\n"
+  "initial = line\nline_start = 0\nline_end = 0.05\n"
+  "[mesh]\nM = 1\nC0prime = 0.25\n"
+  "[material]\nE = 2.15e11\nnu = 0.29\n"
+  "[part]\ngeometry = part.geo\n"
+  "[boundary.top]\nbc = traction\nP2 = -5.75e8\n"
+  "[boundary.bore]\nbc = pressure\np = 1e7\n"
+  "[material.rubber]\nE = 6e6\nnu = 0.45\n"
+  "[boundary.seat]\nbc = clamped\n"
+  "[left]\nbc = clamped\n[right]\nbc = roller\n";
+
 /* write text to tmpdir/name; path = its path */
 static inline void write_file(const char *name, const char *text, char *path,
                               size_t size)
@@ -37,7 +54,7 @@ static inline void write_file(const char *name, const char *text, char *path,
     fprintf(stderr, "test_scene: cannot write %s\n", path);
     exit(1);
   }
-  if (nmade < 128) snprintf(made[nmade++], sizeof made[0], "%s", path);
+  if (nmade < 256) snprintf(made[nmade++], sizeof made[0], "%s", path);
 }
 
 /* write the n bytes of data (NUL bytes too) to tmpdir/name; path = it */
@@ -50,7 +67,7 @@ static inline void write_bytes(const char *name, const char *data, size_t n,
     fprintf(stderr, "test_scene: cannot write %s\n", path);
     exit(1);
   }
-  if (nmade < 128) snprintf(made[nmade++], sizeof made[0], "%s", path);
+  if (nmade < 256) snprintf(made[nmade++], sizeof made[0], "%s", path);
 }
 
 /* out = base with its first `old` replaced by `with`; 0 if old not found */
@@ -104,6 +121,28 @@ static inline void shape_scene(const char *name, const char *text, char *scene,
        with);
   snprintf(own, sizeof own, "%.60s.scene", name);
   write_file(own, body, scene, size);
+}
+
+/* write tmpdir/part.geo and tmpdir/name: the part's scene with its first
+   old replaced by with (old NULL: as it is), then more; path = the scene */
+static inline void part_scene(const char *name, const char *old,
+                              const char *with, const char *more, char *path,
+                              size_t size)
+{
+  char text[8192], geo[256];
+  const char *at = old ? strstr(part_base, old) : NULL;
+  if (old && !at) {
+    fprintf(stderr, "test_scene: %s: the edit does not apply\n", name);
+    exit(1);
+  }
+  if (at)
+    snprintf(text, sizeof text, "%.*s%s%s%s", (int)(at - part_base), part_base,
+             with, at + strlen(old), more ? more : "");
+  else snprintf(text, sizeof text, "%s%s", part_base, more ? more : "");
+  static int geo_made;
+  if (!geo_made++)
+    write_file("part.geo", "// the part: read by the mesher\n", geo, sizeof geo);
+  write_file(name, text, path, size);
 }
 
 /* make the temporary folder; 0 if it cannot be made */

@@ -341,9 +341,108 @@ static void test_held_by_friction(void)
               "no effect with model = tresca");
 }
 
+/* a part: its geometry found beside the scene and kept absolute, no
+   rows R, gamma = C0prime, its curves and surfaces in their slots in the
+   order the file names them, refine kept for the mesher */
+static void test_part(void)
+{
+  char path[256], geo[300], *ov[] = {"mesh.refine=2", "boundary.bore.bc=clamped",
+    "material.rubber.E=7e6", "boundary.top.bc=", "boundary.top.P2=",
+    "boundary.new.bc=roller"};
+  const Problem_part *part;
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  part_scene("part.scene", NULL, NULL, NULL, path, sizeof path);
+  snprintf(geo, sizeof geo, "%s/part.geo", tmpdir);
+  if (!check(scene_load(&s, path, 1, ov, &st) == 0, "a part loads: %s", st.msg))
+    return;
+  part = &s.problem.part;
+  check(strcmp(part->geometry, geo) == 0 && part->geometry[0] == '/',
+        "part: the geometry is the file beside the scene, absolute: %s",
+        part->geometry);
+  check(s.problem.N == 32 && s.problem.M == 2 && s.problem.R == 0
+        && part->refine == 2 && s.problem.gamma == s.problem.C0prime,
+        "part, refined twice: N = 32, M = 2, R = 0, part.refine = 2, gamma = "
+        "C0prime (%d %d %d %d %g)", s.problem.N, s.problem.M, s.problem.R,
+        part->refine, s.problem.gamma);
+  check(part->ncurve == 3 && strcmp(part->curve[0].name, "top") == 0
+        && strcmp(part->curve[1].name, "bore") == 0
+        && strcmp(part->curve[2].name, "seat") == 0
+        && part->curve[0].kind == BC_TRACTION && part->curve[0].P[0] == 0
+        && part->curve[0].P[1] == -5.75e8 && part->curve[1].kind == BC_PRESSURE
+        && part->curve[1].pressure == 1e7 && part->curve[2].kind == BC_CLAMPED,
+        "part: the curves top (traction), bore (pressure), seat (clamped), "
+        "in the file's order");
+  check(part->nregion == 1 && strcmp(part->region[0].name, "rubber") == 0
+        && part->region[0].material.kind == MATERIAL_ISOTROPIC
+        && part->region[0].material.young == 6e6
+        && part->region[0].material.nu == 0.45
+        && s.problem.material.young == 2.15e11,
+        "part: the surface rubber, E = 6e6, nu = 0.45; the body's E = 2.15e11");
+  check(s.problem.side[SIDE_TOP].kind == BC_FREE && s.problem.side[SIDE_LEFT].kind
+        == BC_CLAMPED, "part: no top side, the strip's left side clamped");
+  scene_free(&s);
+  if (check(scene_load(&s, path, 6, ov, &st) == 0, "a part with overrides "
+            "of named keys loads: %s", st.msg)) {
+    check(part->ncurve == 3 && strcmp(part->curve[0].name, "bore") == 0
+          && part->curve[0].kind == BC_CLAMPED && part->curve[0].pressure == 0
+          && strcmp(part->curve[1].name, "seat") == 0
+          && strcmp(part->curve[2].name, "new") == 0
+          && part->curve[2].kind == BC_ROLLER
+          && part->region[0].material.young == 7e6,
+          "-s boundary.bore.bc=clamped drops the file's p; deleting top's keys "
+          "removes its slot; -s boundary.new.bc=roller adds one; "
+          "-s material.rubber.E=7e6");
+    scene_free(&s);
+  }
+}
+
+/* an orthotropic body: its keys, the third axis in plane strain only, and
+   the switch of the plane model; -s part.geometry on a rectangle drops
+   the rectangle's keys */
+static void test_orthotropic(void)
+{
+  char path[256], *ov[] = {"material.model=plane_stress"},
+    *ov2[] = {"part.geometry=part.geo", "design.C2=0.91"};
+  const Problem_material *m;
+  Scene s;
+  Status st = {STATUS_OK, ""};
+  part_scene("ortho.scene", "[material]\nE = 2.15e11\nnu = 0.29\n",
+             "[material]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\nnu12 = 0.3\n"
+             "G12 = 5e10\nangle = 30\nmodel = plane_strain\nE3 = 1.5e11\n"
+             "nu13 = 0.25\nnu23 = 0.2\n", NULL, path, sizeof path);
+  if (!check(scene_load(&s, path, 0, NULL, &st) == 0, "an orthotropic part "
+             "in plane strain loads: %s", st.msg))
+    return;
+  m = &s.problem.material;
+  check(m->kind == MATERIAL_ORTHOTROPIC && m->E1 == 2e11 && m->E2 == 1e11
+        && m->nu12 == 0.3 && m->G12 == 5e10 && m->angle == 30 && m->E3 == 1.5e11
+        && m->nu13 == 0.25 && m->nu23 == 0.2 && m->young == 0
+        && s.problem.model == MODEL_PLANE_STRAIN,
+        "orthotropic: E1, E2, nu12, G12, angle, E3, nu13, nu23 in their fields");
+  scene_free(&s);
+  if (check(scene_load(&s, path, 1, ov, &st) == 0, "-s material.model="
+            "plane_stress drops the file's third axis: %s", st.msg)) {
+    check(m->E3 == 0 && m->nu13 == 0 && m->nu23 == 0 && m->E1 == 2e11,
+          "plane stress: no third axis");
+    scene_free(&s);
+  }
+  write_file("rect.scene", base, path, sizeof path);
+  if (check(scene_load(&s, path, 2, ov2, &st) == 0, "-s part.geometry on the "
+            "rectangle drops its gamma, R and top: %s", st.msg)) {
+    check(s.problem.R == 0 && s.problem.gamma == 0.25
+          && s.problem.part.geometry[0] == '/'
+          && s.problem.side[SIDE_TOP].kind == BC_FREE,
+          "the rectangle made a part by one override: R = 0, gamma = C0prime");
+    scene_free(&s);
+  }
+}
+
 int main(void)
 {
   if (!scene_files_begin()) return 1;
+  test_part();
+  test_orthotropic();
   test_example_5_1();
   test_example_5_2();
   test_overrides();

@@ -370,9 +370,164 @@ static void test_file_and_override_errors(void)
   test_long_path();
 }
 
+/* the part's scene edited (its first old replaced by with, then more),
+   then loaded with the overrides: expect an error */
+static void expect_part(const char *what, const char *old, const char *with,
+                        const char *more, int nov, char **ov, const char *key,
+                        const char *word)
+{
+  char path[256], name[64];
+  snprintf(name, sizeof name, "part%02d.scene", nmade);
+  part_scene(name, old, with, more, path, sizeof path);
+  expect(what, path, nov, ov, key, word);
+}
+
+/* a part and its named sections: the names, what means nothing with a
+   part or without one, the loads of a curve, the materials */
+static void test_part_errors(void)
+{
+  static const char *const pressure = "bc = pressure\np = 1e7\n";
+  static const char *const rubber = "[material.rubber]\nE = 6e6\n";
+  static const char *const ortho = "[material]\nkind = orthotropic\nE1 = 2e11\n"
+    "E2 = 1e11\nnu12 = 0.3\nG12 = 5e10\n";
+  char text[8192], many[4096], path[256], *ov[2];
+  int i, n = 0;
+  snprintf(text, sizeof text, "%s[boundary.bore]\nbc = clamped\n", base);
+  write_file("named.scene", text, path, sizeof path);
+  expect("a named section without part.geometry", path, 0, NULL,
+         "boundary.bore.bc", "a named section needs part.geometry");
+  ov[0] = "material.rubber.E=6e6";
+  expect("a named material by -s without part.geometry", path, 1, ov,
+         "boundary.bore.bc", "needs part.geometry");
+  expect_part("a NAME with a '-'", "[boundary.bore]", "[boundary.bo-re]", NULL,
+              0, NULL, "boundary.bo-re.bc", "a NAME is 1 to 40 letters, digits or _");
+  snprintf(text, sizeof text, "[boundary.%041d]\nbc = clamped\n", 0);
+  expect_part("a section name of 50 characters, which inih would cut", NULL, NULL,
+              text, 0, NULL, "[boundary.0000", "a section name is at most 49 characters");
+  snprintf(text, sizeof text, "boundary.%041d.bc=clamped", 0);
+  ov[0] = text;
+  expect_part("a NAME of 41 characters by -s", NULL, NULL, NULL, 1, ov,
+              "boundary.0000", "a NAME is 1 to 40");
+  snprintf(text, sizeof text, "[boundary.%040d]\nbc = clamped\n", 0);
+  part_scene("name40.scene", NULL, NULL, text, path, sizeof path);
+  {
+    Scene s;
+    Status st = {STATUS_OK, ""};
+    check(scene_load(&s, path, 0, NULL, &st) == 0 && s.problem.part.ncurve == 4
+          && strlen(s.problem.part.curve[3].name) == 40,
+          "a NAME of 40 characters is kept whole: %s", st.msg);
+    scene_free(&s);
+  }
+  expect_part("an empty NAME", "[boundary.seat]", "[boundary.]", NULL, 0, NULL,
+              "boundary..bc", "a NAME is");
+  ov[0] = "boundary.bo-re.bc=clamped";
+  expect_part("a bad NAME by -s", NULL, NULL, NULL, 1, ov, "boundary.bo-re.bc",
+              "a NAME is");
+  expect_part("a duplicate key in a named section", "bc = clamped\n[left]",
+              "bc = clamped\nbc = free\n[left]", NULL, 0, NULL, "boundary.seat.bc",
+              "duplicate key");
+  for (i = 0; i < 30; i++)       /* with top, bore, seat: 33 names */
+    n += snprintf(many + n, sizeof many - n, "[boundary.c%d]\nbc = free\n", i);
+  expect_part("33 named curves", NULL, NULL, many, 0, NULL, "boundary.c29.bc",
+              "more than 32 [boundary.NAME] sections");
+  expect_part("a traction of zero on a curve", "P2 = -5.75e8", "P2 = 0", NULL, 0,
+              NULL, "boundary.top.bc", "is zero: use bc = free");
+  expect_part("a pressure of zero", "p = 1e7", "p = 0", NULL, 0, NULL,
+              "boundary.bore.p", "a pressure of 0");
+  expect_part("a pressure too small for E", "p = 1e7", "p = 1e-25", NULL, 0,
+              NULL, "boundary.bore.p", "a load must be 0 or lie within");
+  expect_part("a pressure without p", pressure, "bc = pressure\n", NULL, 0,
+              NULL, "boundary.bore.p", "missing required key");
+  expect_part("a traction key on a pressure curve", pressure,
+              "bc = pressure\np = 1e7\nP1 = 1e6\n", NULL, 0, NULL,
+              "boundary.bore.P1", "has no effect with bc = pressure");
+  expect_part("a curve's unknown condition", pressure, "bc = glued\n", NULL, 0,
+              NULL, "boundary.bore.bc", "unknown value");
+  expect_part("an orthotropic key in an isotropic material", rubber,
+              "[material.rubber]\nE = 6e6\nE1 = 1e9\n", NULL, 0, NULL,
+              "material.rubber.E1", "has no effect with kind = isotropic");
+  expect_part("an isotropic key in an orthotropic material", "[material]\n",
+              "[material]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\nnu12 = 0.3\n"
+              "G12 = 5e10\n", NULL, 0, NULL, "material.E",
+              "has no effect with kind = orthotropic");
+  expect_part("model in a named material", rubber,
+              "[material.rubber]\nE = 6e6\nmodel = plane_strain\n", NULL, 0, NULL,
+              "material.rubber.model", "the plane model is the whole body's");
+  ov[0] = "material.rubber.model=plane_strain";
+  expect_part("model in a named material by -s", NULL, NULL, NULL, 1, ov,
+              "material.rubber.model", "whole body's");
+  expect_part("a named material without nu", "E = 6e6\nnu = 0.45\n", "E = 6e6\n",
+              NULL, 0, NULL, "material.rubber.nu", "missing required key");
+  expect_part("the geometry file missing", "geometry = part.geo",
+              "geometry = nosuch.geo", NULL, 0, NULL, "part.geometry",
+              "cannot read the geometry file");
+  expect_part("the geometry a folder", "geometry = part.geo", "geometry = .",
+              NULL, 0, NULL, "part.geometry", "Is a directory");
+  expect_part("gamma with a part", "b = 4\n", "b = 4\ngamma = 1\n", NULL, 0, NULL,
+              "geometry.gamma", "has no effect with part.geometry");
+  expect_part("R with a part", "M = 1\n", "M = 1\nR = 3\n", NULL, 0, NULL,
+              "mesh.R", "has no effect with part.geometry");
+  expect_part("the top with a part", NULL, NULL, "[top]\nbc = clamped\n", 0, NULL,
+              "top.bc", "has no effect with part.geometry");
+  expect_part("a loaded strip side with a part", "[right]\nbc = roller",
+              "[right]\nbc = traction\nfrom = 0.1\nto = 0.2\nP1 = 1e6", NULL, 0,
+              NULL, "right.bc", "moves with the design");
+  expect_part("C2 as the rectangle's area with a part", "C2 = 0.91", "C2 = 3.91",
+              NULL, 0, NULL, "design.C2", "S = C0prime (b-a) - C2");
+  /* orthotropic materials */
+  expect_part("E1 = 0", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 0\nE2 = 1e11\nnu12 = 0.3\n"
+              "G12 = 5e10\n", NULL, 0, NULL, "material.E1", "E1 must be > 0");
+  expect_part("G12 beyond the window", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\nnu12 = 0.3\n"
+              "G12 = 5e31\n", NULL, 0, NULL, "material.G12", "must lie in [1e-30, 1e30]");
+  expect_part("nu12^2 not below E1 / E2", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 1e11\nE2 = 2e11\nnu12 = 0.71\n"
+              "G12 = 5e10\n", NULL, 0, NULL, "material.kind = orthotropic",
+              "nu12^2 = 0.5041 is not below E1 / E2 = 0.5");
+  expect_part("the third axis in plane stress", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              ortho, "[material.stiff]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\n"
+              "nu12 = 0.3\nG12 = 5e10\nE3 = 1e11\n", 0, NULL, "material.stiff.E3",
+              "has no effect with material.model = plane_stress");
+  expect_part("no E3 in plane strain", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\nnu12 = 0.3\n"
+              "G12 = 5e10\nmodel = plane_strain\nnu13 = 0.2\nnu23 = 0.2\n", NULL, 0,
+              NULL, "material.E3", "missing required key");
+  /* nu12 = nu13 = nu23 = 0.6, E equal: each ratio below 1, but the
+     determinant 1 - 3 (0.36) - 2 (0.216) < 0 */
+  expect_part("a plane-strain compliance not positive definite",
+              "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 1e11\nE2 = 1e11\nnu12 = 0.6\n"
+              "G12 = 5e10\nmodel = plane_strain\nE3 = 1e11\nnu13 = 0.6\n"
+              "nu23 = 0.6\n", NULL, 0, NULL, "material.kind", "nu32 nu13 is not > 0");
+  expect_part("nu13^2 not below E1 / E3", "[material]\nE = 2.15e11\nnu = 0.29\n",
+              "[material]\nkind = orthotropic\nE1 = 1e11\nE2 = 1e11\nnu12 = 0.3\n"
+              "G12 = 5e10\nmodel = plane_strain\nE3 = 4e11\nnu13 = 0.5\n"
+              "nu23 = 0.2\n", NULL, 0, NULL, "material.kind", "nu13^2 = 0.25 is not "
+              "below E1 / E3 = 0.25");
+  /* the window of loads measured by E = max(E1, E2) = 2e11: 1.5e41 Pa is
+     7.5e29 E (over E2 = 1e11 it would be 1.5e30, outside), 2.5e41 Pa is
+     1.25e30 E */
+  snprintf(text, sizeof text, "%s", ortho);
+  part_scene("ortho-load.scene", "[material]\nE = 2.15e11\nnu = 0.29\n", text,
+             NULL, path, sizeof path);
+  ov[0] = "boundary.top.P2=-1.5e41";
+  {
+    Scene s;
+    Status st = {STATUS_OK, ""};
+    check(scene_load(&s, path, 1, ov, &st) == 0, "an orthotropic body takes "
+          "|P2| = 1.5e41 Pa = 7.5e29 max(E1, E2): %s", st.msg);
+    scene_free(&s);
+  }
+  ov[0] = "boundary.top.P2=-2.5e41";
+  expect("a traction beyond the window of the orthotropic body's max(E1, E2)",
+         path, 1, ov, "boundary.top.P2", "|P2| / E = 1.25e30");
+}
+
 int main(void)
 {
   if (!scene_files_begin()) return 1;
+  test_part_errors();
   test_syntax_errors();
   test_number_errors();
   test_magnitude_errors();

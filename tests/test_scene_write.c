@@ -8,7 +8,10 @@
    initial shape, every key of the fuzzing corpus, Coulomb friction, a
    constant shape under a loaded right side, and a shape file named
    relative to a scene that was itself named relative to the current
-   folder, as it is and resampled onto a refined mesh.  Then the two
+   folder, as it is and resampled onto a refined mesh; and parts of the
+   user's own (a geometry file, named curves and surfaces, orthotropic
+   materials, refined), whose states need the mesher and are not solved
+   here.  Then the two
    refusals: a shape file whose path is too long for a line of a scene,
    and a file that cannot be written.  Run from the repository root. */
 #include <stdio.h>
@@ -90,9 +93,11 @@ static void round_trip(const char *what, const char *path, int n,
     diff = scene_differs(&a, &b);
     check(!diff, "%s: it loads to the same scene, bit for bit%s%s", what,
           diff ? "; differs in " : "", diff ? diff : "");
-    ea = energy(&a, what), eb = energy(&b, what);
-    check(memcmp(&ea, &eb, sizeof ea) == 0 && ea != 0,
-          "%s: the same energy, bit for bit (%.17g, %.17g)", what, ea, eb);
+    if (!a.problem.part.geometry[0]) {
+      ea = energy(&a, what), eb = energy(&b, what);
+      check(memcmp(&ea, &eb, sizeof ea) == 0 && ea != 0,
+            "%s: the same energy, bit for bit (%.17g, %.17g)", what, ea, eb);
+    }
     scene_free(&b);
   }
   unlink(out);
@@ -141,6 +146,49 @@ static void relative_file(void)
   unlink(text);
   snprintf(path, sizeof path, "%s/sub", tmpdir);
   rmdir(path);
+}
+
+/* parts: a geometry beside the scene, three named curves (a traction, a
+   pressure, a clamped one) and two named surfaces, one orthotropic; the
+   body orthotropic in plane strain, refined twice; then overrides that
+   delete and add named sections and switch the plane model */
+static void part_cases(void)
+{
+  static const char scene[] =
+    "[geometry]\na = 0\nb = 4\n"
+    "[design]\nN = 16\nC0 = 0.05\nC1 = 0.025\nC2 = 0.91\n"
+    "initial = line\nline_start = 0\nline_end = 0.05\n"
+    "[mesh]\nM = 1\nC0prime = 0.25\nrefine = 2\n"
+    "[material]\nkind = orthotropic\nE1 = 2e11\nE2 = 1e11\nnu12 = 0.3\n"
+    "G12 = 5e10\nangle = 30\nmodel = plane_strain\nE3 = 1.5e11\nnu13 = 0.25\n"
+    "nu23 = 0.2\n"
+    "[part]\ngeometry = block.geo\n"
+    "[boundary.top]\nbc = traction\nP1 = 3e7\nP2 = -5.75e8\n"
+    "[boundary.bore]\nbc = pressure\np = 1e7\n"
+    "[material.rubber]\nE = 6e6\nnu = 0.45\n"
+    "[material.ply]\nkind = orthotropic\nE1 = 1.4e11\nE2 = 1e10\nnu12 = 0.28\n"
+    "G12 = 5e9\nangle = -45\nE3 = 1e10\nnu13 = 0.28\nnu23 = 0.4\n"
+    "[boundary.seat]\nbc = clamped\n"
+    "[left]\nbc = roller\n";
+  char dir[512], path[600], *ov[] = {"boundary.top.bc=", "boundary.top.P1=",
+    "boundary.top.P2=", "boundary.slot.bc=roller", "material.model=plane_stress",
+    "mesh.refine=3", "material.rubber.kind=orthotropic", "material.rubber.E1=1e7",
+    "material.rubber.E2=5e6", "material.rubber.nu12=0.4", "material.rubber.G12=2e6"};
+  snprintf(dir, sizeof dir, "%s/part", tmpdir);
+  mkdir(dir, 0700);
+  snprintf(path, sizeof path, "%s/block.geo", dir);
+  put(path, "// the part: read by the mesher\n");
+  snprintf(path, sizeof path, "%s/part.scene", dir);
+  put(path, scene);
+  round_trip("a part: orthotropic in plane strain, three curves, two surfaces, "
+             "refined twice", path, 0, ov, 90);
+  round_trip("the part with its top curve deleted, a roller curve added, plane "
+             "stress, refined three times, the rubber orthotropic", path, 11, ov,
+             91);
+  unlink(path);
+  snprintf(path, sizeof path, "%s/block.geo", dir);
+  unlink(path);
+  rmdir(dir);
 }
 
 /* the refusals: a path too long for a scene line or with " ;" in it, a
@@ -212,6 +260,7 @@ int main(void)
                (int)k);
   }
   relative_file();
+  part_cases();
   refusals();
   rmdir(tmpdir);
   return check_done();
