@@ -10,19 +10,51 @@
 #include <string.h>
 #include "scene.h"
 
+/* whether m is a material as the loader checks it */
+static int material_ok(const Problem_material *m)
+{
+  if (m->kind == MATERIAL_ISOTROPIC)
+    return m->young > 0 && m->nu > -1 && m->nu < 0.5;
+  return m->kind == MATERIAL_ORTHOTROPIC && m->E1 > 0 && m->E2 > 0 && m->G12 > 0
+         && m->nu12 * m->nu12 < m->E1 / m->E2 && isfinite(m->angle);
+}
+
+/* whether the part of p is as the loader leaves it: none, all zero; or
+   an absolute path, R = 0, gamma = C0prime, its curves loaded where they
+   carry a load, its surfaces' materials checked */
+static int part_ok(const Problem *p)
+{
+  const Problem_part *q = &p->part;
+  int j;
+  if (!q->geometry[0]) return q->refine == 0 && q->ncurve == 0 && q->nregion == 0;
+  if (q->geometry[0] != '/' || q->refine < 1 || p->R != 0 || p->gamma != p->C0prime
+      || q->ncurve < 0 || q->ncurve > PROBLEM_NAMED || q->nregion < 0
+      || q->nregion > PROBLEM_NAMED || p->side[SIDE_TOP].kind != BC_FREE)
+    return 0;
+  for (j = 0; j < q->ncurve; j++)
+    if (!q->curve[j].name[0]
+        || (q->curve[j].kind == BC_TRACTION && q->curve[j].P[0] == 0
+            && q->curve[j].P[1] == 0)
+        || (q->curve[j].kind == BC_PRESSURE && q->curve[j].pressure == 0))
+      return 0;
+  for (j = 0; j < q->nregion; j++)
+    if (!q->region[j].name[0] || !material_ok(&q->region[j].material)) return 0;
+  return 1;
+}
+
 /* the contract of scene_load after it returned rc; abort on a breach */
 static void check_contract(int rc, const Scene *s, const Status *st,
                            const char *path, int binary)
 {
-  int i;
+  int i, part = s->problem.part.geometry[0] != '\0';
   if (rc == STATUS_OK) {
     if (binary || st->code != STATUS_OK || !s->alpha0 || s->problem.N < 1
-        || s->problem.M < 1 || s->problem.R < 1
+        || s->problem.M < 1 || (!part && s->problem.R < 1) || !part_ok(&s->problem)
         || !(72.0 * s->problem.N * ((double)s->problem.M + s->problem.R) <= INT_MAX)
         || !(s->problem.a < s->problem.b) || !isfinite(s->problem.gamma * (s->problem.b - s->problem.a))
         || !(s->problem.C0 > 0) || !(s->problem.C1 >= 0) || !(s->problem.C2 > 0) || !(s->problem.C0 < s->problem.C0prime)
-        || !(s->problem.C0prime < s->problem.gamma) || !(s->problem.material.young > 0) || !(s->problem.material.nu > -1)
-        || !(s->problem.material.nu < 0.5) || !(s->solver.tol > 0 && s->solver.tol < 1)
+        || (!part && !(s->problem.C0prime < s->problem.gamma))
+        || !material_ok(&s->problem.material) || !(s->solver.tol > 0 && s->solver.tol < 1)
         || s->solver.max_iter < 1 || !(s->solver.omega > 0 && s->solver.omega < 2)
         || !(s->optimizer.tol > 0 && s->optimizer.tol < 1) || s->optimizer.max_iter < 1
         || strcmp(s->path, path) != 0)
