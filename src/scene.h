@@ -1,4 +1,4 @@
-#line 176 "paper/scene.nw"
+#line 236 "paper/scene.nw"
 #ifndef CONTACTOPT_SCENE_H
 #define CONTACTOPT_SCENE_H
 #include <stdio.h>

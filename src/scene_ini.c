@@ -1,4 +1,4 @@
-#line 1073 "paper/scene.nw"
+#line 1137 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -6,11 +6,11 @@
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
-#line 1086 "paper/scene.nw"
+#line 1150 "paper/scene.nw"
 static int nul_byte(Scene_loader *L);
 static int long_line(Scene_loader *L, const char *buf, int size);
 static int long_section(Scene_loader *L, const char *buf);
-#line 1116 "paper/scene.nw"
+#line 1180 "paper/scene.nw"
 /* e = sec.key = val at L's current origin, if the table of keys has them */
 static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *key,
                  const char *val)
@@ -18,7 +18,7 @@ static int admit(Scene_loader *L, Scene_entry *e, const char *sec, const char *k
   char where[640], list[256];
   scene_origin(L, L->override, where, sizeof where);
   
-#line 1138 "paper/scene.nw"
+#line 1202 "paper/scene.nw"
 if (!*sec)
   return scene_fail(L, "%s: line %d: %s = %s comes before any [section]", where,
                     L->line, key, val);
@@ -31,9 +31,9 @@ if (scene_named_kind(sec, NULL) == SCENE_MATERIAL && strcmp(key, "model") == 0)
 if (!scene_key_find(sec, key))
   return scene_fail(L, "%s: %s.%s = %s: unknown key ([%s] has %s)", where, sec,
                     key, val, sec, scene_key_names(sec, list, sizeof list));
-#line 1123 "paper/scene.nw"
+#line 1187 "paper/scene.nw"
   
-#line 1155 "paper/scene.nw"
+#line 1219 "paper/scene.nw"
 {
   const char *name;
   const char *named[PROBLEM_NAMED];
@@ -47,7 +47,7 @@ if (!scene_key_find(sec, key))
                       where, sec, key, val, PROBLEM_NAMED,
                       scene_named[kind].prefix);
 }
-#line 1124 "paper/scene.nw"
+#line 1188 "paper/scene.nw"
   if (strlen(val) >= sizeof e->val)
     return scene_fail(L, "%s: %s.%s: value longer than %d characters", where, sec,
                       key, (int)sizeof e->val - 1);
@@ -58,7 +58,7 @@ if (!scene_key_find(sec, key))
   e->override = L->override;
   return 0;
 }
-#line 1172 "paper/scene.nw"
+#line 1237 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
 {
@@ -68,7 +68,7 @@ Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key)
       return &L->e[i];
   return NULL;
 }
-#line 1188 "paper/scene.nw"
+#line 1253 "paper/scene.nw"
 /* sec[] = the sections of the named kind in the table, in the order of
    their first entries; their number (at most max) */
 int scene_named_list(const Scene_loader *L, int kind, const char **sec, int max)
@@ -93,7 +93,7 @@ int scene_slot(const Scene_loader *L, const char *sec)
     if (strcmp(named[j], sec) == 0) return j;
   return -1;
 }
-#line 1217 "paper/scene.nw"
+#line 1282 "paper/scene.nw"
 /* append e; the keys, each stored once at most, bound the table */
 static Scene_entry *add(Scene_loader *L, const Scene_entry *e)
 {
@@ -110,7 +110,7 @@ static void remove_entry(Scene_loader *L, Scene_entry *e)
 {
   memmove(e, e + 1, (size_t)(L->e + --L->n - e) * sizeof *e);
 }
-#line 1254 "paper/scene.nw"
+#line 1319 "paper/scene.nw"
 /* inih's reader: one line into buf, counted; NULL at the end or a failure */
 static char *read_line(char *buf, int size, void *user)
 {
@@ -130,14 +130,14 @@ static char *read_line(char *buf, int size, void *user)
   if (long_section(L, buf)) return NULL;
   return buf;
 }
-#line 1276 "paper/scene.nw"
+#line 1341 "paper/scene.nw"
 /* tell a NUL byte on the current line */
 static int nul_byte(Scene_loader *L)
 {
   return scene_fail(L, "%s: line %d: a NUL byte: a scene file is text (ASCII or "
                     "UTF-8, not UTF-16)", L->path, L->line);
 }
-#line 1296 "paper/scene.nw"
+#line 1361 "paper/scene.nw"
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line)
 {
@@ -162,7 +162,7 @@ static int long_line(Scene_loader *L, const char *buf, int size)
     if (c == '\0') return nul_byte(L);
   return 0;
 }
-#line 1326 "paper/scene.nw"
+#line 1391 "paper/scene.nw"
 /* a section line [name] whose name inih would cut */
 static int long_section(Scene_loader *L, const char *buf)
 {
@@ -173,7 +173,7 @@ static int long_section(Scene_loader *L, const char *buf)
                     "characters", L->path, L->line, (int)(end - p - 1), p + 1,
                     INIH_SECTION - 1);
 }
-#line 1343 "paper/scene.nw"
+#line 1408 "paper/scene.nw"
 /* inih's handler: store section.key = val, read on line L->line */
 static int on_key(void *user, const char *sec, const char *key,
                   const char *val)
@@ -184,7 +184,7 @@ static int on_key(void *user, const char *sec, const char *key,
   if (!key) return 1;
   if (admit(L, &e, sec, key, val)) return 0;
   
-#line 1360 "paper/scene.nw"
+#line 1425 "paper/scene.nw"
 if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
     && strcmp(L->prev->key, key) == 0) {
   scene_fail(L, "%s: line %d: this indented line continues the value of %s.%s: "
@@ -192,18 +192,18 @@ if (L->indented && L->prev && strcmp(L->prev->sec, sec) == 0
              L->line, sec, key);
   return 0;
 }
-#line 1353 "paper/scene.nw"
+#line 1418 "paper/scene.nw"
   
-#line 1371 "paper/scene.nw"
+#line 1436 "paper/scene.nw"
 if ((old = scene_find(L, sec, key))) {
   scene_bad(L, &e, "duplicate key on line %d (first given on line %d)", L->line,
             old->line);
   return 0;
 }
-#line 1354 "paper/scene.nw"
+#line 1419 "paper/scene.nw"
   return (L->prev = add(L, &e)) != NULL;
 }
-#line 1412 "paper/scene.nw"
+#line 1477 "paper/scene.nw"
 /* the failure just told, as STATUS_MEMORY if errno e says memory */
 int scene_for_memory(Scene_loader *L, int e)
 {
@@ -212,7 +212,7 @@ int scene_for_memory(Scene_loader *L, int e)
   return L->failed = STATUS_MEMORY;
 }
 
-#line 1385 "paper/scene.nw"
+#line 1450 "paper/scene.nw"
 /* the table = the entries of the scene file L->path */
 int scene_read_file(Scene_loader *L)
 {
@@ -232,18 +232,18 @@ int scene_read_file(Scene_loader *L)
   fclose(L->fp);
   L->fp = NULL;
   
-#line 1423 "paper/scene.nw"
+#line 1488 "paper/scene.nw"
 if (rc > 0 && (!L->failed || rc < L->line))
   scene_fail(L, "%s: line %d: syntax error: expected [section], key = value, "
              "a comment or a blank line", L->path, rc);
 if (rc == -2 && !L->failed)
   L->failed = status_set(L->st, STATUS_MEMORY, "%s: out of memory",
                          L->path);
-#line 1404 "paper/scene.nw"
+#line 1469 "paper/scene.nw"
   L->line = 0;
   return L->failed;
 }
-#line 1446 "paper/scene.nw"
+#line 1511 "paper/scene.nw"
 /* the text of s without leading and trailing blanks (s is modified) */
 static char *trim(char *s)
 {
@@ -254,7 +254,7 @@ static char *trim(char *s)
   *end = '\0';
   return s;
 }
-#line 1466 "paper/scene.nw"
+#line 1531 "paper/scene.nw"
 /* whether the override e switches off the entry x */
 static int switched_off(const Scene_entry *e, const Scene_entry *x)
 {
@@ -285,7 +285,7 @@ static void drop_unused(Scene_loader *L, const Scene_entry *e)
     if (!L->e[i].override && switched_off(e, &L->e[i]))
       remove_entry(L, &L->e[i]);
 }
-#line 1502 "paper/scene.nw"
+#line 1567 "paper/scene.nw"
 /* apply the override o = "section.key=value" onto the table */
 int scene_apply_override(Scene_loader *L, const char *o)
 {
@@ -299,7 +299,7 @@ int scene_apply_override(Scene_loader *L, const char *o)
   for (p = copy; eq && p < eq; p++)
     if (*p == '.') dot = p;
   
-#line 1528 "paper/scene.nw"
+#line 1593 "paper/scene.nw"
 if (eq && dot && dot < eq) {
   *eq = *dot = '\0';
   sec = trim(copy);
@@ -311,7 +311,7 @@ if (!sec || !*sec || !*key)
              L->path, o);
 else
   admit(L, &e, sec, key, val);
-#line 1515 "paper/scene.nw"
+#line 1580 "paper/scene.nw"
   free(copy);
   if (L->failed) return L->failed;
   drop_unused(L, &e);

@@ -1,8 +1,8 @@
-#line 344 "paper/scene.nw"
+#line 408 "paper/scene.nw"
 #include <stdio.h>
 #include <string.h>
 #include "scene_private.h"
-#line 412 "paper/scene.nw"
+#line 476 "paper/scene.nw"
 const char *const scene_side_names[] = {"left", "right", "top", NULL};
 /* the conditions of a side: those of problem_bc_names before pressure */
 static const char *const scene_side_bc_names[] = {"free", "clamped",
@@ -13,7 +13,7 @@ const char *const scene_initial_names[] = {"arc", "line", "constant",
 /* the kinds of a material, in the order of Problem_material_kind */
 const char *const scene_material_kind_names[] = {"isotropic", "orthotropic",
   NULL};
-#line 442 "paper/scene.nw"
+#line 506 "paper/scene.nw"
 const Scene_named scene_named[SCENE_NAMED_KINDS] = {
   {"boundary", "boundary.NAME", sizeof(Problem_curve)},
   {"material", "material.NAME", sizeof(Problem_region)},
@@ -47,7 +47,7 @@ const char *scene_table_section(const char *sec)
   int kind = scene_named_kind(sec, NULL);
   return kind < 0 ? sec : scene_named[kind].table;
 }
-#line 478 "paper/scene.nw"
+#line 542 "paper/scene.nw"
 /* the index of w in the NULL-terminated list names, or -1 */
 int scene_name_index(const char *const *names, const char *w)
 {
@@ -56,7 +56,7 @@ int scene_name_index(const char *const *names, const char *w)
     if (strcmp(names[i], w) == 0) return i;
   return -1;
 }
-#line 491 "paper/scene.nw"
+#line 555 "paper/scene.nw"
 /* append s to the string buf of size bytes, cut to fit */
 static void cat(char *buf, size_t size, const char *s)
 {
@@ -79,7 +79,7 @@ const char *scene_name_list(const char *const *names, char *buf,
   }
   return buf;
 }
-#line 529 "paper/scene.nw"
+#line 593 "paper/scene.nw"
 /* the default of a key of [solver] under the state solver k */
 static const char *solver_default(const char *key, int k, char *buf,
                                   size_t size)
@@ -101,7 +101,7 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   else status_number(d.tol, buf);
   return buf;
 }
-#line 672 "paper/scene.nw"
+#line 736 "paper/scene.nw"
 #define MATERIAL_KEYS(sec, m)                                               \
   {sec, "kind", KEY_WORD, scene_material_kind_names, AT(m.kind), "-",       \
    "isotropic", .quiet = 1, .meaning = "the kind of the material"},         \
@@ -132,10 +132,10 @@ static const char *optimizer_default(const char *key, int k, char *buf,
   {sec, key, KEY_REAL, .at = AT(field), .unit = u, .selector = "kind",      \
    .when = "orthotropic", .accepted = acc, .meaning = what,                 \
    .strain = third}
-#line 827 "paper/scene.nw"
+#line 891 "paper/scene.nw"
 const Scene_key scene_keys[] = {
   
-#line 606 "paper/scene.nw"
+#line 670 "paper/scene.nw"
 {"geometry", "a", KEY_REAL, .at = AT(problem.a), .unit = "m",
  .accepted = "finite", .meaning = "x1 of the left side"},
 {"geometry", "b", KEY_REAL, .at = AT(problem.b), .unit = "m",
@@ -177,9 +177,9 @@ const Scene_key scene_keys[] = {
  .selector = "initial", .when = "file",
  .accepted = "rows x1 alpha from x1 = a to b",
  .meaning = "a shape file, relative to the scene's folder (with -s too)"},
-#line 829 "paper/scene.nw"
+#line 893 "paper/scene.nw"
   
-#line 650 "paper/scene.nw"
+#line 714 "paper/scene.nw"
 {"mesh", "M", KEY_INT, .at = AT(problem.M), .unit = "-",
  .accepted = ">= 1", .meaning = "moving rows of cells, alpha to C0prime"},
 {"mesh", "R", KEY_INT, .at = AT(problem.R), .unit = "-", .accepted = ">= 1",
@@ -194,9 +194,9 @@ const Scene_key scene_keys[] = {
 MATERIAL_KEYS("material", problem.material),
 {"material", "model", KEY_WORD, problem_model_names, AT(problem.model),
  "-", "plane_stress", .meaning = "the plane model of the whole body"},
-#line 830 "paper/scene.nw"
+#line 894 "paper/scene.nw"
   
-#line 709 "paper/scene.nw"
+#line 773 "paper/scene.nw"
 {"part", "geometry", KEY_TEXT, .at = AT(problem.part.geometry), .unit = "-",
  .dflt = "", .quiet = 1, .accepted = "a gmsh .geo file; empty: none",
  .meaning = "the fixed part Omega' above the strip, from a geometry file "
@@ -217,9 +217,9 @@ MATERIAL_KEYS("material", problem.material),
  .accepted = "!= 0, |p| / E in [1e-30, 1e30]",
  .meaning = "the pressure, > 0 pushing into the body"},
 MATERIAL_KEYS("material.NAME", problem.part.region[0].material),
-#line 831 "paper/scene.nw"
+#line 895 "paper/scene.nw"
   
-#line 735 "paper/scene.nw"
+#line 799 "paper/scene.nw"
 #define SIDE_KEYS(sec, i, lo, hi, what, rect)                              \
   {sec, "bc", KEY_WORD, scene_side_bc_names, AT(problem.side[i].kind), "-",\
    "free", .rectangle = rect, .meaning = "the condition of the " what},    \
@@ -243,9 +243,9 @@ SIDE_KEYS("right", SIDE_RIGHT, "C0prime <= from < to", "from < to <= gamma",
           "right side, x1 = b", 0),
 SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
           "top side, x2 = gamma; not with part.geometry", 1),
-#line 832 "paper/scene.nw"
+#line 896 "paper/scene.nw"
   
-#line 762 "paper/scene.nw"
+#line 826 "paper/scene.nw"
 {"body_force", "F1", KEY_REAL, .at = AT(problem.body_force[0]), .unit = "N/m^3",
  .dflt = "0", .accepted = "0 or |F1| (b - a) / E in [1e-30, 1e30]",
  .meaning = "the body force, x1 component"},
@@ -264,9 +264,9 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"contact", "max_fixed_point", KEY_INT, .at = AT(problem.max_fixed_point),
  .unit = "-", .dflt = "200", .selector = "model", .when = "coulomb",
  .accepted = ">= 1", .meaning = "round limit of Coulomb's fixed point"},
-#line 833 "paper/scene.nw"
+#line 897 "paper/scene.nw"
   
-#line 783 "paper/scene.nw"
+#line 847 "paper/scene.nw"
 {"solver", "state", KEY_WORD, state_names, AT(solver.method), "-", "pdas",
  .meaning = "the method of the state problem (4.3)"},
 {"solver", "tol", KEY_REAL, .at = AT(solver.tol), .unit = "1",
@@ -298,19 +298,19 @@ SIDE_KEYS("top", SIDE_TOP, "a <= from < to", "from < to <= b",
 {"optimizer", "starts", KEY_INT, .at = AT(optimizer.starts), .unit = "-",
  .dflt = "1", .accepted = "1 <= starts <= 100",
  .meaning = "starts: the scene's and starts - 1 waves in B; the best kept"},
-#line 834 "paper/scene.nw"
+#line 898 "paper/scene.nw"
   
-#line 818 "paper/scene.nw"
+#line 882 "paper/scene.nw"
 {"objective", "kind", KEY_WORD, objective_names, AT(optimizer.objective.kind),
  "-", "energy", .meaning = "what the design minimises"},
 {"objective", "q", KEY_REAL, .at = AT(optimizer.objective.q), .unit = "1",
  .dflt = "8", .selector = "kind", .when = "pressure_peak",
  .accepted = "1 <= q <= 1000", .meaning = "the exponent of pressure_peak"},
-#line 835 "paper/scene.nw"
+#line 899 "paper/scene.nw"
 };
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] == SCENE_NKEYS,
                "SCENE_NKEYS counts the records of the table");
-#line 846 "paper/scene.nw"
+#line 910 "paper/scene.nw"
 /* the record of sec.key, or NULL */
 const Scene_key *scene_key_find(const char *sec, const char *key)
 {
@@ -331,7 +331,7 @@ int scene_section_known(const char *sec)
     if (strcmp(scene_keys[i].sec, sec) == 0) return 1;
   return 0;
 }
-#line 872 "paper/scene.nw"
+#line 936 "paper/scene.nw"
 /* buf = the sections (sec NULL) or the keys of sec, comma-separated */
 const char *scene_key_names(const char *sec, char *buf, size_t size)
 {
@@ -348,7 +348,7 @@ const char *scene_key_names(const char *sec, char *buf, size_t size)
   }
   return buf;
 }
-#line 892 "paper/scene.nw"
+#line 956 "paper/scene.nw"
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Scene_key *k, const char *w)
 {
@@ -360,7 +360,7 @@ int scene_key_means(const Scene_key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 3163 "paper/scene.nw"
+#line 3228 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Scene_key *k, char *buf, size_t size)
@@ -389,7 +389,7 @@ static const char *default_text(const Scene_key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 3197 "paper/scene.nw"
+#line 3262 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Scene_key *k, char *buf, size_t size)
 {
@@ -414,7 +414,7 @@ static const char *meaning_text(const Scene_key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 3226 "paper/scene.nw"
+#line 3291 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -427,7 +427,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 3244 "paper/scene.nw"
+#line 3309 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -451,14 +451,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 3273 "paper/scene.nw"
+#line 3338 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 3267 "paper/scene.nw"
+#line 3332 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }

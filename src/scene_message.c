@@ -1,7 +1,7 @@
-#line 967 "paper/scene.nw"
+#line 1031 "paper/scene.nw"
 #include <stdio.h>
 #include "scene_private.h"
-#line 1000 "paper/scene.nw"
+#line 1064 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 static PRINTF_LIKE(2, 0)
 int vfail(Scene_loader *L, const char *fmt, va_list ap)
@@ -20,7 +20,7 @@ int scene_fail(Scene_loader *L, const char *fmt, ...)
   va_end(ap);
   return L->failed;
 }
-#line 1022 "paper/scene.nw"
+#line 1086 "paper/scene.nw"
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size)
@@ -28,7 +28,7 @@ void scene_origin(const Scene_loader *L, const char *override, char *buf,
   if (override) snprintf(buf, size, "%s (-s %s)", L->path, override);
   else snprintf(buf, size, "%s", L->path);
 }
-#line 1033 "paper/scene.nw"
+#line 1097 "paper/scene.nw"
 /* tell "ORIGIN: section.key = value: reason" about e */
 static PRINTF_LIKE(3, 0)
 int vbad(Scene_loader *L, const Scene_entry *e, const char *fmt, va_list ap)
@@ -38,7 +38,7 @@ int vbad(Scene_loader *L, const Scene_entry *e, const char *fmt, va_list ap)
   vsnprintf(why, sizeof why, fmt, ap);
   return scene_fail(L, "%s: %s.%s = %s: %s", where, e->sec, e->key, e->val, why);
 }
-#line 1046 "paper/scene.nw"
+#line 1110 "paper/scene.nw"
 PRINTF_LIKE(3, 4)
 int scene_bad(Scene_loader *L, const Scene_entry *e, const char *fmt, ...)
 {

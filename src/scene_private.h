@@ -1,4 +1,4 @@
-#line 310 "paper/scene.nw"
+#line 374 "paper/scene.nw"
 #ifndef CONTACTOPT_SCENE_PRIVATE_H
 #define CONTACTOPT_SCENE_PRIVATE_H
 /* The scene module's own header: the files scene*.c include it, no other
@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include "scene.h"
 
-#line 567 "paper/scene.nw"
+#line 631 "paper/scene.nw"
 typedef enum { KEY_REAL, KEY_INT, KEY_WORD, KEY_TEXT } Scene_key_type;
 typedef const char *Scene_default_of(const char *key, int k, char *buf,
                                size_t size);
@@ -41,7 +41,7 @@ _Static_assert(sizeof(Problem_plane_model) == sizeof(int)
                && sizeof(Opt_metric) == sizeof(int)
                && sizeof(Objective_kind) == sizeof(int),
                "a word of a scene is an enum stored as an int");
-#line 353 "paper/scene.nw"
+#line 417 "paper/scene.nw"
 enum { SCENE_NKEYS = 80 };  /* the records of the table of keys */
 extern const char *const scene_side_names[];    /* left, right, top */
 extern const char *const scene_initial_names[]; /* arc, line, constant, file */
@@ -78,7 +78,7 @@ int scene_section_known(const char *sec);
 const char *scene_key_names(const char *sec, char *buf, size_t size);
 /* whether k means something when its selector has the word w */
 int scene_key_means(const Scene_key *k, const char *w);
-#line 918 "paper/scene.nw"
+#line 982 "paper/scene.nw"
 enum { ENTRY_VALUE = 256, NAMED_KEYS = 15,
        TABLE_MAX = SCENE_NKEYS - NAMED_KEYS + PROBLEM_NAMED * NAMED_KEYS };
 _Static_assert((int)SCENE_NKEYS <= (int)TABLE_MAX,
@@ -90,7 +90,7 @@ typedef struct {
   int line;               /* its line in the scene file; 0: -s or default */
   const char *override;   /* the -s string that set it, or NULL */
 } Scene_entry;
-#line 936 "paper/scene.nw"
+#line 1000 "paper/scene.nw"
 typedef struct {
   const char *path;      /* the scene file: the first word of every message */
   Status *st;            /* where a failure is told (may be NULL) */
@@ -104,13 +104,13 @@ typedef struct {
   const char *override;  /* the override being applied, or NULL */
   Scene_entry last;      /* the value converted last: a check blames it */
 } Scene_loader;
-#line 990 "paper/scene.nw"
+#line 1054 "paper/scene.nw"
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
-#line 974 "paper/scene.nw"
+#line 1038 "paper/scene.nw"
 /* tell "fmt ..." as the failure of L, STATUS_INPUT */
 PRINTF_LIKE(2, 3) int scene_fail(Scene_loader *L, const char *fmt, ...);
 /* tell "ORIGIN: section.key = value: reason" about e */
@@ -121,7 +121,7 @@ PRINTF_LIKE(2, 3) int scene_blame(Scene_loader *L, const char *fmt, ...);
 /* buf = the scene path, and the override if one set the value */
 void scene_origin(const Scene_loader *L, const char *override, char *buf,
                   size_t size);
-#line 1094 "paper/scene.nw"
+#line 1158 "paper/scene.nw"
 /* the entry sec.key of the table, or NULL */
 Scene_entry *scene_find(Scene_loader *L, const char *sec, const char *key);
 /* sec[] = the sections of the named kind in the table, in the order of
@@ -137,7 +137,7 @@ int scene_apply_override(Scene_loader *L, const char *o);
 int scene_for_memory(Scene_loader *L, int e);
 /* whether buf, the start of a line, is or has begun a comment */
 int scene_in_comment(const char *buf, int line);
-#line 1575 "paper/scene.nw"
+#line 1640 "paper/scene.nw"
 /* x = the number str: NULL, or why str is not a number */
 const char *scene_to_real(const char *str, double *x);
 /* L->last = the entry of sec.key, or its default; NULL if missing */
@@ -151,15 +151,15 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 2163 "paper/scene.nw"
+#line 2228 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s);
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 int scene_resolve(const char *scene, const char *file, char *buf, size_t size);
 /* buf = path, absolute; 0 if it fits */
 int scene_absolute(const char *path, char *buf, size_t size);
-#line 1825 "paper/scene.nw"
+#line 1890 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s);
-#line 329 "paper/scene.nw"
+#line 393 "paper/scene.nw"
 #endif

@@ -1,4 +1,4 @@
-#line 1561 "paper/scene.nw"
+#line 1626 "paper/scene.nw"
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 #include "scene_private.h"
-#line 1591 "paper/scene.nw"
+#line 1656 "paper/scene.nw"
 /* whether s is [+-]digits[.digits][e[+-]digits] (a digit before or after
    the point), or, for an integer, [+-]digits */
 static int decimal(const char *s, int integer)
@@ -47,7 +47,7 @@ const char *scene_to_real(const char *str, double *x)
   if (errno == ERANGE) return "out of the range of a double";
   return NULL;
 }
-#line 1634 "paper/scene.nw"
+#line 1699 "paper/scene.nw"
 /* k = the integer str: NULL, or why str is not an int */
 static const char *to_int(const char *str, int *k)
 {
@@ -60,7 +60,7 @@ static const char *to_int(const char *str, int *k)
   *k = (int)v;
   return NULL;
 }
-#line 1650 "paper/scene.nw"
+#line 1715 "paper/scene.nw"
 /* a hint on why val is malformed, or "" */
 static const char *hint(const char *val)
 {
@@ -71,7 +71,7 @@ static const char *hint(const char *val)
     return " (a comment after a value needs a blank before ';')";
   return "";
 }
-#line 1670 "paper/scene.nw"
+#line 1735 "paper/scene.nw"
 /* buf = the default of k with the selector's word in L's table; NULL if
    k has none (it is required) */
 static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf,
@@ -86,7 +86,7 @@ static const char *loader_default(Scene_loader *L, const Scene_key *k, char *buf
   w = scene_name_index(sel->words, e ? e->val : sel->dflt);
   return k->by(k->key, w < 0 ? 0 : w, buf, size);
 }
-#line 1687 "paper/scene.nw"
+#line 1752 "paper/scene.nw"
 /* L->last = the entry of sec.key, or its default; NULL if missing */
 const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key)
 {
@@ -105,7 +105,7 @@ const Scene_entry *scene_entry(Scene_loader *L, const char *sec, const char *key
   }
   return &L->last;
 }
-#line 1709 "paper/scene.nw"
+#line 1774 "paper/scene.nw"
 /* x = the number sec.key */
 static int scene_real(Scene_loader *L, const char *sec, const char *key, double *x)
 {
@@ -115,7 +115,7 @@ static int scene_real(Scene_loader *L, const char *sec, const char *key, double 
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1721 "paper/scene.nw"
+#line 1786 "paper/scene.nw"
 /* k = the integer sec.key */
 int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
 {
@@ -125,7 +125,7 @@ int scene_integer(Scene_loader *L, const char *sec, const char *key, int *k)
     return scene_blame(L, "%s%s", why, hint(L->last.val));
   return 0;
 }
-#line 1733 "paper/scene.nw"
+#line 1798 "paper/scene.nw"
 /* k = the index of the word sec.key among the words of its record */
 int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
 {
@@ -136,7 +136,7 @@ int scene_word(Scene_loader *L, const char *sec, const char *key, int *k)
   return scene_blame(L, "unknown value (accepted: %s)",
                      scene_name_list(names, list, sizeof list));
 }
-#line 1758 "paper/scene.nw"
+#line 1823 "paper/scene.nw"
 /* the field of s that sec.key's record names = the value of sec.key */
 int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
 {
@@ -153,7 +153,7 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key)
     memcpy(at, &v, sizeof v);
   return rc;
 }
-#line 1780 "paper/scene.nw"
+#line 1845 "paper/scene.nw"
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w)

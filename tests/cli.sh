@@ -104,6 +104,13 @@ bad "a key of an override that the switch makes meaningless" top.P2 "no effect" 
 printf '# x1 alpha\n0 0.01\n1 0.01\n' > $TMP/short.dat
 bad "a shape on [0, 1] for a body on [0, 4]" design.file 'short.dat line 3' 'ends at x1 = b = 4' -- $scene \
   -s design.initial=file -s design.file=$TMP/short.dat
+bad "a named section without part.geometry" boundary.bore.bc "needs part.geometry" -- $scene \
+  -s boundary.bore.bc=clamped
+bad "a geometry file that is not there" part.geometry "cannot read the geometry file" -- $scene \
+  -s part.geometry=$TMP/nosuch.geo -s design.C2=0.91
+bad "an unknown material kind" material.kind "unknown value" -- $scene -s material.kind=cubic
+bad "an orthotropic key in the isotropic material" material.E1 "no effect with kind = isotropic" -- $scene \
+  -s material.E1=2e11
 bad "an unknown option" --frobnicate -- $scene --frobnicate
 bad "two scenes" more -- $scene $scene
 rm -rf $TMP/bad
