@@ -160,10 +160,11 @@ static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
     for (int j = i; j < 3; j++)
       H.D[i][j] = H.D[j][i] = T[0][i] * QT[0][j] + T[1][i] * QT[1][j]
                               + T[2][i] * QT[2][j];
-  for (int j = 0; j < 3; j++) H.D33[j] = nu3[0] * QT[0][j] + nu3[1] * QT[1][j];
+  for (int j = 0; j < 3; j++)
+    H.D33[j] = model == MODEL_PLANE_STRAIN ? nu3[0] * QT[0][j] + nu3[1] * QT[1][j] : 0;
   return H;
 }
-#line 436 "paper/fem.nw"
+#line 437 "paper/fem.nw"
 static void fem_cos_sin_degrees(double degrees, double *c, double *s)
 {
   double r = fmod(degrees, 360), q = nearbyint(r / 90);
@@ -175,7 +176,7 @@ static void fem_cos_sin_degrees(double degrees, double *c, double *s)
   default: *c = s0, *s = -c0; break;
   }
 }
-#line 476 "paper/fem.nw"
+#line 484 "paper/fem.nw"
 static const char *fem_isotropic_refusal(const Problem_material *m,
                                          char *buf, size_t size);
 static const char *fem_orthotropic_refusal(const Problem_material *m,
@@ -190,7 +191,7 @@ const char *fem_material_refusal(const Problem_material *m,
        ? fem_orthotropic_refusal(m, model, buf, size)
        : fem_isotropic_refusal(m, buf, size);
 }
-#line 493 "paper/fem.nw"
+#line 501 "paper/fem.nw"
 static const char *fem_refuse(char *buf, size_t size, const char *fmt, ...)
 {
   va_list ap;
@@ -220,10 +221,11 @@ static const char *fem_isotropic_refusal(const Problem_material *m,
   if (!(m->nu > -1)) return fem_refuse(buf, size, "nu must be > -1 (stability)");
   return NULL;
 }
-#line 527 "paper/fem.nw"
+#line 536 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size);
+static int fem_definite(const Problem_material *m, Problem_plane_model model);
 
 static const char *fem_orthotropic_refusal(const Problem_material *m,
                                            Problem_plane_model model,
@@ -242,9 +244,13 @@ static const char *fem_orthotropic_refusal(const Problem_material *m,
       return fem_refuse(buf, size, "%s must lie in [1e-30, 1e30], where every "
                         "product the solvers form is finite", name[k]);
   }
-  return fem_poisson_refusal(m, model, buf, size);
+  const char *why = fem_poisson_refusal(m, model, buf, size);
+  if (!why && !fem_definite(m, model))
+    why = fem_refuse(buf, size, "the material is too near the limit of "
+                     "ellipticity: its D is not positive definite in floating point");
+  return why;
 }
-#line 554 "paper/fem.nw"
+#line 568 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size)
@@ -261,7 +267,7 @@ static const char *fem_poisson_refusal(const Problem_material *m,
                         name[k][2], sqrt(pair[k][1] / pair[k][2]));
   if (n == 1) return NULL;
   
-#line 575 "paper/fem.nw"
+#line 589 "paper/fem.nw"
 double nu21 = m->nu12 * m->E2 / m->E1, nu31 = m->nu13 * m->E3 / m->E1,
        nu32 = m->nu23 * m->E3 / m->E2;
 double delta = 1 - m->nu12 * nu21 - m->nu13 * nu31 - m->nu23 * nu32
@@ -270,10 +276,26 @@ if (!(delta > 0))
   return fem_refuse(buf, size, "the Poisson ratios must satisfy 1 - nu12 nu21 "
                     "- nu13 nu31 - nu23 nu32 - 2 nu21 nu32 nu13 > 0 "
                     "(ellipticity in plane strain), not %.3g", delta);
-#line 570 "paper/fem.nw"
+#line 584 "paper/fem.nw"
   return NULL;
 }
-#line 633 "paper/fem.nw"
+#line 600 "paper/fem.nw"
+/* D of m finite and positive definite: its leading minors > 0 */
+static int fem_definite(const Problem_material *m, Problem_plane_model model)
+{
+  Fem_hooke H = fem_hooke_of(m, model);
+  long double d[3][3];
+  for (int k = 0; k < 9; k++) {
+    if (!isfinite(H.D[k / 3][k % 3])) return 0;
+    d[k / 3][k % 3] = H.D[k / 3][k % 3];
+  }
+  long double m2 = d[0][0] * d[1][1] - d[0][1] * d[1][0];
+  long double m3 = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1])
+                 - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0])
+                 + d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  return d[0][0] > 0 && m2 > 0 && m3 > 0;
+}
+#line 665 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -291,7 +313,7 @@ void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 654 "paper/fem.nw"
+#line 686 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -301,7 +323,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 667 "paper/fem.nw"
+#line 699 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -313,7 +335,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 685 "paper/fem.nw"
+#line 717 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -333,14 +355,14 @@ void fem_element_stress(const Fem_hooke *H, const long double e[3], long double 
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 711 "paper/fem.nw"
+#line 743 "paper/fem.nw"
 long double fem_element_stress33(const Fem_hooke *H, const long double e[3])
 {
   const double *d = H->D33;
   if (d[1] == d[0] && d[2] == 0) return d[0] * (e[0] + e[1]);
   return d[0] * e[0] + d[1] * e[1] + d[2] * e[2];
 }
-#line 726 "paper/fem.nw"
+#line 758 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -352,13 +374,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 740 "paper/fem.nw"
+#line 772 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 749 "paper/fem.nw"
+#line 781 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -368,9 +390,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 745 "paper/fem.nw"
+#line 777 "paper/fem.nw"
 }
-#line 802 "paper/fem.nw"
+#line 834 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -386,17 +408,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 824 "paper/fem.nw"
+#line 856 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 817 "paper/fem.nw"
+#line 849 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 832 "paper/fem.nw"
+#line 864 "paper/fem.nw"
 static int fem_column(const Fem_dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
@@ -424,7 +446,7 @@ static size_t fem_pattern(const Fem_dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 780 "paper/fem.nw"
+#line 812 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -439,7 +461,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 862 "paper/fem.nw"
+#line 894 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -448,7 +470,7 @@ static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 875 "paper/fem.nw"
+#line 907 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -460,7 +482,7 @@ static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 901 "paper/fem.nw"
+#line 933 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -482,7 +504,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-#line 927 "paper/fem.nw"
+#line 959 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
                        const Fem_hooke *H, Status *st)
 {
@@ -494,17 +516,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 944 "paper/fem.nw"
+#line 976 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 938 "paper/fem.nw"
+#line 970 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 960 "paper/fem.nw"
+#line 992 "paper/fem.nw"
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b);
 
@@ -513,7 +535,7 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
   memset(b, 0, d->n * sizeof *b);
   fem_assemble_load(m, d, p, 0, b);
 }
-#line 976 "paper/fem.nw"
+#line 1008 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
@@ -527,7 +549,7 @@ static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], held, b);
 }
-#line 993 "paper/fem.nw"
+#line 1025 "paper/fem.nw"
 static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double w,
                           int held, double *b)
 {
@@ -537,7 +559,7 @@ static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double
     if (held && u < 0) b[k] += w * f[c];
   }
 }
-#line 1005 "paper/fem.nw"
+#line 1037 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b)
 {
@@ -545,7 +567,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
-#line 1019 "paper/fem.nw"
+#line 1051 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Problem_side *load, int held, double *b)
 {
@@ -563,7 +585,7 @@ static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id s
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 1075 "paper/fem.nw"
+#line 1107 "paper/fem.nw"
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
@@ -576,7 +598,7 @@ void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
     if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
       continue;                          /* no held vertex component */
     
-#line 1092 "paper/fem.nw"
+#line 1124 "paper/fem.nw"
 double xy[6], K[6][6], q[6];
 fem_element_xy(m, t, xy);
 fem_element_stiffness(xy, H, K);
@@ -587,10 +609,10 @@ for (int a = 0; a < 6; a++)
     for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
     r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
   }
-#line 1087 "paper/fem.nw"
+#line 1119 "paper/fem.nw"
   }
 }
-#line 1113 "paper/fem.nw"
+#line 1145 "paper/fem.nw"
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
@@ -605,20 +627,20 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
       owner = on[s];
   return owner;
 }
-#line 1154 "paper/fem.nw"
+#line 1186 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 1168 "paper/fem.nw"
+#line 1200 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 1160 "paper/fem.nw"
+#line 1192 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

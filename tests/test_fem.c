@@ -507,7 +507,7 @@ static void hooke_definite(Problem_plane_model model)
 {
   Problem_material ms[4] = { lamina(0), lamina(33), orthotropic(3e9, 9e9, -0.4, 1e9, 2e9, 0.1, 0.6, -120),
                              orthotropic(1e10, 1e10, 0.49, 1e8, 1e10, 0.49, 0.49, 45) };
-  int symmetric = 1, definite = 1;
+  int symmetric = 1, definite = 1, across = 1;
   char buf[256];
   for (int k = 0; k < 4; k++) {
     check(fem_material_refusal(&ms[k], model, buf, sizeof buf) == NULL,
@@ -521,7 +521,11 @@ static void hooke_definite(Problem_plane_model model)
                    - D[0][1] * ((long double) D[1][0] * D[2][2] - (long double) D[1][2] * D[2][0])
                    + D[0][2] * ((long double) D[1][0] * D[2][1] - (long double) D[1][1] * D[2][0]);
     definite &= D[0][0] > 0 && m2 > 0 && m3 > 0;
+    for (int r = 0; r < 3 && model == MODEL_PLANE_STRESS; r++)   /* +0, to the bit */
+      across &= memcmp(&H.D33[r], &(double) { 0 }, sizeof(double)) == 0;
   }
+  if (model == MODEL_PLANE_STRESS)
+    check(across, "plane stress: D33 is +0 (4 materials)");
   check(symmetric, "%s: D is symmetric to the bit (4 materials)", model_name(model));
   check(definite, "%s: D is positive definite, its leading minors > 0 (4 materials)",
         model_name(model));
@@ -570,6 +574,10 @@ static void material_refusals(void)
   refusal(m, pe, "the Poisson ratios must satisfy 1 - nu12 nu21"), refusal(m, ps, NULL);
   m = orthotropic(1e10, 1e10, -0.9, 3e9, 1e10, -0.9, -0.9, 0);  /* Delta = 0.028 */
   refusal(m, pe, NULL);
+  /* Delta = 0 in exact arithmetic (1 - 0.0045 - 0.0045 - 0.982081 - 0.008919),
+     1.2e-16 once rounded: the conditions pass, the rounded D is not definite */
+  m = orthotropic(2e11, 1e10, 0.3, 5e9, 1e10, 0.3, 0.991, 0);
+  refusal(m, pe, "the material is too near the limit of ellipticity"), refusal(m, ps, NULL);
 }
 
 /* (f) the patch test with a turned orthotropic material */
