@@ -1,9 +1,12 @@
-#line 136 "paper/fem.nw"
+#line 148 "paper/fem.nw"
+#include <float.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
-#line 148 "paper/fem.nw"
+#line 163 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held);
 static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c);
 
@@ -26,7 +29,7 @@ Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
   
-#line 176 "paper/fem.nw"
+#line 191 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -39,10 +42,10 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 170 "paper/fem.nw"
+#line 185 "paper/fem.nw"
   return d;
 }
-#line 192 "paper/fem.nw"
+#line 207 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
@@ -54,14 +57,14 @@ static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind k
       if (fem_side_holds(side, kind, c)) held[2 * k + c] = -1;
   }
 }
-#line 208 "paper/fem.nw"
+#line 223 "paper/fem.nw"
 static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c)
 {
   int normal = side == SIDE_TOP ? 1 : 0;
   return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
 }
 
-#line 215 "paper/fem.nw"
+#line 230 "paper/fem.nw"
 void fem_dofs_free(Fem_dofs *d)
 {
   if (!d) return;
@@ -72,22 +75,227 @@ void fem_dofs_free(Fem_dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 243 "paper/fem.nw"
+#line 274 "paper/fem.nw"
+static Fem_hooke fem_hooke_isotropic(const Problem_material *m,
+                                     Problem_plane_model model);
+static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
+                                       Problem_plane_model model);
+
 Fem_hooke fem_hooke(const Problem *p)
+{
+  return fem_hooke_of(&p->material, p->model);
+}
+
+Fem_hooke fem_hooke_of(const Problem_material *m, Problem_plane_model model)
+{
+  return m->kind == MATERIAL_ORTHOTROPIC ? fem_hooke_orthotropic(m, model)
+                                         : fem_hooke_isotropic(m, model);
+}
+#line 294 "paper/fem.nw"
+static Fem_hooke fem_hooke_isotropic(const Problem_material *m,
+                                     Problem_plane_model model)
 {
   Fem_hooke H;
   double (*D)[3] = H.D;
-  double mu = p->material.young / (2 * (1 + p->material.nu));
-  double lambda = p->model == MODEL_PLANE_STRAIN
-    ? p->material.young * p->material.nu / ((1 + p->material.nu) * (1 - 2 * p->material.nu))
-    : p->material.young * p->material.nu / (1 - p->material.nu * p->material.nu);
-  memset(D, 0, 9 * sizeof D[0][0]);
+  double mu = m->young / (2 * (1 + m->nu));
+  double lambda = model == MODEL_PLANE_STRAIN
+    ? m->young * m->nu / ((1 + m->nu) * (1 - 2 * m->nu))
+    : m->young * m->nu / (1 - m->nu * m->nu);
+  memset(&H, 0, sizeof H);
   D[0][0] = D[1][1] = lambda + 2 * mu;
   D[0][1] = D[1][0] = lambda;
   D[2][2] = mu;
+  if (model == MODEL_PLANE_STRAIN) H.D33[0] = H.D33[1] = lambda;
   return H;
 }
-#line 305 "paper/fem.nw"
+#line 346 "paper/fem.nw"
+/* S = the normal block (11, 22) of the plane model's compliance in the
+   material's axes; nu3 = (nu31, nu32): tau33 = nu3 . (tau11, tau22) in
+   plane strain, 0 in plane stress */
+static void fem_orthotropic_compliance(const Problem_material *m,
+                                       Problem_plane_model model,
+                                       double S[2][2], double nu3[2])
+{
+  double S11 = 1 / m->E1, S12 = -m->nu12 / m->E1, S22 = 1 / m->E2;
+  nu3[0] = nu3[1] = 0;
+  if (model == MODEL_PLANE_STRAIN) {
+    double S13 = -m->nu13 / m->E1, S23 = -m->nu23 / m->E2, S33 = 1 / m->E3;
+    S11 -= S13 * S13 / S33;
+    S12 -= S13 * S23 / S33;
+    S22 -= S23 * S23 / S33;
+    nu3[0] = -S13 / S33, nu3[1] = -S23 / S33;
+  }
+  S[0][0] = S11, S[0][1] = S[1][0] = S12, S[1][1] = S22;
+}
+#line 367 "paper/fem.nw"
+/* Q = the stiffness of the plane model in the material's axes, and nu3 */
+static void fem_orthotropic_axes(const Problem_material *m,
+                                 Problem_plane_model model,
+                                 double Q[3][3], double nu3[2])
+{
+  double S[2][2];
+  fem_orthotropic_compliance(m, model, S, nu3);
+  double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+  memset(Q, 0, 3 * sizeof Q[0]);
+  Q[0][0] = S[1][1] / det, Q[1][1] = S[0][0] / det;
+  Q[0][1] = Q[1][0] = -S[0][1] / det;
+  Q[2][2] = m->G12;
+}
+#line 404 "paper/fem.nw"
+static void fem_cos_sin_degrees(double degrees, double *c, double *s);
+
+static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
+                                       Problem_plane_model model)
+{
+  Fem_hooke H;
+  double Q[3][3], nu3[2], c, s, QT[3][3];
+  fem_orthotropic_axes(m, model, Q, nu3);
+  fem_cos_sin_degrees(m->angle, &c, &s);
+  double T[3][3] = { { c * c, s * s, c * s }, { s * s, c * c, -c * s },
+                     { -2 * c * s, 2 * c * s, c * c - s * s } };
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      QT[i][j] = Q[i][0] * T[0][j] + Q[i][1] * T[1][j] + Q[i][2] * T[2][j];
+  for (int i = 0; i < 3; i++)
+    for (int j = i; j < 3; j++)
+      H.D[i][j] = H.D[j][i] = T[0][i] * QT[0][j] + T[1][i] * QT[1][j]
+                              + T[2][i] * QT[2][j];
+  for (int j = 0; j < 3; j++)
+    H.D33[j] = model == MODEL_PLANE_STRAIN ? nu3[0] * QT[0][j] + nu3[1] * QT[1][j] : 0;
+  return H;
+}
+#line 437 "paper/fem.nw"
+static void fem_cos_sin_degrees(double degrees, double *c, double *s)
+{
+  double r = fmod(degrees, 360), q = nearbyint(r / 90);
+  double t = (r - 90 * q) * (acos(-1.0) / 180), c0 = cos(t), s0 = sin(t);
+  switch (((int) q % 4 + 4) % 4) {
+  case 0: *c = c0, *s = s0; break;
+  case 1: *c = -s0, *s = c0; break;
+  case 2: *c = -c0, *s = -s0; break;
+  default: *c = s0, *s = -c0; break;
+  }
+}
+#line 484 "paper/fem.nw"
+static const char *fem_isotropic_refusal(const Problem_material *m,
+                                         char *buf, size_t size);
+static const char *fem_orthotropic_refusal(const Problem_material *m,
+                                           Problem_plane_model model,
+                                           char *buf, size_t size);
+
+const char *fem_material_refusal(const Problem_material *m,
+                                 Problem_plane_model model, char *buf,
+                                 size_t size)
+{
+  return m->kind == MATERIAL_ORTHOTROPIC
+       ? fem_orthotropic_refusal(m, model, buf, size)
+       : fem_isotropic_refusal(m, buf, size);
+}
+#line 501 "paper/fem.nw"
+static const char *fem_refuse(char *buf, size_t size, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, size, fmt, ap);
+  va_end(ap);
+  return buf;
+}
+
+/* |x| in the scene's window [1e-30, 1e30], with its allowance of rounding */
+static int fem_in_window(double x)
+{
+  double r = fabs(x), rounding = 4 * DBL_EPSILON;
+  return r >= 1e-30 * (1 - rounding) && r <= 1e30 * (1 + rounding);
+}
+
+static const char *fem_isotropic_refusal(const Problem_material *m,
+                                         char *buf, size_t size)
+{
+  const char *window = "Young's modulus must lie in [1e-30, 1e30], where "
+                       "every product the solvers form is finite";
+  if (!(m->young > 0)) return fem_refuse(buf, size, "Young's modulus must be > 0");
+  if (!fem_in_window(m->young)) return fem_refuse(buf, size, "%s", window);
+  if (!(m->nu < 0.5))
+    return fem_refuse(buf, size, "nu must be < 0.5: 0.5 is the incompressible "
+                      "limit, where this displacement method locks");
+  if (!(m->nu > -1)) return fem_refuse(buf, size, "nu must be > -1 (stability)");
+  return NULL;
+}
+#line 536 "paper/fem.nw"
+static const char *fem_poisson_refusal(const Problem_material *m,
+                                       Problem_plane_model model,
+                                       char *buf, size_t size);
+static int fem_definite(const Problem_material *m, Problem_plane_model model);
+
+static const char *fem_orthotropic_refusal(const Problem_material *m,
+                                           Problem_plane_model model,
+                                           char *buf, size_t size)
+{
+  const char *name[8] = { "E1", "E2", "nu12", "G12", "angle", "E3", "nu13", "nu23" };
+  double value[8] = { m->E1, m->E2, m->nu12, m->G12, m->angle, m->E3, m->nu13, m->nu23 };
+  int n = model == MODEL_PLANE_STRAIN ? 8 : 5;
+  for (int k = 0; k < n; k++) {
+    int modulus = k == 0 || k == 1 || k == 3 || k == 5;
+    if (!isfinite(value[k]))
+      return fem_refuse(buf, size, "%s must be finite", name[k]);
+    if (modulus && !(value[k] > 0))
+      return fem_refuse(buf, size, "%s must be > 0", name[k]);
+    if (modulus && !fem_in_window(value[k]))
+      return fem_refuse(buf, size, "%s must lie in [1e-30, 1e30], where every "
+                        "product the solvers form is finite", name[k]);
+  }
+  const char *why = fem_poisson_refusal(m, model, buf, size);
+  if (!why && !fem_definite(m, model))
+    why = fem_refuse(buf, size, "the material is too near the limit of "
+                     "ellipticity: its D is not positive definite in floating point");
+  return why;
+}
+#line 568 "paper/fem.nw"
+static const char *fem_poisson_refusal(const Problem_material *m,
+                                       Problem_plane_model model,
+                                       char *buf, size_t size)
+{
+  const char *name[3][3] = { { "nu12", "E1", "E2" }, { "nu13", "E1", "E3" },
+                             { "nu23", "E2", "E3" } };
+  double pair[3][3] = { { m->nu12, m->E1, m->E2 }, { m->nu13, m->E1, m->E3 },
+                        { m->nu23, m->E2, m->E3 } };
+  int n = model == MODEL_PLANE_STRAIN ? 3 : 1;
+  for (int k = 0; k < n; k++)
+    if (!(pair[k][0] * pair[k][0] * (pair[k][2] / pair[k][1]) < 1))
+      return fem_refuse(buf, size, "%s must satisfy |%s| < sqrt(%s/%s) = %.6g "
+                        "(ellipticity)", name[k][0], name[k][0], name[k][1],
+                        name[k][2], sqrt(pair[k][1] / pair[k][2]));
+  if (n == 1) return NULL;
+  
+#line 589 "paper/fem.nw"
+double nu21 = m->nu12 * m->E2 / m->E1, nu31 = m->nu13 * m->E3 / m->E1,
+       nu32 = m->nu23 * m->E3 / m->E2;
+double delta = 1 - m->nu12 * nu21 - m->nu13 * nu31 - m->nu23 * nu32
+             - 2 * nu21 * nu32 * m->nu13;
+if (!(delta > 0))
+  return fem_refuse(buf, size, "the Poisson ratios must satisfy 1 - nu12 nu21 "
+                    "- nu13 nu31 - nu23 nu32 - 2 nu21 nu32 nu13 > 0 "
+                    "(ellipticity in plane strain), not %.3g", delta);
+#line 584 "paper/fem.nw"
+  return NULL;
+}
+#line 600 "paper/fem.nw"
+/* D of m finite and positive definite: its leading minors > 0 */
+static int fem_definite(const Problem_material *m, Problem_plane_model model)
+{
+  Fem_hooke H = fem_hooke_of(m, model);
+  long double d[3][3];
+  for (int k = 0; k < 9; k++) {
+    if (!isfinite(H.D[k / 3][k % 3])) return 0;
+    d[k / 3][k % 3] = H.D[k / 3][k % 3];
+  }
+  long double m2 = d[0][0] * d[1][1] - d[0][1] * d[1][0];
+  long double m3 = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1])
+                 - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0])
+                 + d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  return d[0][0] > 0 && m2 > 0 && m3 > 0;
+}
+#line 665 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -105,7 +313,7 @@ void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 326 "paper/fem.nw"
+#line 686 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -115,7 +323,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 339 "paper/fem.nw"
+#line 699 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -127,7 +335,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 357 "paper/fem.nw"
+#line 717 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -147,7 +355,14 @@ void fem_element_stress(const Fem_hooke *H, const long double e[3], long double 
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 385 "paper/fem.nw"
+#line 743 "paper/fem.nw"
+long double fem_element_stress33(const Fem_hooke *H, const long double e[3])
+{
+  const double *d = H->D33;
+  if (d[1] == d[0] && d[2] == 0) return d[0] * (e[0] + e[1]);
+  return d[0] * e[0] + d[1] * e[1] + d[2] * e[2];
+}
+#line 758 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -159,13 +374,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 399 "paper/fem.nw"
+#line 772 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 408 "paper/fem.nw"
+#line 781 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -175,9 +390,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 404 "paper/fem.nw"
+#line 777 "paper/fem.nw"
 }
-#line 461 "paper/fem.nw"
+#line 834 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -193,17 +408,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 483 "paper/fem.nw"
+#line 856 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 476 "paper/fem.nw"
+#line 849 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 491 "paper/fem.nw"
+#line 864 "paper/fem.nw"
 static int fem_column(const Fem_dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
@@ -231,7 +446,7 @@ static size_t fem_pattern(const Fem_dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 439 "paper/fem.nw"
+#line 812 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -246,7 +461,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 521 "paper/fem.nw"
+#line 894 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -255,7 +470,7 @@ static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 534 "paper/fem.nw"
+#line 907 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -267,7 +482,7 @@ static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 560 "paper/fem.nw"
+#line 933 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -289,7 +504,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-#line 586 "paper/fem.nw"
+#line 959 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
                        const Fem_hooke *H, Status *st)
 {
@@ -301,17 +516,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H, K);
     
-#line 603 "paper/fem.nw"
+#line 976 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 597 "paper/fem.nw"
+#line 970 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 619 "paper/fem.nw"
+#line 992 "paper/fem.nw"
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b);
 
@@ -320,7 +535,7 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
   memset(b, 0, d->n * sizeof *b);
   fem_assemble_load(m, d, p, 0, b);
 }
-#line 635 "paper/fem.nw"
+#line 1008 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
@@ -334,7 +549,7 @@ static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], held, b);
 }
-#line 652 "paper/fem.nw"
+#line 1025 "paper/fem.nw"
 static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double w,
                           int held, double *b)
 {
@@ -344,7 +559,7 @@ static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double
     if (held && u < 0) b[k] += w * f[c];
   }
 }
-#line 664 "paper/fem.nw"
+#line 1037 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b)
 {
@@ -352,7 +567,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
-#line 678 "paper/fem.nw"
+#line 1051 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Problem_side *load, int held, double *b)
 {
@@ -370,7 +585,7 @@ static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id s
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 734 "paper/fem.nw"
+#line 1107 "paper/fem.nw"
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
@@ -383,7 +598,7 @@ void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
     if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
       continue;                          /* no held vertex component */
     
-#line 751 "paper/fem.nw"
+#line 1124 "paper/fem.nw"
 double xy[6], K[6][6], q[6];
 fem_element_xy(m, t, xy);
 fem_element_stiffness(xy, H, K);
@@ -394,10 +609,10 @@ for (int a = 0; a < 6; a++)
     for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
     r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
   }
-#line 746 "paper/fem.nw"
+#line 1119 "paper/fem.nw"
   }
 }
-#line 772 "paper/fem.nw"
+#line 1145 "paper/fem.nw"
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
@@ -412,20 +627,20 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
       owner = on[s];
   return owner;
 }
-#line 813 "paper/fem.nw"
+#line 1186 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 827 "paper/fem.nw"
+#line 1200 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H, e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 819 "paper/fem.nw"
+#line 1192 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -19,14 +19,20 @@ typedef struct {
   int *tangent_col;  /* nt: its column i */
 } Fem_dofs;
 
-/* Hooke's law: stress = D strain, strains (e11, e22, 2 e12) */
-typedef struct { double D[3][3]; } Fem_hooke;
+/* Hooke's law: stress (s11, s22, s12) = D strain, strains (e11, e22,
+   2 e12); the stress across the plane s33 = D33 . strain, 0 in plane
+   stress */
+typedef struct { double D[3][3]; double D33[3]; } Fem_hooke;
 
-#line 105 "paper/fem.nw"
+#line 107 "paper/fem.nw"
 Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st);
 void fem_dofs_free(Fem_dofs *d);
 Fem_hooke fem_hooke(const Problem *p);
-#line 284 "paper/fem.nw"
+Fem_hooke fem_hooke_of(const Problem_material *m, Problem_plane_model model);
+const char *fem_material_refusal(const Problem_material *m,
+                                 Problem_plane_model model, char *buf,
+                                 size_t size);
+#line 642 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -43,7 +49,9 @@ double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3]);
 /* s = D e, the stress (s11, s22, s12) of the strain e [Pa when Young's modulus is] */
 void fem_element_stress(const Fem_hooke *H, const long double e[3], long double s[3]);
-#line 109 "paper/fem.nw"
+/* s33 = D33 e, the stress across the plane of the strain e (plane strain) */
+long double fem_element_stress33(const Fem_hooke *H, const long double e[3]);
+#line 115 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6]);
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
@@ -54,12 +62,12 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q);
-#line 725 "paper/fem.nw"
+#line 1098 "paper/fem.nw"
 /* r (ndof) = K u - f at the held DOFs, the force of the sides on the
    body [N/m when Young's modulus is in Pa]; 0 at the unknowns */
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r);
 /* the side whose reaction the held DOF k takes, -1 if no side holds it */
 int fem_reaction_side(const Mesh *m, const Problem *p, int k);
-#line 101 "paper/fem.nw"
+#line 103 "paper/fem.nw"
 #endif

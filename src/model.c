@@ -216,7 +216,7 @@ for (int c = 0; c < d->nc; c++)
   }
   return STATUS_OK;
 }
-#line 622 "paper/model.nw"
+#line 623 "paper/model.nw"
 void model_stress(const Model *md, int t, double s[5])
 {
   long double e[3], sigma[3];
@@ -224,18 +224,18 @@ void model_stress(const Model *md, int t, double s[5])
   fem_element_stress(&md->hooke, e, sigma);
   for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
   s[3] = md->problem->model == MODEL_PLANE_STRAIN
-       ? (double) (md->hooke.D[0][1] * (e[0] + e[1])) : 0.0;
+       ? (double) fem_element_stress33(&md->hooke, e) : 0.0;
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
-#line 641 "paper/model.nw"
+#line 642 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 655 "paper/model.nw"
+#line 656 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -247,7 +247,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 672 "paper/model.nw"
+#line 673 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

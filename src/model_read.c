@@ -1,4 +1,4 @@
-#line 692 "paper/model.nw"
+#line 693 "paper/model.nw"
 #include "model_private.h"
 const Problem *model_problem(const Model *md) { return md->problem; }
 cholmod_common *model_cholmod(const Model *md) { return md->cm; }
