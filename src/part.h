@@ -1,4 +1,4 @@
-#line 69 "paper/part.nw"
+#line 73 "paper/part.nw"
 #ifndef CONTACTOPT_PART_H
 #define CONTACTOPT_PART_H
 #include "status.h"
