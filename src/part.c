@@ -1,4 +1,4 @@
-#line 137 "paper/part.nw"
+#line 145 "paper/part.nw"
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "part.h"
-#line 151 "paper/part.nw"
+#line 159 "paper/part.nw"
 typedef void Gmsh_free(void *p);
 typedef void Gmsh_initialize(int argc, char **argv, const int readConfigFiles, int *ierr);
 typedef void Gmsh_finalize(int *ierr);
@@ -85,17 +85,17 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
   {"gmshModelMeshGetNodes", offsetof(Part_gmsh, get_nodes)},
   {"gmshModelMeshGetElements", offsetof(Part_gmsh, get_elements)},
 };
-#line 269 "paper/part.nw"
+#line 277 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 804 "paper/part.nw"
+#line 812 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
   long *where;      /* maxtag+1: the tag's place in gmsh's list, -1 if none */
   double *coord;    /* gmsh's coordinates, 3 a node */
 } Part_nodes;
-#line 272 "paper/part.nw"
+#line 280 "paper/part.nw"
 typedef struct {
   const Part_gmsh *g;
   const Problem *p;
@@ -111,9 +111,9 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1045 "paper/part.nw"
+#line 1056 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
-#line 236 "paper/part.nw"
+#line 244 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
 
 static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
@@ -137,7 +137,7 @@ static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
   loaded = 1;
   return &api;
 }
-#line 294 "paper/part.nw"
+#line 302 "paper/part.nw"
 static int part_gmsh_error(Part_build *b, Status_code code, const char *what)
 {
   char *err = NULL;
@@ -155,7 +155,7 @@ static int part_memory(Part_build *b)
 {
   return status_set(b->st, STATUS_MEMORY, "%s: out of memory for its mesh", b->path);
 }
-#line 322 "paper/part.nw"
+#line 330 "paper/part.nw"
 static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
 {
   free(nd->index); free(nd->where);
@@ -163,7 +163,7 @@ static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
   *nd = (Part_nodes){ 0, NULL, NULL, NULL };
 }
 
-#line 432 "paper/part.nw"
+#line 440 "paper/part.nw"
 static int part_count_errors(Part_build *b, char *last, size_t size)
 {
   char **log = NULL;
@@ -194,7 +194,7 @@ static int part_generate(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 472 "paper/part.nw"
+#line 480 "paper/part.nw"
 static int part_check_points(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -226,7 +226,7 @@ static int part_check_points(Part_build *b)
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot read its points");
   return code;
 }
-#line 516 "paper/part.nw"
+#line 524 "paper/part.nw"
 static int part_check_name(Part_build *b, const char *kind, int tag, const char *name)
 {
   size_t len = strlen(name);
@@ -244,7 +244,7 @@ static int part_check_name(Part_build *b, const char *kind, int tag, const char 
       "character other than A-Z, a-z, 0-9 and _ in its name", b->path, kind, name);
   return STATUS_OK;
 }
-#line 537 "paper/part.nw"
+#line 545 "paper/part.nw"
 static int part_add_members(Part_build *b, int dim, int tag, int group,
                             char (*names)[PROBLEM_NAME], Part_member **list, int *n)
 {
@@ -266,7 +266,7 @@ static int part_add_members(Part_build *b, int dim, int tag, int group,
   if (ierr) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list a physical group");
   return grown ? code : part_memory(b);
 }
-#line 564 "paper/part.nw"
+#line 572 "paper/part.nw"
 static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], int *count)
 {
   const Part_gmsh *g = b->g;
@@ -295,7 +295,7 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 596 "paper/part.nw"
+#line 604 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -323,14 +323,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 626 "paper/part.nw"
+#line 634 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 642 "paper/part.nw"
+#line 650 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -355,7 +355,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 670 "paper/part.nw"
+#line 678 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -375,7 +375,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 694 "paper/part.nw"
+#line 702 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -394,7 +394,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 716 "paper/part.nw"
+#line 724 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -414,7 +414,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 740 "paper/part.nw"
+#line 748 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -451,7 +451,7 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 779 "paper/part.nw"
+#line 787 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -467,7 +467,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 815 "paper/part.nw"
+#line 823 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -498,7 +498,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 849 "paper/part.nw"
+#line 857 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -525,7 +525,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 881 "paper/part.nw"
+#line 889 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -534,7 +534,10 @@ static int part_read_nodes(Part_build *b, Part_nodes *nd)
   int ierr = 0;
   g->get_nodes(&tags, &ntags, &nd->coord, &ncoord, &par, &npar, -1, -1, 0, 0, &ierr);
   if (par) g->free(par);
-  if (ierr) { if (tags) g->free(tags); return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its nodes"); }
+  if (ierr) {
+    if (tags) g->free(tags);
+    return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its nodes");
+  }
   for (size_t k = 0; k < ntags; k++) if (tags[k] > nd->maxtag) nd->maxtag = tags[k];
   nd->index = malloc((nd->maxtag + 1) * sizeof *nd->index);
   nd->where = malloc((nd->maxtag + 1) * sizeof *nd->where);
@@ -570,7 +573,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 930 "paper/part.nw"
+#line 941 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -587,7 +590,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 958 "paper/part.nw"
+#line 969 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -631,7 +634,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1011 "paper/part.nw"
+#line 1022 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -653,7 +656,7 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1049 "paper/part.nw"
+#line 1060 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -673,7 +676,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1073 "paper/part.nw"
+#line 1084 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -695,7 +698,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1111 "paper/part.nw"
+#line 1122 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
@@ -704,7 +707,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
     (*lines)[(*nlines)++] = (Part_edge){ (int) (iu < iw ? iu : iw), (int) (iu < iw ? iw : iu),
       0, 0, part_group_of(b->curve_of, b->ncurve_of, tag) };
 }
-#line 1094 "paper/part.nw"
+#line 1105 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -718,7 +721,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1124 "paper/part.nw"
+#line 1135 "paper/part.nw"
 static int part_boundary_edges(Part_build *b, const Part_edge *e, const Part_edge *lines,
                                size_t nlines)
 {
@@ -762,7 +765,7 @@ static int part_boundary(Part_build *b)
   return code;
 }
 
-#line 368 "paper/part.nw"
+#line 376 "paper/part.nw"
 static int part_steps(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -787,7 +790,7 @@ static int part_steps(Part_build *b)
     return code;
   return STATUS_OK;
 }
-#line 408 "paper/part.nw"
+#line 416 "paper/part.nw"
 static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
 {
   const char *home = getenv("HOME");
@@ -799,7 +802,7 @@ static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
   free(saved);
 }
 
-#line 332 "paper/part.nw"
+#line 340 "paper/part.nw"
 Part_mesh *part_mesh_new(const Problem *p, Status *st)
 {
   const char *path = p->part.geometry;
@@ -828,7 +831,7 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   if (code) { part_mesh_free(pm); return NULL; }
   return pm;
 }
-#line 1169 "paper/part.nw"
+#line 1180 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;
