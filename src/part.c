@@ -88,7 +88,7 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
 #line 277 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 812 "paper/part.nw"
+#line 814 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
@@ -111,7 +111,7 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1056 "paper/part.nw"
+#line 1058 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
 #line 244 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
@@ -122,16 +122,16 @@ static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
   static int loaded;
   if (loaded) return &api;
   void *lib = dlopen(PART_GMSH_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+  const char *why = lib ? NULL : dlerror(), *gone = "";
   for (size_t k = 0; lib && k < sizeof part_gmsh_symbols / sizeof *part_gmsh_symbols; k++) {
     void *f = dlsym(lib, part_gmsh_symbols[k].name);
-    if (!f) { dlclose(lib); lib = NULL; break; }
+    if (!f) { why = part_gmsh_symbols[k].name; gone = " missing"; dlclose(lib); lib = NULL; break; }
     memcpy((char *) &api + part_gmsh_symbols[k].at, &f, sizeof f);
   }
   if (!lib) {
-    const char *why = dlerror();
-    status_set(st, STATUS_SYSTEM, "%s: cannot load gmsh's library %s (%s): "
+    status_set(st, STATUS_SYSTEM, "%s: cannot load gmsh's library %s (%s%s): "
       "install Debian's libgmsh-dev", path, PART_GMSH_LIBRARY,
-      why ? why : "not found");
+      why ? why : "not found", gone);
     return NULL;
   }
   loaded = 1;
@@ -172,8 +172,10 @@ static int part_count_errors(Part_build *b, char *last, size_t size)
   b->g->logger_get(&log, &n, &ierr);
   for (size_t k = 0; k < n; k++) {
     if (!ierr && !strncmp(log[k], "Error", 5)) {
+      const char *m = log[k] + 5;
+      while (*m == ' ' || *m == ':') m++;    /* "Error: what", or "Error   : what" */
       count++;
-      snprintf(last, size, "%s", log[k]);
+      snprintf(last, size, "%s", m);
     }
     b->g->free(log[k]);
   }
@@ -194,7 +196,7 @@ static int part_generate(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 480 "paper/part.nw"
+#line 482 "paper/part.nw"
 static int part_check_points(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -226,7 +228,7 @@ static int part_check_points(Part_build *b)
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot read its points");
   return code;
 }
-#line 524 "paper/part.nw"
+#line 526 "paper/part.nw"
 static int part_check_name(Part_build *b, const char *kind, int tag, const char *name)
 {
   size_t len = strlen(name);
@@ -244,7 +246,7 @@ static int part_check_name(Part_build *b, const char *kind, int tag, const char 
       "character other than A-Z, a-z, 0-9 and _ in its name", b->path, kind, name);
   return STATUS_OK;
 }
-#line 545 "paper/part.nw"
+#line 547 "paper/part.nw"
 static int part_add_members(Part_build *b, int dim, int tag, int group,
                             char (*names)[PROBLEM_NAME], Part_member **list, int *n)
 {
@@ -266,7 +268,7 @@ static int part_add_members(Part_build *b, int dim, int tag, int group,
   if (ierr) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list a physical group");
   return grown ? code : part_memory(b);
 }
-#line 572 "paper/part.nw"
+#line 574 "paper/part.nw"
 static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], int *count)
 {
   const Part_gmsh *g = b->g;
@@ -295,7 +297,7 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 604 "paper/part.nw"
+#line 606 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -323,14 +325,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 634 "paper/part.nw"
+#line 636 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 650 "paper/part.nw"
+#line 652 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -355,7 +357,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 678 "paper/part.nw"
+#line 680 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -375,7 +377,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 702 "paper/part.nw"
+#line 704 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -394,7 +396,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 724 "paper/part.nw"
+#line 726 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -414,7 +416,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 748 "paper/part.nw"
+#line 750 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -451,7 +453,7 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 787 "paper/part.nw"
+#line 789 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -467,7 +469,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 823 "paper/part.nw"
+#line 825 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -498,7 +500,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 857 "paper/part.nw"
+#line 859 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -525,7 +527,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 889 "paper/part.nw"
+#line 891 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -573,7 +575,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 941 "paper/part.nw"
+#line 943 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -590,7 +592,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 969 "paper/part.nw"
+#line 971 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -634,7 +636,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1022 "paper/part.nw"
+#line 1024 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -656,7 +658,7 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1060 "paper/part.nw"
+#line 1062 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -676,7 +678,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1084 "paper/part.nw"
+#line 1086 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -698,7 +700,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1122 "paper/part.nw"
+#line 1124 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
@@ -707,7 +709,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
     (*lines)[(*nlines)++] = (Part_edge){ (int) (iu < iw ? iu : iw), (int) (iu < iw ? iw : iu),
       0, 0, part_group_of(b->curve_of, b->ncurve_of, tag) };
 }
-#line 1105 "paper/part.nw"
+#line 1107 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -721,7 +723,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1135 "paper/part.nw"
+#line 1137 "paper/part.nw"
 static int part_boundary_edges(Part_build *b, const Part_edge *e, const Part_edge *lines,
                                size_t nlines)
 {
@@ -831,7 +833,7 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   if (code) { part_mesh_free(pm); return NULL; }
   return pm;
 }
-#line 1180 "paper/part.nw"
+#line 1182 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;

@@ -301,7 +301,7 @@ static void refusals(void)
   refused("bad-many-surfaces.geo", STATUS_INPUT, "33 physical surfaces, more than the 32");
   refused("bad-quads.geo", STATUS_INPUT, "elements of gmsh's type 3, not 3-node triangles");
   refused("bad-order.geo", STATUS_INPUT, "elements of gmsh's type 9, not 3-node triangles");
-  refused("bad-mesh.geo", STATUS_INPUT, "gmsh cannot mesh it: Error");
+  refused("bad-mesh.geo", STATUS_INPUT, "gmsh cannot mesh it: Unable to recover the edge");
 }
 
 /* make SAN=1: gmsh's parser leaks the lists it was building when a .geo
