@@ -1,0 +1,11 @@
+// refused: the part joins the strip on [0, 2] only
+Point(1) = {0, 0.25, 0};
+Point(2) = {2, 0.25, 0};
+Point(3) = {2, 1, 0};
+Point(4) = {0, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};

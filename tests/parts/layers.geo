@@ -1,0 +1,21 @@
+// Two layers: soft on (0, 4) x (0.25, 0.5), stiff on (0, 4) x (0.5, 1)
+Point(1) = {0, 0.25, 0};
+Point(2) = {4, 0.25, 0};
+Point(3) = {4, 0.5, 0};
+Point(4) = {0, 0.5, 0};
+Point(5) = {4, 1, 0};
+Point(6) = {0, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {3, 5};
+Line(6) = {5, 6};
+Line(7) = {6, 4};
+Curve Loop(1) = {1, 2, 3, 4};
+Curve Loop(2) = {-3, 5, 6, 7};
+Plane Surface(1) = {1};
+Plane Surface(2) = {2};
+Physical Curve("top") = {6};
+Physical Surface("soft") = {1};
+Physical Surface("stiff") = {2};

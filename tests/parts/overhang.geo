@@ -1,0 +1,17 @@
+// A part wider than [a, b] = [0, 4]: (-1, 5) x (0.25, 1), its bottom split at a and b
+Point(1) = {-1, 0.25, 0};
+Point(2) = {0, 0.25, 0};
+Point(3) = {4, 0.25, 0};
+Point(4) = {5, 0.25, 0};
+Point(5) = {5, 1, 0};
+Point(6) = {-1, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 5};
+Line(5) = {5, 6};
+Line(6) = {6, 1};
+Curve Loop(1) = {1, 2, 3, 4, 5, 6};
+Plane Surface(1) = {1};
+Physical Curve("ledge") = {1, 3};
+Physical Curve("top") = {5};
