@@ -12,7 +12,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # optimisers, the projection onto B, the interior point of the Newton
 # model, the figures' parts, the parts of the scene and output modules),
 # which share the module's private header; and the program.
-MODULES := status resources problem scene mesh part fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
+MODULES := status resources problem scene part mesh fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
  INNER   := qp_base pdas cgssor psor condense_adjoint objective_grad model_read objective_evaluate grad_check design_project newton_ip opt_eval opt_projgrad opt_slsqp opt_mma opt_newton \
            plot_text plot_state plot_body plot_results \
            scene_keys scene_message scene_ini scene_value scene_check scene_shape scene_write \

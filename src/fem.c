@@ -1,4 +1,4 @@
-#line 148 "paper/fem.nw"
+#line 150 "paper/fem.nw"
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -6,9 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fem.h"
-#line 163 "paper/fem.nw"
+#line 165 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held);
 static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c);
+static void fem_hold_curves(const Mesh *m, const Problem *p, int *held);
 
 Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
 {
@@ -28,8 +29,9 @@ Fem_dofs *fem_dofs_new(const Mesh *m, const Problem *p, Status *st)
   }
   for (int side = 0; side < SIDE_COUNT; side++)
     fem_hold_side(m, side, p->side[side].kind, d->unknown);
+  fem_hold_curves(m, p, d->unknown);
   
-#line 191 "paper/fem.nw"
+#line 195 "paper/fem.nw"
 for (int k = 0; k < d->ndof; k++)
   d->unknown[k] = d->unknown[k] < 0 ? -1 : d->n++;
 for (int i = 0; i < m->ncol; i++)
@@ -42,13 +44,14 @@ for (int i = 0; p->contact != CONTACT_FRICTIONLESS && i < m->ncol; i++)
     d->tangent[d->nt] = d->unknown[2 * i];
     d->tangent_col[d->nt++] = i;
   }
-#line 185 "paper/fem.nw"
+#line 189 "paper/fem.nw"
   return d;
 }
-#line 207 "paper/fem.nw"
+#line 211 "paper/fem.nw"
 static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind kind, int *held)
 {
   if (kind != BC_CLAMPED && kind != BC_ROLLER) return;
+  if (side == SIDE_TOP && m->material) return;      /* a part: no top side */
   int count = side == SIDE_TOP ? m->ncol : m->nrow;
   for (int s = 0; s < count; s++) {
     int k = side == SIDE_TOP ? (m->nrow - 1) * m->ncol + s
@@ -57,14 +60,32 @@ static void fem_hold_side(const Mesh *m, Problem_side_id side, Problem_bc_kind k
       if (fem_side_holds(side, kind, c)) held[2 * k + c] = -1;
   }
 }
-#line 223 "paper/fem.nw"
+#line 228 "paper/fem.nw"
 static int fem_side_holds(Problem_side_id side, Problem_bc_kind kind, int c)
 {
   int normal = side == SIDE_TOP ? 1 : 0;
   return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
 }
+#line 240 "paper/fem.nw"
+static int fem_edge_holds(const Mesh *m, const Problem *p, int e, int c)
+{
+  int s = m->edge_curve[e];
+  if (s < 0) return 0;
+  Problem_bc_kind kind = p->part.curve[s].kind;
+  const double *x = m->xy + 2 * m->edge[2 * e], *y = m->xy + 2 * m->edge[2 * e + 1];
+  int normal = fabs(y[0] - x[0]) >= fabs(y[1] - x[1]) ? 1 : 0;
+  return kind == BC_CLAMPED || (kind == BC_ROLLER && c == normal);
+}
 
-#line 230 "paper/fem.nw"
+static void fem_hold_curves(const Mesh *m, const Problem *p, int *held)
+{
+  for (int e = 0; e < m->nedge; e++)
+    for (int c = 0; c < 2; c++)
+      if (fem_edge_holds(m, p, e, c))
+        for (int v = 0; v < 2; v++) held[2 * m->edge[2 * e + v] + c] = -1;
+}
+
+#line 259 "paper/fem.nw"
 void fem_dofs_free(Fem_dofs *d)
 {
   if (!d) return;
@@ -75,7 +96,7 @@ void fem_dofs_free(Fem_dofs *d)
   free(d->tangent_col);
   free(d);
 }
-#line 274 "paper/fem.nw"
+#line 303 "paper/fem.nw"
 static Fem_hooke fem_hooke_isotropic(const Problem_material *m,
                                      Problem_plane_model model);
 static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
@@ -91,7 +112,7 @@ Fem_hooke fem_hooke_of(const Problem_material *m, Problem_plane_model model)
   return m->kind == MATERIAL_ORTHOTROPIC ? fem_hooke_orthotropic(m, model)
                                          : fem_hooke_isotropic(m, model);
 }
-#line 294 "paper/fem.nw"
+#line 323 "paper/fem.nw"
 static Fem_hooke fem_hooke_isotropic(const Problem_material *m,
                                      Problem_plane_model model)
 {
@@ -108,7 +129,7 @@ static Fem_hooke fem_hooke_isotropic(const Problem_material *m,
   if (model == MODEL_PLANE_STRAIN) H.D33[0] = H.D33[1] = lambda;
   return H;
 }
-#line 346 "paper/fem.nw"
+#line 375 "paper/fem.nw"
 /* S = the normal block (11, 22) of the plane model's compliance in the
    material's axes; nu3 = (nu31, nu32): tau33 = nu3 . (tau11, tau22) in
    plane strain, 0 in plane stress */
@@ -127,7 +148,7 @@ static void fem_orthotropic_compliance(const Problem_material *m,
   }
   S[0][0] = S11, S[0][1] = S[1][0] = S12, S[1][1] = S22;
 }
-#line 367 "paper/fem.nw"
+#line 396 "paper/fem.nw"
 /* Q = the stiffness of the plane model in the material's axes, and nu3 */
 static void fem_orthotropic_axes(const Problem_material *m,
                                  Problem_plane_model model,
@@ -141,7 +162,7 @@ static void fem_orthotropic_axes(const Problem_material *m,
   Q[0][1] = Q[1][0] = -S[0][1] / det;
   Q[2][2] = m->G12;
 }
-#line 404 "paper/fem.nw"
+#line 433 "paper/fem.nw"
 static void fem_cos_sin_degrees(double degrees, double *c, double *s);
 
 static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
@@ -164,7 +185,7 @@ static Fem_hooke fem_hooke_orthotropic(const Problem_material *m,
     H.D33[j] = model == MODEL_PLANE_STRAIN ? nu3[0] * QT[0][j] + nu3[1] * QT[1][j] : 0;
   return H;
 }
-#line 437 "paper/fem.nw"
+#line 466 "paper/fem.nw"
 static void fem_cos_sin_degrees(double degrees, double *c, double *s)
 {
   double r = fmod(degrees, 360), q = nearbyint(r / 90);
@@ -176,7 +197,7 @@ static void fem_cos_sin_degrees(double degrees, double *c, double *s)
   default: *c = s0, *s = -c0; break;
   }
 }
-#line 484 "paper/fem.nw"
+#line 513 "paper/fem.nw"
 static const char *fem_isotropic_refusal(const Problem_material *m,
                                          char *buf, size_t size);
 static const char *fem_orthotropic_refusal(const Problem_material *m,
@@ -191,7 +212,7 @@ const char *fem_material_refusal(const Problem_material *m,
        ? fem_orthotropic_refusal(m, model, buf, size)
        : fem_isotropic_refusal(m, buf, size);
 }
-#line 501 "paper/fem.nw"
+#line 530 "paper/fem.nw"
 static const char *fem_refuse(char *buf, size_t size, const char *fmt, ...)
 {
   va_list ap;
@@ -221,7 +242,7 @@ static const char *fem_isotropic_refusal(const Problem_material *m,
   if (!(m->nu > -1)) return fem_refuse(buf, size, "nu must be > -1 (stability)");
   return NULL;
 }
-#line 536 "paper/fem.nw"
+#line 565 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size);
@@ -250,7 +271,7 @@ static const char *fem_orthotropic_refusal(const Problem_material *m,
                      "ellipticity: its D is not positive definite in floating point");
   return why;
 }
-#line 568 "paper/fem.nw"
+#line 597 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size)
@@ -267,7 +288,7 @@ static const char *fem_poisson_refusal(const Problem_material *m,
                         name[k][2], sqrt(pair[k][1] / pair[k][2]));
   if (n == 1) return NULL;
   
-#line 589 "paper/fem.nw"
+#line 618 "paper/fem.nw"
 double nu21 = m->nu12 * m->E2 / m->E1, nu31 = m->nu13 * m->E3 / m->E1,
        nu32 = m->nu23 * m->E3 / m->E2;
 double delta = 1 - m->nu12 * nu21 - m->nu13 * nu31 - m->nu23 * nu32
@@ -276,10 +297,10 @@ if (!(delta > 0))
   return fem_refuse(buf, size, "the Poisson ratios must satisfy 1 - nu12 nu21 "
                     "- nu13 nu31 - nu23 nu32 - 2 nu21 nu32 nu13 > 0 "
                     "(ellipticity in plane strain), not %.3g", delta);
-#line 584 "paper/fem.nw"
+#line 613 "paper/fem.nw"
   return NULL;
 }
-#line 600 "paper/fem.nw"
+#line 629 "paper/fem.nw"
 /* D of m finite and positive definite: its leading minors > 0 */
 static int fem_definite(const Problem_material *m, Problem_plane_model model)
 {
@@ -295,7 +316,7 @@ static int fem_definite(const Problem_material *m, Problem_plane_model model)
                  + d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
   return d[0][0] > 0 && m2 > 0 && m3 > 0;
 }
-#line 665 "paper/fem.nw"
+#line 694 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -313,7 +334,7 @@ void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 686 "paper/fem.nw"
+#line 715 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -323,7 +344,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 699 "paper/fem.nw"
+#line 728 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -335,7 +356,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 717 "paper/fem.nw"
+#line 746 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -355,14 +376,14 @@ void fem_element_stress(const Fem_hooke *H, const long double e[3], long double 
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 743 "paper/fem.nw"
+#line 772 "paper/fem.nw"
 long double fem_element_stress33(const Fem_hooke *H, const long double e[3])
 {
   const double *d = H->D33;
   if (d[1] == d[0] && d[2] == 0) return d[0] * (e[0] + e[1]);
   return d[0] * e[0] + d[1] * e[1] + d[2] * e[2];
 }
-#line 758 "paper/fem.nw"
+#line 787 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -374,13 +395,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 772 "paper/fem.nw"
+#line 801 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 781 "paper/fem.nw"
+#line 810 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -390,9 +411,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 777 "paper/fem.nw"
+#line 806 "paper/fem.nw"
 }
-#line 834 "paper/fem.nw"
+#line 863 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -408,17 +429,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 856 "paper/fem.nw"
+#line 885 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 849 "paper/fem.nw"
+#line 878 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 864 "paper/fem.nw"
+#line 893 "paper/fem.nw"
 static int fem_column(const Fem_dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
@@ -446,7 +467,7 @@ static size_t fem_pattern(const Fem_dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 812 "paper/fem.nw"
+#line 841 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -461,7 +482,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 894 "paper/fem.nw"
+#line 923 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -470,7 +491,7 @@ static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 907 "paper/fem.nw"
+#line 936 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -482,7 +503,7 @@ static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 933 "paper/fem.nw"
+#line 962 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -504,7 +525,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-#line 959 "paper/fem.nw"
+#line 988 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
                        const Fem_hooke *H, Status *st)
 {
@@ -514,19 +535,19 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
     int g[6];
     fem_element_xy(m, t, xy);
     fem_element_dofs(m, d, t, g);
-    fem_element_stiffness(xy, H, K);
+    fem_element_stiffness(xy, H + mesh_material(m, t), K);
     
-#line 976 "paper/fem.nw"
+#line 1005 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 970 "paper/fem.nw"
+#line 999 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 992 "paper/fem.nw"
+#line 1021 "paper/fem.nw"
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b);
 
@@ -535,11 +556,13 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
   memset(b, 0, d->n * sizeof *b);
   fem_assemble_load(m, d, p, 0, b);
 }
-#line 1008 "paper/fem.nw"
+#line 1037 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Problem_side *load, int held, double *b);
+static void fem_add_curve_loads(const Mesh *m, const Fem_dofs *d,
+                                const Problem *p, int held, double *b);
 
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b)
@@ -548,8 +571,9 @@ static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p
   for (int side = 0; side < SIDE_COUNT; side++)
     if (p->side[side].kind == BC_TRACTION)
       fem_add_traction(m, d, side, &p->side[side], held, b);
+  if (m->nedge) fem_add_curve_loads(m, d, p, held, b);
 }
-#line 1025 "paper/fem.nw"
+#line 1057 "paper/fem.nw"
 static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double w,
                           int held, double *b)
 {
@@ -559,7 +583,7 @@ static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double
     if (held && u < 0) b[k] += w * f[c];
   }
 }
-#line 1037 "paper/fem.nw"
+#line 1069 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b)
 {
@@ -567,7 +591,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
-#line 1051 "paper/fem.nw"
+#line 1083 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Problem_side *load, int held, double *b)
 {
@@ -585,7 +609,37 @@ static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id s
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 1107 "paper/fem.nw"
+#line 1108 "paper/fem.nw"
+static int fem_curve_force(const Mesh *m, const Problem *p, int e, double f[2])
+{
+  if (m->edge_curve[e] < 0) return 0;
+  const Problem_curve *cv = &p->part.curve[m->edge_curve[e]];
+  const double *x = m->xy + 2 * m->edge[2 * e], *y = m->xy + 2 * m->edge[2 * e + 1];
+  double len = hypot(y[0] - x[0], y[1] - x[1]);
+  if (cv->kind == BC_TRACTION) f[0] = cv->P[0] * len, f[1] = cv->P[1] * len;
+  else if (cv->kind == BC_PRESSURE)
+    f[0] = -cv->pressure * (y[1] - x[1]), f[1] = cv->pressure * (y[0] - x[0]);
+  else return 0;
+  return 1;
+}
+
+static void fem_add_curve_loads(const Mesh *m, const Fem_dofs *d,
+                                const Problem *p, int held, double *b)
+{
+  double f[2];
+  for (int e = 0; e < m->nedge; e++)
+    if (fem_curve_force(m, p, e, f))
+      for (int v = 0; v < 2; v++) fem_add_force(d, m->edge[2 * e + v], f, 0.5, held, b);
+}
+
+void fem_curve_resultant(const Mesh *m, const Problem *p, double L[2])
+{
+  double f[2];
+  L[0] = L[1] = 0;
+  for (int e = 0; e < m->nedge; e++)
+    if (fem_curve_force(m, p, e, f)) L[0] += f[0], L[1] += f[1];
+}
+#line 1177 "paper/fem.nw"
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
@@ -598,10 +652,10 @@ void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
     if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
       continue;                          /* no held vertex component */
     
-#line 1124 "paper/fem.nw"
+#line 1194 "paper/fem.nw"
 double xy[6], K[6][6], q[6];
 fem_element_xy(m, t, xy);
-fem_element_stiffness(xy, H, K);
+fem_element_stiffness(xy, H + mesh_material(m, t), K);
 fem_element_q(m, d, Q, t, q);
 for (int a = 0; a < 6; a++)
   if (g[a] < 0) {
@@ -609,38 +663,49 @@ for (int a = 0; a < 6; a++)
     for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
     r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
   }
-#line 1119 "paper/fem.nw"
+#line 1189 "paper/fem.nw"
   }
 }
-#line 1145 "paper/fem.nw"
+#line 1209 "paper/fem.nw"
+static int fem_reaction_curve(const Mesh *m, const Problem *p, int node, int c)
+{
+  for (int e = 0; e < m->nedge; e++)
+    if ((m->edge[2 * e] == node || m->edge[2 * e + 1] == node)
+        && fem_edge_holds(m, p, e, c))
+      return SIDE_COUNT + m->edge_curve[e];
+  return -1;
+}
+#line 1228 "paper/fem.nw"
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
   Problem_side_id on[SIDE_COUNT];
   int n = 0, owner = -1;
+  if (j >= m->nrow) return fem_reaction_curve(m, p, node, c);
   if (i == 0) on[n++] = SIDE_LEFT;
   if (i == m->N) on[n++] = SIDE_RIGHT;
-  if (j == m->nrow - 1) on[n++] = SIDE_TOP;
+  if (j == m->nrow - 1 && !m->material) on[n++] = SIDE_TOP;
   for (int s = 0; s < n; s++)
     if (fem_side_holds(on[s], p->side[on[s]].kind, c)
         && (owner < 0 || c == (on[s] == SIDE_TOP ? 1 : 0)))
       owner = on[s];
+  if (owner < 0 && m->nedge) owner = fem_reaction_curve(m, p, node, c);
   return owner;
 }
-#line 1186 "paper/fem.nw"
+#line 1271 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 1200 "paper/fem.nw"
+#line 1285 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
-fem_element_stress(H, e, sigma);
+fem_element_stress(H + mesh_material(m, t), e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 1192 "paper/fem.nw"
+#line 1277 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -1,21 +1,21 @@
-#line 393 "paper/friction.nw"
+#line 394 "paper/friction.nw"
 #include <math.h>
 #include "friction.h"
-#line 399 "paper/friction.nw"
+#line 400 "paper/friction.nw"
 void friction_tresca_bounds(const Problem *p, const Mesh *m, const Fem_dofs *d,
                             double *slip)
 {
   for (int k = 0; k < d->nt; k++)
     slip[k] = p->slip_bound * mesh_tributary(m, d->tangent_col[k]);
 }
-#line 408 "paper/friction.nw"
+#line 409 "paper/friction.nw"
 double friction_work(const Fem_dofs *d, const double *slip, const double *Q)
 {
   double w = 0;
   for (int k = 0; k < d->nt; k++) w += slip[k] * fabs(Q[d->tangent[k]]);
   return w;
 }
-#line 420 "paper/friction.nw"
+#line 421 "paper/friction.nw"
 void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
                        const double *Q, double *G)
 {
@@ -31,7 +31,7 @@ void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
     }
   }
 }
-#line 441 "paper/friction.nw"
+#line 442 "paper/friction.nw"
 int friction_side_holds(const Problem *p, int component)
 {
   for (int id = 0; id < SIDE_COUNT; id++) {
@@ -39,22 +39,31 @@ int friction_side_holds(const Problem *p, int component)
     if (k == BC_CLAMPED || (k == BC_ROLLER && (id == SIDE_TOP) == (component == 1)))
       return 1;
   }
+  for (int s = 0; s < p->part.ncurve; s++) {
+    const Problem_curve *c = &p->part.curve[s];
+    if (c->kind == BC_CLAMPED || (c->kind == BC_ROLLER && c->normal == component))
+      return 1;
+  }
   return 0;
 }
-#line 455 "paper/friction.nw"
+#line 461 "paper/friction.nw"
 /* L = the total load (L1, L2) of a body of this area, N/m */
 static void total_load(const Problem *p, double area, double L[2])
 {
   for (int j = 0; j < 2; j++) L[j] = p->body_force[j] * area;
+  if (p->part.geometry[0])               /* a part's curves */
+    for (int j = 0; j < 2; j++) L[j] += p->part.load[j];
   for (int id = 0; id < SIDE_COUNT; id++)
     if (p->side[id].kind == BC_TRACTION)
       for (int j = 0; j < 2; j++)
         L[j] += p->side[id].P[j] * (p->side[id].to - p->side[id].from);
 }
-#line 468 "paper/friction.nw"
+#line 476 "paper/friction.nw"
 Friction_hold friction_hold(const Problem *p)
 {
   double w = p->b - p->a, area[2] = {(p->gamma - p->C0prime) * w, p->gamma * w};
+  if (p->part.geometry[0])               /* a part over the strip */
+    area[0] = p->part.area, area[1] = p->part.area + p->C0prime * w;
   Friction_hold least = {0, 0, 0};
   for (int end = 0; end < 2; end++) {
     double L[2];

@@ -17,8 +17,9 @@ double friction_work(const Fem_dofs *d, const double *slip, const double *Q);
 void friction_gradient(const Problem *p, const Mesh *m, const Fem_dofs *d,
                        const double *Q, double *G);
 #line 374 "paper/friction.nw"
-/* 1 if some side holds u1 (component 0) or u2 (component 1): a clamped
-   side holds both, a roller on the left or the right u1, on the top u2 */
+/* 1 if some side or a part's curve holds u1 (component 0) or u2
+   (component 1): a clamp holds both, a roller on the left or the right u1,
+   on the top u2, on a part's curve its normal component */
 int friction_side_holds(const Problem *p, int component);
 
 /* what friction can hold sideways against the horizontal load */

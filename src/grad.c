@@ -34,7 +34,7 @@ int grad_energy(const Model *md, double *G, Status *st)
 static void grad_element(const Model *md, int t, double *G)
 {
   const Mesh *m = model_mesh(md);
-  const Fem_hooke *h = model_hooke(md);
+  const Fem_hooke *h = model_hooke(md) + mesh_material(m, t);
   const Problem *p = model_problem(md);
   double xy[6], q[6], gx[3], gy[3], e[3], De[3];
   long double el[3];

@@ -1,20 +1,20 @@
-#line 823 "paper/model.nw"
+#line 844 "paper/model.nw"
 #include <math.h>
 #include <stdio.h>
 #include "friction.h"
 #include "held.h"
-#line 831 "paper/model.nw"
+#line 852 "paper/model.nw"
 int held_lift_free(const Problem *p)
 {
   return !friction_side_holds(p, 1);
 }
-#line 840 "paper/model.nw"
+#line 861 "paper/model.nw"
 static void node_load(const Fem_dofs *d, const double *b, int k, double f[2])
 {
   for (int c = 0; c < 2; c++)
     f[c] = d->unknown[2 * k + c] >= 0 ? b[d->unknown[2 * k + c]] : 0;
 }
-#line 848 "paper/model.nw"
+#line 869 "paper/model.nw"
 static double lift_work(const Mesh *m, const Fem_dofs *d, const double *b,
                         double *scale)
 {
@@ -26,7 +26,7 @@ static double lift_work(const Mesh *m, const Fem_dofs *d, const double *b,
   }
   return L2;
 }
-#line 868 "paper/model.nw"
+#line 889 "paper/model.nw"
 typedef struct {
   double W0, L1;        /* W(0), and the horizontal load: W(y) = W0 + sigma y L1 */
   double scale0, scale1; /* the scale of W(y)'s terms: scale0 + |y| scale1 */
@@ -45,7 +45,7 @@ static Tip tip_work(const Mesh *m, const Fem_dofs *d, const double *b, double p,
   }
   return w;
 }
-#line 892 "paper/model.nw"
+#line 913 "paper/model.nw"
 static double friction_on_tip(const Mesh *m, const Fem_dofs *d,
                               const double *slip, double y)
 {
@@ -54,7 +54,7 @@ static double friction_on_tip(const Mesh *m, const Fem_dofs *d,
     w += slip[t] * fabs(y - m->xy[2 * d->tangent_col[t] + 1]);
   return w;
 }
-#line 907 "paper/model.nw"
+#line 928 "paper/model.nw"
 static double tip_excess(const Mesh *m, const Fem_dofs *d, const double *b,
                          const double *slip, int end, double *scale)
 {
@@ -71,7 +71,7 @@ static double tip_excess(const Mesh *m, const Fem_dofs *d, const double *b,
   }
   return worst;
 }
-#line 932 "paper/model.nw"
+#line 953 "paper/model.nw"
 #define HELD_ROUNDING 1e-12
 static int held(double work, double scale)
 {
@@ -83,29 +83,27 @@ int held_check(const Problem *p, const Mesh *m, const Fem_dofs *d,
                Status *st)
 {
   double scale = 0, w;
-  char sides[96];
-  snprintf(sides, sizeof sides, "left.bc = %s, right.bc = %s, top.bc = %s",
-           problem_bc_name(p->side[0].kind), problem_bc_name(p->side[1].kind),
-           problem_bc_name(p->side[2].kind));
+  char sides[256];
+  problem_supports(p, sides, sizeof sides);
   if (!held_lift_free(p)) return 0;
   if (!held(w = lift_work(m, d, b, &scale), scale))
     
-#line 960 "paper/model.nw"
+#line 979 "paper/model.nw"
 return status_set(st, code, "the body is not held: the loads do not press "
                   "it onto the foundation (their vertical resultant is %.6g N/m, "
                   "not downward), and no side holds u2 (%s): nothing stops it "
                   "lifting off", w, sides);
-#line 950 "paper/model.nw"
+#line 969 "paper/model.nw"
   if (friction_side_holds(p, 0)) return 0;
   for (int end = 0; end < 2; end++)
     if (!held(w = tip_excess(m, d, b, slip, end, &scale), scale))
       
-#line 967 "paper/model.nw"
+#line 986 "paper/model.nw"
 return status_set(st, code, "the body is not held: the loads tip it about "
                   "the %s end of its contact (x1 = %g): their moment about it%s "
                   "turns the body off the foundation with %.6g N m/m, and no side "
                   "holds it (%s)", end ? "right" : "left", end ? m->b : m->a,
                   slip ? ", less what friction resists," : "", w, sides);
-#line 954 "paper/model.nw"
+#line 973 "paper/model.nw"
   return 0;
 }

@@ -1,4 +1,4 @@
-#line 798 "paper/model.nw"
+#line 819 "paper/model.nw"
 #ifndef CONTACTOPT_HELD_H
 #define CONTACTOPT_HELD_H
 #include "status.h"

@@ -1,4 +1,4 @@
-#line 232 "paper/model.nw"
+#line 234 "paper/model.nw"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -6,10 +6,21 @@
 #include "resources.h"
 #include "held.h"
 #include "model_private.h"
-#line 227 "paper/model.nw"
+#line 229 "paper/model.nw"
 static int model_solve_state(Model *md, Status *st);
 static int model_pressed(const Model *md, Status *st);
-#line 244 "paper/model.nw"
+#line 246 "paper/model.nw"
+/* Hooke's law of each material: the problem's, then each region's */
+static Fem_hooke *model_hookes(const Problem *p)
+{
+  Fem_hooke *H = malloc((1 + (size_t) p->part.nregion) * sizeof *H);
+  if (!H) return NULL;
+  H[0] = fem_hooke(p);
+  for (int r = 0; r < p->part.nregion; r++)
+    H[1 + r] = fem_hooke_of(&p->part.region[r].material, p->model);
+  return H;
+}
+
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st)
 {
@@ -17,14 +28,18 @@ Model *model_new(const Problem *p, const Qp_options *solver,
   if (!md) { status_set(st, STATUS_MEMORY, "model: out of memory"); return NULL; }
   md->problem = p;
   md->cm = cm;
-  md->hooke = fem_hooke(p);
+  if (!(md->hooke = model_hookes(p))) {
+    model_free(md);
+    status_set(st, STATUS_MEMORY, "model: out of memory");
+    return NULL;
+  }
   if (!(md->mesh = mesh_new(p, st)) || !(md->dofs = fem_dofs_new(md->mesh, p, st))
       || !(md->A = fem_stiffness_new(md->mesh, md->dofs, cm, st))) {
     model_free(md);
     return NULL;
   }
   
-#line 264 "paper/model.nw"
+#line 281 "paper/model.nw"
 int n = md->dofs->n, nc = md->dofs->nc, nt = md->dofs->nt;
 md->b = malloc(n * sizeof *md->b);
 md->Q = calloc(n, sizeof *md->Q);
@@ -37,26 +52,26 @@ if (!md->b || !md->Q || !md->lo || !md->T || !md->slip) {
   status_set(st, STATUS_MEMORY, "model: out of memory for %d unknowns", n);
   return NULL;
 }
-#line 258 "paper/model.nw"
+#line 275 "paper/model.nw"
   
-#line 279 "paper/model.nw"
+#line 296 "paper/model.nw"
 md->qp = (Qp) { md->A, md->b, nc, md->dofs->contact, md->lo,
                 nt, md->dofs->tangent, md->slip, nt && !friction_side_holds(p, 0) };
 if (!(md->solver = qp_alloc(&md->qp, solver, cm, st))) {
   model_free(md);
   return NULL;
 }
-#line 259 "paper/model.nw"
+#line 276 "paper/model.nw"
   return md;
 }
-#line 302 "paper/model.nw"
+#line 319 "paper/model.nw"
 static int model_solve_with(Model *md, const double *X, int rounding,
                             Status *st)
 {
   double start = resources_clock();
   int rc;
   if ((rc = mesh_move(md->mesh, X, st))
-      || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, &md->hooke, st)))
+      || (rc = fem_stiffness_fill(md->A, md->mesh, md->dofs, md->hooke, st)))
     return rc;
   fem_load(md->mesh, md->dofs, md->problem, md->b);
   for (int c = 0; c < md->dofs->nc; c++) md->lo[c] = -X[md->dofs->contact_col[c]];
@@ -73,7 +88,7 @@ static int model_solve_with(Model *md, const double *X, int rounding,
                              &md->fixed_point, st);
     md->report.iterations += md->fixed_point.steps;
   }
-  md->energy = fem_energy(md->mesh, md->dofs, &md->hooke, md->b, md->Q);
+  md->energy = fem_energy(md->mesh, md->dofs, md->hooke, md->b, md->Q);
   if (md->dofs->nt) {
     md->friction_energy = friction_work(md->dofs, md->slip, md->Q);
     md->energy += md->friction_energy;
@@ -91,7 +106,7 @@ int model_solve_to_rounding(Model *md, const double *X, Status *st)
 {
   return model_solve_with(md, X, 1, st);
 }
-#line 347 "paper/model.nw"
+#line 364 "paper/model.nw"
 static int model_solve_state(Model *md, Status *st)
 {
   int rc = qp_solve(md->solver, md->solved || md->guessed ? md->Q : NULL,
@@ -100,7 +115,7 @@ static int model_solve_state(Model *md, Status *st)
   md->solved = rc == STATUS_OK, md->guessed = 0;
   return rc;
 }
-#line 360 "paper/model.nw"
+#line 377 "paper/model.nw"
 static int model_pressed(const Model *md, Status *st)
 {
   if (!held_lift_free(md->problem)) return 0;
@@ -110,7 +125,7 @@ static int model_pressed(const Model *md, Status *st)
                     "ended with no node pressed onto the foundation, and no side "
                     "holds u2");
 }
-#line 384 "paper/model.nw"
+#line 401 "paper/model.nw"
 void model_contact_gaps(const Model *md, double *gap)
 {
   for (int i = 0; i <= md->problem->N; i++) gap[i] = NAN;
@@ -126,12 +141,12 @@ void model_guess_contact(Model *md, const double *X, const double *gap)
   }
   md->guessed = 1;
 }
-#line 413 "paper/model.nw"
+#line 430 "paper/model.nw"
 double model_pressure(const Model *md, int c)
 {
   return md->T[c] / mesh_tributary(md->mesh, md->dofs->contact_col[c]);
 }
-#line 421 "paper/model.nw"
+#line 438 "paper/model.nw"
 double model_pressure_cv(const Model *md)
 {
   double sum = 0, sum2 = 0;
@@ -145,7 +160,7 @@ double model_pressure_cv(const Model *md)
   double mean = sum / count, var = fmax(sum2 / count - mean * mean, 0);
   return sqrt(var) / mean;
 }
-#line 440 "paper/model.nw"
+#line 457 "paper/model.nw"
 void model_release(Model *md)
 {
   if (md) qp_release(md->solver);
@@ -157,11 +172,12 @@ void model_free(Model *md)
   qp_free(md->solver);
   cholmod_l_free_sparse(&md->A, md->cm);
   mesh_free(md->mesh);
+  free(md->hooke);
   fem_dofs_free(md->dofs);
   free(md->b); free(md->Q); free(md->lo); free(md->T); free(md->slip);
   free(md);
 }
-#line 482 "paper/model.nw"
+#line 500 "paper/model.nw"
 int model_contact_stiffness(Model *md, double *S, Status *st)
 {
   const Fem_dofs *d = md->dofs;
@@ -174,17 +190,17 @@ int model_contact_stiffness(Model *md, double *S, Status *st)
   if ((rc = qp_schur(md->solver, 1e-6, Scc, st))) { free(Scc); return rc; }
   for (int c = 0; c < nc; c++) mean += Scc[(size_t) c * nc + c] / nc;
   
-#line 501 "paper/model.nw"
+#line 519 "paper/model.nw"
 memset(S, 0, (size_t) N1 * N1 * sizeof *S);
 for (int i = 0; i < N1; i++) S[(size_t) i * N1 + i] = mean;
 for (int c = 0; c < nc; c++)
   for (int e = 0; e < nc; e++)
     S[(size_t) d->contact_col[c] * N1 + d->contact_col[e]] = Scc[(size_t) c * nc + e];
-#line 494 "paper/model.nw"
+#line 512 "paper/model.nw"
   free(Scc);
   return STATUS_OK;
 }
-#line 567 "paper/model.nw"
+#line 587 "paper/model.nw"
 int model_summary(const Model *md, Model_summary *sum, Status *st)
 {
   const Fem_dofs *d = md->dofs;
@@ -192,23 +208,23 @@ int model_summary(const Model *md, Model_summary *sum, Status *st)
   if (!r) return status_set(st, STATUS_MEMORY, "summary: out of memory "
                             "for the reactions of %d DOFs", d->ndof);
   memset(sum, 0, sizeof *sum);
-  fem_reactions(md->mesh, d, &md->hooke, md->problem, md->Q, r);
+  fem_reactions(md->mesh, d, md->hooke, md->problem, md->Q, r);
   
-#line 588 "paper/model.nw"
+#line 608 "paper/model.nw"
 for (int k = 0; k < d->ndof; k++) {
   int side = d->unknown[k] < 0 ? fem_reaction_side(md->mesh, md->problem, k) : -1;
   if (side >= 0) sum->reaction[side][k % 2] += r[k];
 }
-#line 576 "paper/model.nw"
+#line 596 "paper/model.nw"
   free(r);
   
-#line 595 "paper/model.nw"
+#line 615 "paper/model.nw"
 for (int c = 0; c < d->nc; c++)
   if (md->Q[d->contact[c]] <= md->lo[c]) {
     sum->pressure_max = fmax(sum->pressure_max, model_pressure(md, c));
     sum->contact_length += mesh_tributary(md->mesh, d->contact_col[c]);
   }
-#line 578 "paper/model.nw"
+#line 598 "paper/model.nw"
   for (int t = 0; t < md->mesh->ntri; t++) {
     double s[5];
     model_stress(md, t, s);
@@ -216,26 +232,27 @@ for (int c = 0; c < d->nc; c++)
   }
   return STATUS_OK;
 }
-#line 623 "paper/model.nw"
+#line 643 "paper/model.nw"
 void model_stress(const Model *md, int t, double s[5])
 {
   long double e[3], sigma[3];
   fem_triangle_strain(md->mesh, md->dofs, md->Q, t, e);
-  fem_element_stress(&md->hooke, e, sigma);
+  const Fem_hooke *H = md->hooke + mesh_material(md->mesh, t);
+  fem_element_stress(H, e, sigma);
   for (int r = 0; r < 3; r++) s[r] = (double) sigma[r];
   s[3] = md->problem->model == MODEL_PLANE_STRAIN
-       ? (double) fem_element_stress33(&md->hooke, e) : 0.0;
+       ? (double) fem_element_stress33(H, e) : 0.0;
   s[4] = sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[3]) * (s[1] - s[3])
                      + (s[3] - s[0]) * (s[3] - s[0])) + 3 * s[2] * s[2]);
 }
-#line 642 "paper/model.nw"
+#line 663 "paper/model.nw"
 double model_displacement_max(const Model *md)
 {
   double u = 0;
   for (int i = 0; i < md->dofs->n; i++) u = fmax(u, fabs(md->Q[i]));
   return u;
 }
-#line 656 "paper/model.nw"
+#line 677 "paper/model.nw"
 int model_contact_count(const Model *md) { return md->dofs->nc; }
 
 const int *model_contact_columns(const Model *md) { return md->dofs->contact_col; }
@@ -247,7 +264,7 @@ int model_contact_state(Model *md, double *S, double *v, double *T, Status *st)
   for (int c = 0; c < m; c++) v[c] = md->Q[md->dofs->contact[c]], T[c] = md->T[c];
   return STATUS_OK;
 }
-#line 673 "paper/model.nw"
+#line 694 "paper/model.nw"
 /* eps (U + sum_i |b_i Q_i| + friction), E = U - b'Q + friction, U >= 0 */
 double model_energy_rounding(const Model *md)
 {

@@ -12,11 +12,12 @@
 #line 67 "paper/model.nw"
 typedef struct Model Model;
 
-#line 543 "paper/model.nw"
+#line 562 "paper/model.nw"
 /* what a summary says of the state at the last design solved */
 typedef struct {
-  double reaction[SIDE_COUNT][2]; /* N/m: the force of each side on the
-                                     body, (x1, x2); 0 where it holds none */
+  double reaction[SIDE_COUNT + PROBLEM_NAMED][2]; /* N/m: the force of
+     each side, then of each slot of a part's curves, on the body, (x1, x2);
+     0 where it holds none */
   double pressure_max;    /* Pa: the peak contact pressure over the nodes
                              in contact; 0 where none is */
   double contact_length;  /* m: the tributary lengths of the nodes in
@@ -24,7 +25,7 @@ typedef struct {
   double von_mises_max;   /* Pa: the largest von Mises stress of a triangle */
 } Model_summary;
 
-#line 161 "paper/model.nw"
+#line 163 "paper/model.nw"
 Model *model_new(const Problem *p, const Qp_options *solver,
                  cholmod_common *cm, Status *st);
 /* contact pressure at contact DOF c: T_c over the tributary length */
@@ -61,7 +62,7 @@ void model_guess_contact(Model *md, const double *X, const double *gap);
    factorises anew (the memory of another model built meanwhile) */
 void model_release(Model *md);
 void model_free(Model *md);
-#line 556 "paper/model.nw"
+#line 576 "paper/model.nw"
 /* s = sigma11, sigma22, sigma12, sigma33 and the von Mises stress of
    triangle t at the last state solved [Pa when Young's modulus is] */
 void model_stress(const Model *md, int t, double s[5]);
@@ -77,7 +78,7 @@ cholmod_common *model_cholmod(const Model *md);
 const Mesh *model_mesh(const Model *md);
 /* the unknowns and the contact DOFs I */
 const Fem_dofs *model_dofs(const Model *md);
-/* Hooke's law of the problem's plane model */
+/* Hooke's laws of the materials, indexed by mesh_material */
 const Fem_hooke *model_hooke(const Model *md);
 /* A(X), n x n, both triangles stored */
 const cholmod_sparse *model_stiffness(const Model *md);

@@ -10,7 +10,9 @@ struct Model {
   cholmod_common *cm;   /* CHOLMOD's workspace (not owned) */
   Mesh *mesh;           /* moved to the last design solved */
   Fem_dofs *dofs;       /* unknowns and contact DOFs I */
-  Fem_hooke hooke;      /* Hooke's law of the problem's plane model */
+  Fem_hooke *hooke;     /* Hooke's law of each material, indexed by
+                           mesh_material: the problem's, then a part's
+                           regions' (1 + part.nregion) */
   cholmod_sparse *A;    /* A(X), n x n */
   double *b;            /* n: F(X) + P(X) */
   double *lo;           /* nc: the bounds -X_i of the contact DOFs */

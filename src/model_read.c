@@ -1,10 +1,10 @@
-#line 693 "paper/model.nw"
+#line 714 "paper/model.nw"
 #include "model_private.h"
 const Problem *model_problem(const Model *md) { return md->problem; }
 cholmod_common *model_cholmod(const Model *md) { return md->cm; }
 const Mesh *model_mesh(const Model *md) { return md->mesh; }
 const Fem_dofs *model_dofs(const Model *md) { return md->dofs; }
-const Fem_hooke *model_hooke(const Model *md) { return &md->hooke; }
+const Fem_hooke *model_hooke(const Model *md) { return md->hooke; }
 const cholmod_sparse *model_stiffness(const Model *md) { return md->A; }
 const double *model_load(const Model *md) { return md->b; }
 const double *model_bounds(const Model *md) { return md->lo; }

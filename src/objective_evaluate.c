@@ -1,10 +1,10 @@
-#line 643 "paper/objective.nw"
+#line 644 "paper/objective.nw"
 #include <float.h>
 #include <math.h>
 #include "objective.h"
 #include "grad.h"
 #include "coulomb.h"
-#line 652 "paper/objective.nw"
+#line 653 "paper/objective.nw"
 /* eps m(J): the rounding of J's evaluation; delta E for the energy */
 static double evaluation_rounding(const Model *md, Objective_kind kind, double J)
 {

@@ -59,13 +59,14 @@ static double bilinear_height(const double gy[3], const double u[6],
 }
 #line 427 "paper/objective.nw"
 /* the strain (times d) of q on the triangle, and D times it */
-static void strain_of(const Model *md, const double gx[3], const double gy[3],
-                      const double q[6], double e[3], double De[3])
+static void strain_of(const Model *md, int t, const double gx[3],
+                      const double gy[3], const double q[6], double e[3],
+                      double De[3])
 {
   long double el[3];
   fem_element_strain(gx, gy, q, el);
   for (int r = 0; r < 3; r++) e[r] = (double) el[r];
-  const Fem_hooke *h = model_hooke(md);
+  const Fem_hooke *h = model_hooke(md) + mesh_material(model_mesh(md), t);
   for (int r = 0; r < 3; r++)
     De[r] = h->D[r][0] * e[0] + h->D[r][1] * e[1] + h->D[r][2] * e[2];
 }
@@ -83,8 +84,8 @@ static void triangle_terms(const Model *md, int t, const double *u,
   fem_element_q(m, dofs, v, t, ve);
   fem_element_gradients(xy, gx, gy);
   double d = xy[0] * gx[0] + xy[2] * gx[1] + xy[4] * gx[2];
-  strain_of(md, gx, gy, q, eq, Dq);
-  strain_of(md, gx, gy, ue, eu, Du);
+  strain_of(md, t, gx, gy, q, eq, Dq);
+  strain_of(md, t, gx, gy, ue, eu, Du);
   for (int k = 0; k < 3; k++) {
     int node = m->tri[3 * t + k];
     double rate = mesh_motion(m, node);
@@ -96,7 +97,7 @@ static void triangle_terms(const Model *md, int t, const double *u,
     G[node % m->ncol] += rate * dy;
   }
 }
-#line 471 "paper/objective.nw"
+#line 472 "paper/objective.nw"
 /* G += sum_c dw[c] d omega_c / dX, for the columns col[c] */
 static void tributary_term(const Mesh *m, int nc, const int *col,
                            const double *dw, double *G)
@@ -110,7 +111,7 @@ static void tributary_term(const Mesh *m, int nc, const int *col,
         G[k + 1] += r, G[k] -= r;
       }
 }
-#line 491 "paper/objective.nw"
+#line 492 "paper/objective.nw"
 static int sliding_term(const Model *md, const char *held, const double *lam,
                         double *G, Status *st)
 {
@@ -127,7 +128,7 @@ static int sliding_term(const Model *md, const char *held, const double *lam,
   free(dw);
   return STATUS_OK;
 }
-#line 529 "paper/objective.nw"
+#line 530 "paper/objective.nw"
 /* eps sum_i |w_i| rho_i, rho_i = sum_j |A_ij Q_j| + |b_i| */
 static double state_rounding(const Model *md, const double *w)
 {
@@ -143,7 +144,7 @@ static double state_rounding(const Model *md, const double *w)
   }
   return DBL_EPSILON * (double) s;
 }
-#line 548 "paper/objective.nw"
+#line 549 "paper/objective.nw"
 /* G from the partials dT, dw already in v; kind OBJECTIVE_COUNT: a
    functional of T alone */
 static int gradient_terms(const Model *md, Objective_kind kind, double *v,
@@ -187,7 +188,7 @@ static int gradient_scratch(const Model *md, double **v, char **held, Status *st
   free(*v), free(*held);
   return status_set(st, STATUS_MEMORY, "objective: out of memory");
 }
-#line 602 "paper/objective.nw"
+#line 603 "paper/objective.nw"
 int objective_gradient_fixed(const Model *md, const Objective *o,
                              const double *t, double *lam, char *held_out,
                              double *G, double *state, Status *st)

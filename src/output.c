@@ -1,4 +1,4 @@
-#line 341 "paper/output.nw"
+#line 347 "paper/output.nw"
 #define _XOPEN_SOURCE 700   /* nftw, to remove a folder tree */
 #include <dirent.h>
 #include <errno.h>
@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 441 "paper/output.nw"
+#line 447 "paper/output.nw"
 /* *mark = v, after every write before it, as a signal handler sees them */
 void output_publish(volatile sig_atomic_t *mark, int v)
 {
@@ -68,7 +68,7 @@ void output_abort_now(void *arg)
   rmdir(o->stage);
 }
 
-#line 385 "paper/output.nw"
+#line 391 "paper/output.nw"
 /* path and its parents; a failure names the parent, or the folder
    shown (the user's) where it is path itself, the staging folder */
 static int output_mkdirs(const char *path, const char *shown, Status *st)
@@ -85,7 +85,7 @@ static int output_mkdirs(const char *path, const char *shown, Status *st)
     }
 }
 
-#line 498 "paper/output.nw"
+#line 504 "paper/output.nw"
 static int output_remove_one(const char *path, const struct stat *sb, int flag,
                              struct FTW *ftw)
 {
@@ -97,7 +97,7 @@ static void output_remove_tree(const char *path)
 {
   nftw(path, output_remove_one, 16, FTW_DEPTH | FTW_PHYS);
 }
-#line 739 "paper/output.nw"
+#line 745 "paper/output.nw"
 static void output_remove_dead(const char *dir)
 {
   char parent[1100], prefix[300], path[1400];
@@ -118,7 +118,7 @@ static void output_remove_dead(const char *dir)
   if (d) closedir(d);
 }
 
-#line 404 "paper/output.nw"
+#line 410 "paper/output.nw"
 int output_begin(Output *o, const char *dir, const char *command, int replace,
                  Status *st)
 {
@@ -131,7 +131,7 @@ int output_begin(Output *o, const char *dir, const char *command, int replace,
   if (!rc) output_remove_dead(dir);
   return rc ? rc : output_mkdirs(o->stage, dir, st);
 }
-#line 777 "paper/output.nw"
+#line 783 "paper/output.nw"
 FILE *output_open(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -170,7 +170,7 @@ int output_close(Output *o, FILE *f, Status *st)
 {
   return output_finish(f, o->dir, o->file[o->nfiles - 1], st);
 }
-#line 819 "paper/output.nw"
+#line 825 "paper/output.nw"
 FILE *output_open_in(Output *o, const char *sub, const char *name,
                      Status *st)
 {
@@ -178,7 +178,7 @@ FILE *output_open_in(Output *o, const char *sub, const char *name,
   snprintf(path, sizeof path, "%s%s%s", sub, *sub ? "/" : "", name);
   return output_open(o, path, st);
 }
-#line 831 "paper/output.nw"
+#line 837 "paper/output.nw"
 int output_folder(Output *o, const char *name, Status *st)
 {
   char path[1300];
@@ -206,7 +206,7 @@ FILE *output_open_in_folder(Output *o, const char *folder,
   }
   return f;
 }
-#line 938 "paper/output.nw"
+#line 944 "paper/output.nw"
 typedef struct {
   char **path;              /* relative to the root; "" is the root */
   int n, size;
@@ -269,7 +269,7 @@ static void output_tree_free(Output_tree *t)
   free(t->path);
 }
 
-#line 880 "paper/output.nw"
+#line 886 "paper/output.nw"
 /* hold SIGINT and SIGTERM (on), or let them through again (off) */
 static void output_hold_signals(int on, sigset_t *saved)
 {
@@ -321,7 +321,7 @@ int output_commit(Output *o, Status *st)
   output_hold_signals(0, &saved);
   return rc;
 }
-#line 1003 "paper/output.nw"
+#line 1009 "paper/output.nw"
 int output_end(Output *o, int rc, Status *st)
 {
   if (rc) output_abort(o);

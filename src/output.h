@@ -1,4 +1,4 @@
-#line 141 "paper/output.nw"
+#line 147 "paper/output.nw"
 #ifndef CONTACTOPT_OUTPUT_H
 #define CONTACTOPT_OUTPUT_H
 #include <signal.h>
@@ -53,7 +53,7 @@ int output_state(Output *o, const char *sub, const Model *md,
 /* out/NAME + suffix for the scene file path/NAME.scene */
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size);
-#line 205 "paper/output.nw"
+#line 211 "paper/output.nw"
 typedef struct {
   const char *scene;        /* the scene file, as given */
   const char *state_solver; /* the name of the state solver */
@@ -70,7 +70,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st);
 /* gradcheck: summary.dat and gradient.dat, the model solved at X */
 int output_gradcheck(Output *o, const Output_run *run, const Model *md,
                      const Grad_check *gc, Status *st);
-#line 229 "paper/output.nw"
+#line 235 "paper/output.nw"
 typedef struct {
   int n, size;              /* iterations recorded, room */
   int ndesign;              /* N+1 */
@@ -99,7 +99,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st);
-#line 262 "paper/output.nw"
+#line 268 "paper/output.nw"
 typedef struct {
   double energy;            /* E at the start, in B */
   double cv;                /* the contact-pressure CV there */
@@ -114,5 +114,5 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st);
-#line 198 "paper/output.nw"
+#line 204 "paper/output.nw"
 #endif

@@ -1,13 +1,13 @@
-#line 1649 "paper/output.nw"
+#line 1679 "paper/output.nw"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1661 "paper/output.nw"
+#line 1691 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st);
-#line 1510 "paper/output.nw"
+#line 1540 "paper/output.nw"
 static void output_objectives_summary(FILE *f, const Objective *ob,
                                       const double *J, const Output_start *start)
 {
@@ -19,7 +19,7 @@ static void output_objectives_summary(FILE *f, const Objective *ob,
     if (!isnan(J[k])) fprintf(f, "final_%s %.15g\n", objective_names[k], J[k]);
   }
 }
-#line 1729 "paper/output.nw"
+#line 1759 "paper/output.nw"
 static void history_vtu(Output_history *h, int iteration, const double *X)
 {
   const Mesh *m = model_mesh(h->md);
@@ -40,7 +40,7 @@ static void history_vtu(Output_history *h, int iteration, const double *X)
   else output_finish(f, h->o->dir, path, &h->vtu);
 }
 
-#line 1668 "paper/output.nw"
+#line 1698 "paper/output.nw"
 Output_history *output_history_new(int ndesign, Status *st)
 {
   Output_history *h = calloc(1, sizeof *h);
@@ -85,7 +85,7 @@ void output_history_free(Output_history *h)
   free(h->X);
   free(h);
 }
-#line 1757 "paper/output.nw"
+#line 1787 "paper/output.nw"
 static int history_iterates(Output *o, const Problem *p,
                             const Output_history *h, Status *st)
 {
@@ -119,7 +119,7 @@ int output_history(Output *o, const Problem *p, const Output_history *h,
     return rc;
   return h->o ? history_pvd(o, h, st) : STATUS_OK;
 }
-#line 1795 "paper/output.nw"
+#line 1825 "paper/output.nw"
 static int history_pvd(Output *o, const Output_history *h, Status *st)
 {
   FILE *f = output_open(o, "iterates.pvd", st);
@@ -132,7 +132,7 @@ static int history_pvd(Output *o, const Output_history *h, Status *st)
   fputs("</Collection>\n</VTKFile>\n", f);
   return output_close(o, f, st);
 }
-#line 1818 "paper/output.nw"
+#line 1848 "paper/output.nw"
 int output_multipliers(Output *o, const Problem *p, const double *X,
                        const double *G, const Design_multipliers *m,
                        Status *st)
@@ -151,7 +151,7 @@ int output_multipliers(Output *o, const Problem *p, const double *X,
             i < p->N ? m->up[i] : 0.0, i < p->N ? m->down[i] : 0.0);
   return output_close(o, f, st);
 }
-#line 1840 "paper/output.nw"
+#line 1870 "paper/output.nw"
 int output_start(Output *o, const Model *md, const double *X, double moved,
                  double q, Output_start *start, Status *st)
 {
@@ -162,7 +162,7 @@ int output_start(Output *o, const Model *md, const double *X, double moved,
   start->moved = moved;
   return output_objectives(md, q, &start->J, st);
 }
-#line 1859 "paper/output.nw"
+#line 1889 "paper/output.nw"
 int output_opt_summary(Output *o, const Output_run *run, const Model *md,
                        const Output_start *start, const Opt_report *r,
                        double mu, Status *st)
@@ -187,17 +187,17 @@ int output_opt_summary(Output *o, const Output_run *run, const Model *md,
           r->seconds, r->metric_seconds, r->state_seconds);
   if (r->model_seconds > 0) fprintf(f, "model_seconds %.6f\n", r->model_seconds);
   
-#line 1903 "paper/output.nw"
+#line 1933 "paper/output.nw"
 if (p && (!strcmp(run->optimizer, "slsqp") || !strcmp(run->optimizer, "mma")))
   fprintf(f, "subproblem_seconds %.6f\n", r->subproblem_seconds);
-#line 1883 "paper/output.nw"
+#line 1913 "paper/output.nw"
   
-#line 1911 "paper/output.nw"
+#line 1941 "paper/output.nw"
 if (r->starts > 1)
   fprintf(f, "starts %d\nstarts_best %d\nstarts_min %.15g\nstarts_max %.15g\n"
           "starts_evaluations %d\nstarts_seconds %.6f\n", r->starts, r->starts_best,
           r->starts_min, r->starts_max, r->starts_evaluations, r->starts_seconds);
-#line 1884 "paper/output.nw"
+#line 1914 "paper/output.nw"
   fprintf(f, "monitor_seconds %.6f\n", r->monitor_seconds);
   if (r->levels > 1)
     fprintf(f, "levels %d\ncoarse_evaluations %d\ncoarse_seconds %.6f\n",

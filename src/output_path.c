@@ -1,4 +1,4 @@
-#line 517 "paper/output.nw"
+#line 523 "paper/output.nw"
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -9,14 +9,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "output_private.h"
-#line 539 "paper/output.nw"
+#line 545 "paper/output.nw"
 /* status_set with the code of errno e: STATUS_MEMORY for ENOMEM */
 int output_errno(Status *st, int e, const char *path, const char *what)
 {
   return status_set(st, e == ENOMEM ? STATUS_MEMORY : STATUS_SYSTEM, "%s: %s: %s",
                     path, what, strerror(e));
 }
-#line 551 "paper/output.nw"
+#line 557 "paper/output.nw"
 int output_dir_name(const char *given, char *dir, size_t size, Status *st)
 {
   size_t n = strlen(given);
@@ -35,7 +35,7 @@ int output_dir_name(const char *given, char *dir, size_t size, Status *st)
   snprintf(dir, size, "%.*s", (int) n, given);
   return STATUS_OK;
 }
-#line 579 "paper/output.nw"
+#line 585 "paper/output.nw"
 /* parent = the folder of path: all before its last slash, "." or "/" */
 static void output_parent(const char *path, char *parent, size_t size)
 {
@@ -101,7 +101,7 @@ int output_check_file(const char *path, const char *dir, Status *st)
   if (stat(folder, &sb) && errno == ENOENT && !strcmp(a, b)) return STATUS_OK;
   return output_creatable(path, 0, st);
 }
-#line 664 "paper/output.nw"
+#line 670 "paper/output.nw"
 /* the command of the run in dir, from its summary.dat: its command line,
    or (written before there was one) optimize where it names an optimizer,
    gradcheck where it counts nodes_checked, solve otherwise */
@@ -173,7 +173,7 @@ int output_check(const char *dir, const char *command, int replace, Status *st)
                              "are not a run's (no summary.dat): choose another -o", dir)
                 : output_movable(dir, st);
 }
-#line 763 "paper/output.nw"
+#line 769 "paper/output.nw"
 void output_default_dir(const char *scene, const char *suffix, char *dir,
                         size_t size)
 {

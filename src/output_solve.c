@@ -1,10 +1,10 @@
-#line 1416 "paper/output.nw"
+#line 1436 "paper/output.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include "output_private.h"
 #include "threads.h"
-#line 1445 "paper/output.nw"
+#line 1465 "paper/output.nw"
 int output_solve(Output *o, const Output_run *run, const Model *md,
                  const double *X, Status *st)
 {
@@ -34,21 +34,30 @@ int output_solve(Output *o, const Output_run *run, const Model *md,
   threads_summary(f);
   return output_close(o, f, st);
 }
-#line 1490 "paper/output.nw"
+#line 1511 "paper/output.nw"
 void output_reactions(FILE *f, const Model *md, const Model_summary *ms)
 {
   static const char *const side[SIDE_COUNT] = { "left", "right", "top" };
+  const Problem *p = model_problem(md);
   for (int s = 0; s < SIDE_COUNT; s++) {
-    Problem_bc_kind kind = model_problem(md)->side[s].kind;
+    Problem_bc_kind kind = p->side[s].kind;
     if (kind == BC_CLAMPED || kind == BC_ROLLER)
       fprintf(f, "reaction_%s_x1 %.15g\nreaction_%s_x2 %.15g\n", side[s],
               ms->reaction[s][0], side[s], ms->reaction[s][1]);
+  }
+  for (int s = 0; s < p->part.ncurve; s++) {
+    Problem_bc_kind kind = p->part.curve[s].kind;
+    const char *name = p->part.curve[s].name;
+    const double *r = ms->reaction[SIDE_COUNT + s];
+    if (kind == BC_CLAMPED || kind == BC_ROLLER)
+      fprintf(f, "reaction_boundary.%s_x1 %.15g\nreaction_boundary.%s_x2 %.15g\n", name, r[0],
+              name, r[1]);
   }
   fprintf(f, "contact_pressure_max %.15g\ncontact_length %.15g\n"
              "von_mises_max %.15g\n", ms->pressure_max, ms->contact_length,
           ms->von_mises_max);
 }
-#line 1528 "paper/output.nw"
+#line 1558 "paper/output.nw"
 int output_objectives(const Model *md, double q, Objective_values *J, Status *st)
 {
   for (int k = 0; objective_names[k]; k++) {
@@ -60,7 +69,7 @@ int output_objectives(const Model *md, double q, Objective_values *J, Status *st
   }
   return STATUS_OK;
 }
-#line 1546 "paper/output.nw"
+#line 1576 "paper/output.nw"
 void output_friction(FILE *f, const Model *md)
 {
   const Problem *p = model_problem(md);
@@ -75,7 +84,7 @@ void output_friction(FILE *f, const Model *md)
     fprintf(f, "fixed_point_iterations %d\nfixed_point_residual %.3e\n",
             model_fixed_point_iterations(md), model_fixed_point_residual(md));
 }
-#line 1565 "paper/output.nw"
+#line 1595 "paper/output.nw"
 int output_matrix_market(const char *path, const Model *md, Status *st)
 {
   char tmp[1100];
@@ -100,7 +109,7 @@ int output_matrix_market(const char *path, const Model *md, Status *st)
   }
   return STATUS_OK;
 }
-#line 1601 "paper/output.nw"
+#line 1631 "paper/output.nw"
 static int output_gradient(Output *o, const Model *md, const Grad_check *gc,
                            Status *st)
 {

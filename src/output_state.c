@@ -1,7 +1,7 @@
-#line 1016 "paper/output.nw"
+#line 1022 "paper/output.nw"
 #include <stdio.h>
 #include "output_private.h"
-#line 1022 "paper/output.nw"
+#line 1028 "paper/output.nw"
 static int output_shape(Output *o, const char *sub, const Model *md,
                         const double *X, Status *st)
 {
@@ -12,7 +12,7 @@ static int output_shape(Output *o, const char *sub, const Model *md,
     fprintf(f, "%.10g %.15g\n", model_mesh(md)->xy[2 * i], X[i]);
   return output_close(o, f, st);
 }
-#line 1035 "paper/output.nw"
+#line 1041 "paper/output.nw"
 static int output_contact(Output *o, const char *sub, const Model *md,
                           const double *X, Status *st)
 {
@@ -28,19 +28,19 @@ static int output_contact(Output *o, const char *sub, const Model *md,
             X[i], u2, u2 + X[i], model_forces(md)[c],
             model_pressure(md, c));
     
-#line 1059 "paper/output.nw"
+#line 1065 "paper/output.nw"
 if (d->nt) {
   while (k < d->nt && d->tangent_col[k] < i) k++;
   int here = k < d->nt && d->tangent_col[k] == i;
   fprintf(f, " %.15g %.15g", here ? model_state(md)[d->tangent[k]] : 0.0,
           here ? model_forces(md)[d->nc + k] : 0.0);
 }
-#line 1050 "paper/output.nw"
+#line 1056 "paper/output.nw"
     fputc('\n', f);
   }
   return output_close(o, f, st);
 }
-#line 1068 "paper/output.nw"
+#line 1074 "paper/output.nw"
 static int output_nodes(Output *o, const char *sub, const Model *md,
                         Status *st)
 {
@@ -54,7 +54,7 @@ static int output_nodes(Output *o, const char *sub, const Model *md,
             output_u(md, k, 1));
   return output_close(o, f, st);
 }
-#line 1084 "paper/output.nw"
+#line 1090 "paper/output.nw"
 static int output_triangles(Output *o, const char *sub, const Model *md,
                             Status *st)
 {
@@ -72,7 +72,7 @@ static int output_triangles(Output *o, const char *sub, const Model *md,
   }
   return output_close(o, f, st);
 }
-#line 1396 "paper/output.nw"
+#line 1416 "paper/output.nw"
 int output_state(Output *o, const char *sub, const Model *md,
                  const double *X, Status *st)
 {

@@ -1,4 +1,4 @@
-#line 1109 "paper/output.nw"
+#line 1115 "paper/output.nw"
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 #include <string.h>
 #include "output_private.h"
 
-#line 1154 "paper/output.nw"
+#line 1160 "paper/output.nw"
 typedef struct {
   const Model *md;          /* the state written */
   const double *X;          /* its design */
@@ -30,13 +30,13 @@ static size_t vtu_bytes(const Vtu_array *a)
 {
   return a->count * a->components * a->size;
 }
-#line 1209 "paper/output.nw"
+#line 1219 "paper/output.nw"
 double output_u(const Model *md, int node, int c)
 {
   int k = model_dofs(md)->unknown[2 * node + c];
   return k < 0 ? 0.0 : model_state(md)[k];
 }
-#line 1223 "paper/output.nw"
+#line 1233 "paper/output.nw"
 static void vtu_displacement(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
@@ -79,13 +79,13 @@ static void vtu_tangential(const Vtu_state *s, int which, void *values)
   memset(v, 0, model_mesh(s->md)->nnodes * sizeof *v);
   for (int k = 0; k < d->nt; k++) v[d->tangent_col[k]] = model_forces(s->md)[d->nc + k];
 }
-#line 1273 "paper/output.nw"
+#line 1283 "paper/output.nw"
 static void vtu_stress(const Vtu_state *s, int which, void *values)
 {
   double *v = values;
   for (int t = 0; t < model_mesh(s->md)->ntri; t++) v[t] = s->stress[5 * t + which];
 }
-#line 1285 "paper/output.nw"
+#line 1295 "paper/output.nw"
 static void vtu_points(const Vtu_state *s, int which, void *values)
 {
   const double *xy = model_mesh(s->md)->xy;
@@ -105,12 +105,22 @@ static void vtu_cells(const Vtu_state *s, int which, void *values)
     else for (int k = 0; k < 3; k++) v[3 * t + k] = m->tri[3 * t + k];
 }
 
+/* a part's triangles, which 0: the region (0 the strip, 1 the part
+   outside its named surfaces, 2 + k the geometry's physical surface k);
+   1: the material (0 the scene's [material], 1 + s its s-th named one) */
+static void vtu_part(const Vtu_state *s, int which, void *values)
+{
+  const Mesh *m = model_mesh(s->md);
+  int32_t *v = values;
+  for (int t = 0; t < m->ntri; t++) v[t] = which ? m->material[t] : m->region[t];
+}
+
 static void vtu_types(const Vtu_state *s, int which, void *values)
 {
   (void) which;
   memset(values, 5, model_mesh(s->md)->ntri);   /* VTK_TRIANGLE */
 }
-#line 1182 "paper/output.nw"
+#line 1188 "paper/output.nw"
 static const char *const vtu_stress_names[5] =
   { "sigma11", "sigma22", "sigma12", "sigma33", "von_mises" };
 
@@ -127,13 +137,17 @@ static int vtu_arrays(const Model *md, Vtu_array a[VTU_MAX_ARRAYS])
                            0, vtu_tangential };
   for (int k = 0; k < 5; k++)
     a[n++] = (Vtu_array) { "CellData", vtu_stress_names[k], "Float64", 1, nt, d, k, vtu_stress };
+  if (model_mesh(md)->material) {
+    a[n++] = (Vtu_array) { "CellData", "region", "Int32", 1, nt, 4, 0, vtu_part };
+    a[n++] = (Vtu_array) { "CellData", "material", "Int32", 1, nt, 4, 1, vtu_part };
+  }
   a[n++] = (Vtu_array) { "Points", "Points", "Float64", 3, np, d, 0, vtu_points };
   a[n++] = (Vtu_array) { "Cells", "connectivity", "Int32", 1, 3 * nt, 4, 0, vtu_cells };
   a[n++] = (Vtu_array) { "Cells", "offsets", "Int32", 1, nt, 4, 1, vtu_cells };
   a[n++] = (Vtu_array) { "Cells", "types", "UInt8", 1, nt, 1, 0, vtu_types };
   return n;
 }
-#line 1314 "paper/output.nw"
+#line 1334 "paper/output.nw"
 static const char *vtu_byte_order(void)
 {
   const uint16_t one = 1;
@@ -160,7 +174,7 @@ static void vtu_header(FILE *f, const Mesh *m, const Vtu_array *a, int n)
   fprintf(f, "</%s>\n</Piece>\n</UnstructuredGrid>\n"
              "<AppendedData encoding=\"raw\">\n_", a[n - 1].section);
 }
-#line 1345 "paper/output.nw"
+#line 1365 "paper/output.nw"
 static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
                      void *values)
 {
@@ -172,7 +186,7 @@ static void vtu_data(FILE *f, const Vtu_state *s, const Vtu_array *a, int n,
   }
   fprintf(f, "\n</AppendedData>\n</VTKFile>\n");
 }
-#line 1362 "paper/output.nw"
+#line 1382 "paper/output.nw"
 int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
 {
   Vtu_array a[VTU_MAX_ARRAYS];
@@ -191,7 +205,7 @@ int output_vtu_write(FILE *f, const Model *md, const double *X, Status *st)
   free(s.stress), free(values);
   return STATUS_OK;
 }
-#line 1383 "paper/output.nw"
+#line 1403 "paper/output.nw"
 int output_vtu(Output *o, const char *sub, const Model *md,
                const double *X, Status *st)
 {

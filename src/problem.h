@@ -1,8 +1,9 @@
 #line 95 "paper/problem.nw"
 #ifndef CONTACTOPT_PROBLEM_H
 #define CONTACTOPT_PROBLEM_H
+#include <stddef.h>
 
-#line 112 "paper/problem.nw"
+#line 113 "paper/problem.nw"
 /* The three sides of the body other than the contact surface. */
 typedef enum { SIDE_LEFT, SIDE_RIGHT, SIDE_TOP, SIDE_COUNT } Problem_side_id;
 /* What a side does: nothing, holds u = 0, holds the normal displacement
@@ -16,12 +17,12 @@ typedef struct {
                         coordinate (x2 on left/right, x1 on top), from < to */
   double P[2];       /* BC_TRACTION: traction (P1, P2) on it, N/m^2 */
 } Problem_side;
-#line 130 "paper/problem.nw"
+#line 131 "paper/problem.nw"
 typedef enum { MODEL_PLANE_STRESS, MODEL_PLANE_STRAIN } Problem_plane_model;
-#line 139 "paper/problem.nw"
+#line 140 "paper/problem.nw"
 typedef enum { CONTACT_FRICTIONLESS, CONTACT_TRESCA, CONTACT_COULOMB }
   Problem_contact_law;
-#line 151 "paper/problem.nw"
+#line 152 "paper/problem.nw"
 typedef enum { MATERIAL_ISOTROPIC, MATERIAL_ORTHOTROPIC } Problem_material_kind;
 typedef struct {
   Problem_material_kind kind;
@@ -30,13 +31,16 @@ typedef struct {
   double E3, nu13, nu23;     /* orthotropic in plane strain */
   double angle;              /* orthotropic: axis 1 from x1, degrees */
 } Problem_material;
-#line 169 "paper/problem.nw"
+#line 170 "paper/problem.nw"
 enum { PROBLEM_NAME = 64, PROBLEM_NAMED = 32 };
 typedef struct {
   char name[PROBLEM_NAME]; /* a physical curve of the geometry */
   Problem_bc_kind kind;    /* free, clamped, roller, traction, pressure */
   double P[2];             /* BC_TRACTION: the traction (P1, P2), Pa */
   double pressure;         /* BC_PRESSURE: Pa, pushing into the body */
+  int normal;              /* BC_ROLLER: the component it holds, 0 (u1,
+                              a vertical curve) or 1 (u2, a horizontal
+                              one), found in the geometry by the scene */
 } Problem_curve;
 typedef struct {
   char name[PROBLEM_NAME]; /* a physical surface of the geometry */
@@ -47,10 +51,14 @@ typedef struct {
   int refine;              /* mesh.refine: the geometry's own mesh sizes
                               are divided by it (N, M are multiplied) */
   int ncurve, nregion;     /* named curves and surfaces given a value */
+  double area;             /* found by the scene in the geometry's mesh: */
+  double load[2];          /* its area and the resultant of its curves'
+                              loads (N/m), for the check of a body that
+                              friction holds sideways */
   Problem_curve curve[PROBLEM_NAMED];
   Problem_region region[PROBLEM_NAMED];
 } Problem_part;
-#line 191 "paper/problem.nw"
+#line 199 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -81,7 +89,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 240 "paper/problem.nw"
+#line 248 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */
@@ -90,5 +98,12 @@ const char *problem_bc_name(Problem_bc_kind k);
 const char *problem_contact_name(Problem_contact_law law);
 /* x_i = a + i (b - a) / N, with x_0 = a and x_N = b exactly */
 double problem_node_x(const Problem *p, int i);
-#line 106 "paper/problem.nw"
+/* buf = the conditions that could hold the body, for a message:
+   "left.bc = .., right.bc = .., top.bc = .." (a part: its curves instead
+   of the top, "boundary.* free or loaded" when none holds anything) */
+void problem_supports(const Problem *p, char *buf, size_t size);
+/* the slot of part.curve (part.region) with this name, or -1 */
+int problem_curve_slot(const Problem *p, const char *name);
+int problem_region_slot(const Problem *p, const char *name);
+#line 107 "paper/problem.nw"
 #endif

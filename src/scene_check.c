@@ -6,9 +6,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "fem.h"
 #include "friction.h"
 #include "scene_private.h"
-#line 1920 "paper/scene.nw"
+#line 1921 "paper/scene.nw"
 /* E, b - a and every non-zero load / E lie in [WINDOW_MIN, WINDOW_MAX] */
 #define WINDOW_MIN 1e-30
 #define WINDOW_MAX 1e30
@@ -54,9 +55,9 @@ static int check_load(Scene_loader *L, const Scene *s, double x, double times,
                      "1e30] times E, where every product the solvers form is "
                      "finite", what, outside(fabs(x) * times / E, r));
 }
-#line 1886 "paper/scene.nw"
+#line 1887 "paper/scene.nw"
 static int read_contact(Scene_loader *L, Scene *s);
-#line 1980 "paper/scene.nw"
+#line 1981 "paper/scene.nw"
 /* [part] geometry: a readable file, kept by its absolute path; "": none */
 static int read_part(Scene_loader *L, Scene *s)
 {
@@ -82,7 +83,7 @@ static int read_part(Scene_loader *L, Scene *s)
     return scene_blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 2013 "paper/scene.nw"
+#line 2014 "paper/scene.nw"
 /* with a part: refuse any key of the rectangle in sec */
 static int refuse_rectangle(Scene_loader *L, const Scene *s, const char *sec)
 {
@@ -96,7 +97,7 @@ static int refuse_rectangle(Scene_loader *L, const Scene *s, const char *sec)
                        "rectangle's");
   return 0;
 }
-#line 2035 "paper/scene.nw"
+#line 2036 "paper/scene.nw"
 /* [geometry]: a < b, b - a in the window, gamma (b - a) finite */
 static int read_geometry(Scene_loader *L, Scene *s)
 {
@@ -121,7 +122,7 @@ static int read_geometry(Scene_loader *L, Scene *s)
     return scene_blame(L, "the area gamma (b - a) overflows a double");
   return 0;
 }
-#line 2069 "paper/scene.nw"
+#line 2070 "paper/scene.nw"
 /* [design]: N >= 1, C0 > 0, C1 >= 0, C2 > 0 */
 static int read_design(Scene_loader *L, Scene *s)
 {
@@ -139,7 +140,7 @@ static int read_design(Scene_loader *L, Scene *s)
     return scene_blame(L, "must be > 0 (the area of the body)");
   return 0;
 }
-#line 2105 "paper/scene.nw"
+#line 2106 "paper/scene.nw"
 /* [mesh]: M, R >= 1, refine >= 1, 72 N (M + R) <= INT_MAX after the
    refinement, C0 < C0prime < gamma */
 static int read_mesh(Scene_loader *L, Scene *s)
@@ -158,7 +159,7 @@ static int read_mesh(Scene_loader *L, Scene *s)
   if ((rc = scene_integer(L, "mesh", "refine", &k))) return rc;
   if (k < 1) return scene_blame(L, "must be >= 1 (the factor of N, M and R)");
   
-#line 2152 "paper/scene.nw"
+#line 2153 "paper/scene.nw"
 if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT_MAX))
   return scene_bad(L, scene_find(L, "mesh", k > 1 ? "refine" : part ? "M" : "R"),
                    "with design.N = %d, mesh.M = %d, mesh.R = %d and "
@@ -168,7 +169,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                    s->problem.N, s->problem.M, s->problem.R, k,
                    2.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R),
                    INT_MAX / 36);
-#line 2123 "paper/scene.nw"
+#line 2124 "paper/scene.nw"
   s->problem.N *= k, s->problem.M *= k, s->problem.R *= k;
   if (part) s->problem.part.refine = k;
   if ((rc = scene_get(L, s, "mesh", "C0prime"))) return rc;
@@ -186,7 +187,7 @@ if (!(72.0 * k * s->problem.N * k * ((double)s->problem.M + s->problem.R) <= INT
                      status_number(s->problem.C0prime, v));
   return 0;
 }
-#line 2185 "paper/scene.nw"
+#line 2186 "paper/scene.nw"
 /* B != {} iff 0 <= S <= C0 (b-a), S = gamma (b-a) - C2 */
 static int check_admissible(Scene_loader *L, Scene *s)
 {
@@ -200,7 +201,7 @@ static int check_admissible(Scene_loader *L, Scene *s)
                    ? "C0prime" : "gamma", status_number(S, v[0]),
                    status_number(s->problem.C0 * w, v[1]));
 }
-#line 2560 "paper/scene.nw"
+#line 2561 "paper/scene.nw"
 /* the modulus E = the value converted last: > 0 and in the window; what
    names it in the message */
 static int check_modulus(Scene_loader *L, double E, const char *what)
@@ -227,7 +228,7 @@ static int read_isotropic(Scene_loader *L, Scene *s, const char *sec,
   if (!(m->nu > -1)) return scene_blame(L, "nu must be > -1 (stability)");
   return 0;
 }
-#line 2595 "paper/scene.nw"
+#line 2596 "paper/scene.nw"
 /* with plane stress: refuse the keys of the third axis in sec */
 static int refuse_third_axis(Scene_loader *L, const char *sec)
 {
@@ -258,39 +259,7 @@ static int read_orthotropic(Scene_loader *L, Scene *s, const char *sec,
     return rc;
   return 0;
 }
-#line 2641 "paper/scene.nw"
-/* NULL, or why m is no elastic material under the plane model: in
-   place of the physics' own fem_material_refusal */
-static const char *material_refusal(const Problem_material *m,
-                                    Problem_plane_model model, char *buf,
-                                    size_t size)
-{
-  double nu21, nu31, nu32;
-  if (m->kind == MATERIAL_ISOTROPIC) return NULL;
-  if (!(m->nu12 * m->nu12 < m->E1 / m->E2))
-    return snprintf(buf, size, "nu12^2 = %.6g is not below E1 / E2 = %.6g: the "
-                    "material's energy would not be positive", m->nu12 * m->nu12,
-                    m->E1 / m->E2), buf;
-  if (model != MODEL_PLANE_STRAIN) return NULL;
-  nu21 = m->nu12 * m->E2 / m->E1;
-  nu31 = m->nu13 * m->E3 / m->E1;
-  nu32 = m->nu23 * m->E3 / m->E2;
-  if (!(m->nu13 * m->nu13 < m->E1 / m->E3))
-    return snprintf(buf, size, "nu13^2 = %.6g is not below E1 / E3 = %.6g: the "
-                    "material's energy would not be positive", m->nu13 * m->nu13,
-                    m->E1 / m->E3), buf;
-  if (!(m->nu23 * m->nu23 < m->E2 / m->E3))
-    return snprintf(buf, size, "nu23^2 = %.6g is not below E2 / E3 = %.6g: the "
-                    "material's energy would not be positive", m->nu23 * m->nu23,
-                    m->E2 / m->E3), buf;
-  if (!(1 - m->nu12 * nu21 - m->nu23 * nu32 - m->nu13 * nu31
-        - 2 * nu21 * nu32 * m->nu13 > 0))
-    return snprintf(buf, size, "1 - nu12 nu21 - nu23 nu32 - nu13 nu31 - 2 nu21 "
-                    "nu32 nu13 is not > 0: the material's energy would not be "
-                    "positive"), buf;
-  return NULL;
-}
-#line 2676 "paper/scene.nw"
+#line 2633 "paper/scene.nw"
 /* [material] or [material.NAME]: the kind, its keys, the material as a
    whole */
 static int read_material_of(Scene_loader *L, Scene *s, const char *sec,
@@ -307,11 +276,11 @@ static int read_material_of(Scene_loader *L, Scene *s, const char *sec,
       || (rc = m->kind == MATERIAL_ISOTROPIC ? read_isotropic(L, s, sec, m)
                                              : read_orthotropic(L, s, sec, m)))
     return rc;
-  if ((why = material_refusal(m, s->problem.model, buf, sizeof buf)))
+  if ((why = fem_material_refusal(m, s->problem.model, buf, sizeof buf)))
     return scene_bad(L, &kind, "%s", why);
   return 0;
 }
-#line 2700 "paper/scene.nw"
+#line 2657 "paper/scene.nw"
 /* [material]: the plane model, then the material of the body */
 static int read_material(Scene_loader *L, Scene *s)
 {
@@ -319,7 +288,7 @@ static int read_material(Scene_loader *L, Scene *s)
   if ((rc = scene_get(L, s, "material", "model"))) return rc;
   return read_material_of(L, s, "material", &s->problem.material);
 }
-#line 2717 "paper/scene.nw"
+#line 2674 "paper/scene.nw"
 /* the loaded interval [from, to] inside the side, and a non-zero P */
 static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -328,7 +297,7 @@ static int read_traction(Scene_loader *L, Scene *s, Problem_side_id id)
   char v[2][STATUS_NUMBER];
   int rc;
   
-#line 2739 "paper/scene.nw"
+#line 2696 "paper/scene.nw"
 double lo = id == SIDE_TOP ? s->problem.a : s->problem.C0prime;
 double hi = id == SIDE_TOP ? s->problem.b : s->problem.gamma;
 const char *part = id == SIDE_TOP ? "the top side, [a, b]" :
@@ -344,7 +313,7 @@ if (!(d->to > d->from))
 if (!(d->to <= hi))
   return scene_blame(L, "the loaded interval must lie in %s = [%s, %s]", part,
                      status_number(lo, v[0]), status_number(hi, v[1]));
-#line 2725 "paper/scene.nw"
+#line 2682 "paper/scene.nw"
   if ((rc = scene_get(L, s, sec, "P1"))
       || (rc = check_load(L, s, d->P[0], 1, "|P1|"))
       || (rc = scene_get(L, s, sec, "P2"))
@@ -355,7 +324,7 @@ if (!(d->to <= hi))
                      "zero: use bc = free", sec, sec);
   return 0;
 }
-#line 2761 "paper/scene.nw"
+#line 2718 "paper/scene.nw"
 /* [left], [right] or [top]: the condition, free when not given */
 static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
 {
@@ -371,41 +340,30 @@ static int read_side(Scene_loader *L, Scene *s, Problem_side_id id)
                        "[boundary.NAME]");
   return *kind == BC_TRACTION ? read_traction(L, s, id) : 0;
 }
-#line 2797 "paper/scene.nw"
-/* the number of the named curves of a part whose condition is kind */
-static int curves(const Problem *p, Problem_bc_kind kind)
-{
-  int j, n = 0;
-  for (j = 0; j < p->part.ncurve; j++) n += p->part.curve[j].kind == kind;
-  return n;
-}
-
+#line 2752 "paper/scene.nw"
 /* some side holds u1, or friction can hold the body sideways */
 static int check_held(Scene_loader *L, Scene *s)
 {
   const Problem *p = &s->problem;
   Friction_hold h = friction_hold(p);
-  char sides[96];
-  if (friction_side_holds(p, 0) || curves(p, BC_CLAMPED) || curves(p, BC_ROLLER))
-    return 0;
-  snprintf(sides, sizeof sides, "left.bc = %s, right.bc = %s, top.bc = %s",
-           problem_bc_name(p->side[0].kind), problem_bc_name(p->side[1].kind),
-           problem_bc_name(p->side[2].kind));
+  char sides[256];
+  if (friction_side_holds(p, 0)) return 0;
+  problem_supports(p, sides, sizeof sides);
   if (p->contact == CONTACT_FRICTIONLESS)
     return scene_fail(L, "%s: %s: no side holds u1: frictionless contact cannot "
                       "stop the body sliding (singular problem)", L->path, sides);
   
-#line 2829 "paper/scene.nw"
+#line 2773 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && friction_side_holds(p, 1))
   return scene_fail(L, "%s: %s: no side holds u1, and the top holds u2: Coulomb "
                     "friction's bound, its coefficient times the normal forces, "
                     "is not known before the solve (their sum is the vertical load "
                     "only when no side holds u2); use contact.model = tresca, or "
                     "hold u1 on a side", L->path, sides);
-#line 2820 "paper/scene.nw"
+#line 2764 "paper/scene.nw"
   if (h.capacity > h.load) return 0;
   
-#line 2838 "paper/scene.nw"
+#line 2782 "paper/scene.nw"
 if (p->contact == CONTACT_COULOMB && h.vertical <= 0)
   return scene_fail(L, "%s: %s: the body is not held: the loads do not press it "
                     "onto the foundation (the load that presses it down is %g N/m), "
@@ -421,9 +379,9 @@ return scene_fail(L, "%s: %s: no side holds u1, and friction cannot hold the "
                   "holds at most %g N/m sideways, not more than the horizontal load "
                   "of %g N/m",
                   L->path, sides, p->friction, h.vertical, h.capacity, h.load);
-#line 2822 "paper/scene.nw"
+#line 2766 "paper/scene.nw"
 }
-#line 2857 "paper/scene.nw"
+#line 2801 "paper/scene.nw"
 /* the three sides; with a part, the left and right ones, and no top */
 static int read_sides(Scene_loader *L, Scene *s)
 {
@@ -435,7 +393,7 @@ static int read_sides(Scene_loader *L, Scene *s)
       return rc;
   return 0;
 }
-#line 2884 "paper/scene.nw"
+#line 2828 "paper/scene.nw"
 /* [boundary.NAME]: the condition of the curve c */
 static int read_curve(Scene_loader *L, Scene *s, const char *sec,
                       Problem_curve *c)
@@ -493,7 +451,29 @@ static int read_named(Scene_loader *L, Scene *s)
   part->nregion = n;
   return 0;
 }
-#line 2958 "paper/scene.nw"
+#line 2896 "paper/scene.nw"
+/* a part: mesh it once; its rollers' components, area and curves' load */
+static int check_part(Scene_loader *L, Scene *s)
+{
+  Problem *p = &s->problem;
+  Status st = {0};
+  Mesh *m;
+  if (!p->part.geometry[0]) return 0;
+  if (!(m = mesh_new(p, &st))) {
+    scene_fail(L, "%s: %s", L->path, st.msg);
+    if (L->st) L->st->code = st.code;
+    return L->failed = st.code;
+  }
+  for (int j = 0; j < p->part.ncurve; j++)
+    if (p->part.curve[j].kind == BC_ROLLER)
+      p->part.curve[j].normal = mesh_curve_normal(m, j);
+  p->part.area = 0;
+  for (int t = 2 * m->N * m->M; t < m->ntri; t++) p->part.area += mesh_area(m, t);
+  fem_curve_resultant(m, p, p->part.load);
+  mesh_free(m);
+  return 0;
+}
+#line 2934 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Scene_loader *L, Scene *s)
 {
@@ -508,7 +488,7 @@ static int read_loads(Scene_loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2976 "paper/scene.nw"
+#line 2952 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Scene_loader *L, Scene *s)
 {
@@ -532,7 +512,7 @@ static int read_contact(Scene_loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 3008 "paper/scene.nw"
+#line 2984 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Scene_loader *L, Scene *s)
 {
@@ -544,19 +524,18 @@ static int read_solver(Scene_loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 3036 "paper/scene.nw"
+#line 3012 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
-    && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1))
-    && !curves(&s->problem, BC_CLAMPED))
+    && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1))) {
+  char sides[256];
+  problem_supports(&s->problem, sides, sizeof sides);
   return scene_blame(L, "cannot take friction (contact.model = %s) on a body that "
-                     "the sides do not hold in both directions (left.bc = %s, "
-                     "right.bc = %s, top.bc = %s): its dual needs the stiffness "
-                     "seen from the contact positive definite; use pdas",
-                     problem_contact_name(s->problem.contact),
-                     problem_bc_name(s->problem.side[0].kind),
-                     problem_bc_name(s->problem.side[1].kind),
-                     problem_bc_name(s->problem.side[2].kind));
-#line 3019 "paper/scene.nw"
+                     "the sides do not hold in both directions (%s): its dual "
+                     "needs the stiffness seen from the contact positive "
+                     "definite; use pdas", problem_contact_name(s->problem.contact),
+                     sides);
+}
+#line 2995 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -567,7 +546,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 3079 "paper/scene.nw"
+#line 3054 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies
    (opt_refusal) */
@@ -614,7 +593,7 @@ static int read_optimizer(Scene_loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 3132 "paper/scene.nw"
+#line 3107 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Scene_loader *L, Scene *s)
 {
@@ -631,13 +610,13 @@ static int read_objective(Scene_loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 3161 "paper/scene.nw"
+#line 3136 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s)
 {
   static int (*const step[])(Scene_loader *, Scene *) = {read_part,
     read_geometry, read_design, read_mesh, check_admissible, scene_read_initial,
-    read_material, read_sides, read_named, read_loads, read_solver,
+    read_material, read_sides, read_named, check_part, read_loads, read_solver,
     read_objective, read_optimizer};
   size_t i;
   int rc = 0;

@@ -151,14 +151,14 @@ int scene_get(Scene_loader *L, Scene *s, const char *sec, const char *key);
 /* refuse any key of sec that means nothing with selector = w */
 int scene_refuse_unused(Scene_loader *L, const char *sec, const char *selector,
                         const char *w);
-#line 2228 "paper/scene.nw"
+#line 2229 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s);
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 int scene_resolve(const char *scene, const char *file, char *buf, size_t size);
 /* buf = path, absolute; 0 if it fits */
 int scene_absolute(const char *path, char *buf, size_t size);
-#line 1890 "paper/scene.nw"
+#line 1891 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s);
 #line 393 "paper/scene.nw"

@@ -1,4 +1,4 @@
-#line 2207 "paper/scene.nw"
+#line 2208 "paper/scene.nw"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -7,7 +7,7 @@
 #include <unistd.h>
 #include "design.h"
 #include "scene_private.h"
-#line 2329 "paper/scene.nw"
+#line 2330 "paper/scene.nw"
 typedef struct {
   double *x, *alpha;  /* the rows: x1 and alpha */
   int *line;          /* the line of each row in the file */
@@ -35,10 +35,10 @@ static void rows_free(Rows *r)
 {
   free(r->x), free(r->alpha), free(r->line);
 }
-#line 2222 "paper/scene.nw"
+#line 2223 "paper/scene.nw"
 static void resample(const Problem *p, const Rows *r, double *alpha0);
 static int shape_from_rows(Scene_loader *L, Scene *s, const char *path, const Rows *r);
-#line 2240 "paper/scene.nw"
+#line 2241 "paper/scene.nw"
 /* the keys of an arc: centre (arc_x1, arc_x2), arc_radius > 0 */
 static int read_arc_shape(Scene_loader *L, Scene *s)
 {
@@ -51,7 +51,7 @@ static int read_arc_shape(Scene_loader *L, Scene *s)
   if (!(s->shape.radius > 0)) return scene_blame(L, "the radius must be > 0");
   return 0;
 }
-#line 2256 "paper/scene.nw"
+#line 2257 "paper/scene.nw"
 /* the keys of a line: line_start at x1 = a, line_end at x1 = b */
 static int read_line_shape(Scene_loader *L, Scene *s)
 {
@@ -61,14 +61,14 @@ static int read_line_shape(Scene_loader *L, Scene *s)
     return rc;
   return scene_get(L, s, "design", "line_end");
 }
-#line 2268 "paper/scene.nw"
+#line 2269 "paper/scene.nw"
 /* the key of a constant */
 static int read_constant_shape(Scene_loader *L, Scene *s)
 {
   s->shape.kind = SHAPE_CONSTANT;
   return scene_get(L, s, "design", "constant");
 }
-#line 2280 "paper/scene.nw"
+#line 2281 "paper/scene.nw"
 /* alpha0 = the shape of the keys read by read_keys, sampled */
 static int fill_formula(Scene_loader *L, Scene *s,
                         int (*read_keys)(Scene_loader *, Scene *))
@@ -79,7 +79,7 @@ static int fill_formula(Scene_loader *L, Scene *s,
     rc = scene_blame(L, "%s", why.msg);
   return rc;
 }
-#line 2300 "paper/scene.nw"
+#line 2301 "paper/scene.nw"
 /* buf = file, relative to the directory of the scene file; 0 if it fits */
 int scene_resolve(const char *scene, const char *file, char *buf, size_t size)
 {
@@ -89,7 +89,7 @@ int scene_resolve(const char *scene, const char *file, char *buf, size_t size)
   else n = snprintf(buf, size, "%.*s/%s", (int)(slash - scene), scene, file);
   return n < 0 || (size_t)n >= size;
 }
-#line 2312 "paper/scene.nw"
+#line 2313 "paper/scene.nw"
 /* buf = path, absolute; 0 if it fits */
 int scene_absolute(const char *path, char *buf, size_t size)
 {
@@ -100,7 +100,7 @@ int scene_absolute(const char *path, char *buf, size_t size)
   else n = snprintf(buf, size, "%s/%s", cwd, path);
   return n < 0 || (size_t)n >= size;
 }
-#line 2359 "paper/scene.nw"
+#line 2360 "paper/scene.nw"
 /* one line of a shape file: add its row x1 alpha to r, if it has one */
 static int read_row(Scene_loader *L, const char *path, int lineno, char *line,
                     Rows *r)
@@ -123,7 +123,7 @@ static int read_row(Scene_loader *L, const char *path, int lineno, char *line,
                                   "for the rows of %s", L->path, path);
   return 0;
 }
-#line 2388 "paper/scene.nw"
+#line 2389 "paper/scene.nw"
 /* alpha0 = the shape in the file at path, on the design nodes */
 static int read_shape(Scene_loader *L, Scene *s, const char *path)
 {
@@ -155,7 +155,7 @@ static int read_shape(Scene_loader *L, Scene *s, const char *path)
   rows_free(&r);
   return rc;
 }
-#line 2433 "paper/scene.nw"
+#line 2434 "paper/scene.nw"
 /* alpha0 = the rows r of the file at path on the design nodes, as they
    are or resampled; refuse rows that are no shape on [a, b] */
 static int shape_from_rows(Scene_loader *L, Scene *s, const char *path,
@@ -173,14 +173,14 @@ static int shape_from_rows(Scene_loader *L, Scene *s, const char *path,
                          "has %.10g)", path, r->line[j], r->x[j], r->line[j - 1],
                          r->x[j - 1]);
   
-#line 2465 "paper/scene.nw"
+#line 2466 "paper/scene.nw"
 if (!(fabs(r->x[0] - p->a) <= tol))
   return scene_blame(L, "%s line %d: x1 = %.10g: a shape begins at x1 = a = %.10g",
                      path, r->line[0], r->x[0], p->a);
 if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
   return scene_blame(L, "%s line %d: x1 = %.10g: a shape ends at x1 = b = %.10g",
                      path, r->line[r->n - 1], r->x[r->n - 1], p->b);
-#line 2450 "paper/scene.nw"
+#line 2451 "paper/scene.nw"
   for (i = 0; same && i <= p->N; i++)
     same = fabs(r->x[i] - problem_node_x(p, i)) <= tol;
   if (same) {
@@ -193,7 +193,7 @@ if (!(fabs(r->x[r->n - 1] - p->b) <= tol))
            "design nodes", L->last.val, r->n, r->x[0], r->x[r->n - 1], p->N + 1);
   return 0;
 }
-#line 2476 "paper/scene.nw"
+#line 2477 "paper/scene.nw"
 /* alpha0_i = the piecewise linear interpolant of the rows r at x_i */
 static void resample(const Problem *p, const Rows *r, double *alpha0)
 {
@@ -206,7 +206,7 @@ static void resample(const Problem *p, const Rows *r, double *alpha0)
     alpha0[i] = (1 - t) * r->alpha[j] + t * r->alpha[j + 1];
   }
 }
-#line 2494 "paper/scene.nw"
+#line 2495 "paper/scene.nw"
 /* alpha0 = the shape in the file design.file */
 static int fill_file(Scene_loader *L, Scene *s)
 {
@@ -220,7 +220,7 @@ static int fill_file(Scene_loader *L, Scene *s)
     return scene_blame(L, "cannot make %s an absolute path", path);
   return 0;
 }
-#line 2511 "paper/scene.nw"
+#line 2512 "paper/scene.nw"
 /* 0 <= alpha0_i < C0prime at every node */
 static int check_alpha0(Scene_loader *L, const Scene *s)
 {
@@ -235,7 +235,7 @@ static int check_alpha0(Scene_loader *L, const Scene *s)
                  status_number(s->problem.C0prime, v[2]));
   return 0;
 }
-#line 2531 "paper/scene.nw"
+#line 2532 "paper/scene.nw"
 /* [design] initial: alpha0 at the N+1 nodes */
 int scene_read_initial(Scene_loader *L, Scene *s)
 {
