@@ -108,6 +108,13 @@ bad "a named section without part.geometry" boundary.bore.bc "needs part.geometr
   -s boundary.bore.bc=clamped
 bad "a geometry file that is not there" part.geometry "cannot read the geometry file" -- $scene \
   -s part.geometry=$TMP/nosuch.geo -s design.C2=0.91
+# what the mesher refuses as the scene loads: a name that tests/parts/bore.geo
+# (curves bore and top, surface block) lacks, a roller on its circle
+part="-s part.geometry=$top/tests/parts/bore.geo -s design.C2=0.91"
+bad "a boundary name the geometry lacks" example-5.1.scene bore.geo boundary.seat \
+  "no physical curve seat" -- $scene $part -s boundary.seat.bc=clamped
+bad "a roller on a circle" example-5.1.scene bore.geo "boundary.bore.bc = roller" \
+  "not a straight line along x1 or x2" -- $scene $part -s boundary.bore.bc=roller
 bad "an unknown material kind" material.kind "unknown value" -- $scene -s material.kind=cubic
 bad "an orthotropic key in the isotropic material" material.E1 "no effect with kind = isotropic" -- $scene \
   -s material.E1=2e11

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
+#include "part_geometry.h"
 #include "scene.h"
 
 static char tmpdir[] = "/tmp/test_scene.XXXXXX";
@@ -28,9 +29,9 @@ static const char base[] =
   "[top]\nbc = traction\nfrom = 2\nto = 4\nP2 = -5.75e8\n";       /* 24-28 */
 
 /* A part: the base without the rectangle's keys (gamma, R, the top), C2
-   the strip's area, a geometry file beside it (which the loader only
-   finds: the mesher reads it), three named curves and a named surface,
-   the curves in the order top, bore, seat. */
+   the strip's area, the geometry of tests/part_geometry.h beside it
+   (meshed as the scene loads), three of its named curves and one of its
+   named surfaces, the curves in the order top, bore, seat. */
 static const char part_base[] =
   "[geometry]\na = 0\nb = 4\n"
   "[design]\nN = 16\nC0 = 0.05\nC1 = 0.025\nC2 = 0.91\n"
@@ -141,7 +142,7 @@ static inline void part_scene(const char *name, const char *old,
   else snprintf(text, sizeof text, "%s%s", part_base, more ? more : "");
   static int geo_made;
   if (!geo_made++)
-    write_file("part.geo", "// the part: read by the mesher\n", geo, sizeof geo);
+    write_file("part.geo", PART_GEO, geo, sizeof geo);
   write_file(name, text, path, size);
 }
 

@@ -19,17 +19,24 @@
 #include "check.h"
 #include "same.h"
 #include "scene.h"
+#include "part_geometry.h"
 
 static const char *base = "data/example-5.1.scene";
 static char shape[64];          /* a shape file for design.file */
-static char geo[64];            /* a geometry file for part.geometry */
+static char geo[2][64];         /* geometry files for part.geometry */
+static const char *const geo_text[2] = {   /* a curve NAME; a surface NAME */
+  PART_GEO_BODY "Physical Curve(\"NAME\") = {10};\n",
+  PART_GEO_BODY "Physical Surface(\"NAME\") = {2};\n"};
 
 /* the overrides that make a key mean something in the base, by the first
    prefix of section.key that matches */
 #define NO_ARC "design.arc_x1=", "design.arc_x2=", "design.arc_radius="
 /* a part: its geometry (which drops gamma, R and the top), and C2 as the
-   strip's area, C0prime (b - a) - 0.09 */
-#define PART geo, "design.C2=0.91"
+   strip's area, C0prime (b - a) - 0.09; the geometry names its top curve
+   NAME (PART) or its middle layer NAME (PART_S), since one name may name
+   one physical group */
+#define PART geo[0], "design.C2=0.91"
+#define PART_S geo[1], "design.C2=0.91"
 #define ORTHO(sec) sec ".kind=orthotropic", sec ".E1=2e11", sec ".E2=1e11", \
   sec ".nu12=0.3", sec ".G12=5e10"
 #define THIRD(sec) "material.model=plane_strain", sec ".E3=1e11", \
@@ -39,15 +46,15 @@ static struct { const char *prefix, *over[16]; } enable[] = {
   {"boundary.NAME.p", {PART, "boundary.NAME.bc=pressure", "boundary.NAME.p=1e6"}},
   {"boundary.NAME.", {PART, "boundary.NAME.bc=traction", "boundary.NAME.P1=1e6",
                       "boundary.NAME.P2=1e6"}},
-  {NAMED("E3"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
-  {NAMED("nu13"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
-  {NAMED("nu23"), {PART, ORTHO("material.NAME"), THIRD("material.NAME")}},
-  {NAMED("E1"), {PART, ORTHO("material.NAME")}},
-  {NAMED("E2"), {PART, ORTHO("material.NAME")}},
-  {NAMED("nu12"), {PART, ORTHO("material.NAME")}},
-  {NAMED("G12"), {PART, ORTHO("material.NAME")}},
-  {NAMED("angle"), {PART, ORTHO("material.NAME")}},
-  {"material.NAME.", {PART, NAMED("E=1e9"), NAMED("nu=0.3")}},
+  {NAMED("E3"), {PART_S, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("nu13"), {PART_S, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("nu23"), {PART_S, ORTHO("material.NAME"), THIRD("material.NAME")}},
+  {NAMED("E1"), {PART_S, ORTHO("material.NAME")}},
+  {NAMED("E2"), {PART_S, ORTHO("material.NAME")}},
+  {NAMED("nu12"), {PART_S, ORTHO("material.NAME")}},
+  {NAMED("G12"), {PART_S, ORTHO("material.NAME")}},
+  {NAMED("angle"), {PART_S, ORTHO("material.NAME")}},
+  {"material.NAME.", {PART_S, NAMED("E=1e9"), NAMED("nu=0.3")}},
   {"material.E3", {ORTHO("material"), THIRD("material")}},
   {"material.nu13", {ORTHO("material"), THIRD("material")}},
   {"material.nu23", {ORTHO("material"), THIRD("material")}},
@@ -196,9 +203,15 @@ int main(void)
   int n = 0, i;
   FILE *sh;
   snprintf(shape, sizeof shape, "design.file=/tmp/test_scene_keys.%d.dat", (int)getpid());
-  snprintf(geo, sizeof geo, "part.geometry=/tmp/test_scene_keys.%d.geo", (int)getpid());
-  if (!fp || !(sh = fopen(geo + 14, "w")) || fputs("// a part\n", sh) < 0
-      || fclose(sh) || !(sh = fopen(shape + 12, "w"))) {
+  for (i = 0; i < 2; i++) {
+    snprintf(geo[i], sizeof geo[i], "part.geometry=/tmp/test_scene_keys.%d.%d.geo",
+             (int)getpid(), i);
+    if (!(sh = fopen(geo[i] + 14, "w")) || fputs(geo_text[i], sh) < 0 || fclose(sh)) {
+      perror("test_scene_keys");
+      return 1;
+    }
+  }
+  if (!fp || !(sh = fopen(shape + 12, "w"))) {
     perror("test_scene_keys");
     return 1;
   }
@@ -222,6 +235,7 @@ int main(void)
   check(n == 80, "contactopt keys prints %d keys", n);
   fclose(fp);
   unlink(shape + 12);
-  unlink(geo + 14);
+  unlink(geo[0] + 14);
+  unlink(geo[1] + 14);
   return check_done();
 }

@@ -23,6 +23,7 @@
 #include "setup.h"
 #include "same.h"
 #include "model.h"
+#include "part_geometry.h"
 
 static char tmpdir[] = "/tmp/test_scene_write.XXXXXX";
 static char root[4096];       /* the repository, where the test started */
@@ -177,7 +178,7 @@ static void part_cases(void)
   snprintf(dir, sizeof dir, "%s/part", tmpdir);
   mkdir(dir, 0700);
   snprintf(path, sizeof path, "%s/block.geo", dir);
-  put(path, "// the part: read by the mesher\n");
+  put(path, PART_GEO);
   snprintf(path, sizeof path, "%s/part.scene", dir);
   put(path, scene);
   round_trip("a part: orthotropic in plane strain, three curves, two surfaces, "

@@ -53,7 +53,8 @@ fuzz-replay: $(FUZZ_DIR)/fuzz_scene $(FUZZ_DIR)/fuzz_shape
 
 # The scene adapter reads the modules' defaults and samples the initial
 # shape with the design module, so the fuzzer links every module.
-$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/contract.h tests/fuzz/folder.h $(SOURCES) \
+$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/contract.h tests/fuzz/folder.h \
+                        tests/part_geometry.h $(SOURCES) \
                         $(filter %.h,$(TANGLED)) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c \

@@ -7,7 +7,9 @@
    -s gives them).  The scene part is written to a file in a folder made
    once (under /dev/shm when it exists: scene_load reads a path, not
    memory), beside a shape file of 17 rows, shape.dat, that a scene may
-   name as design.file.  The file is then loaded without overrides, with
+   name as design.file, and the geometry of the scene tests' part,
+   part.geo (tests/part_geometry.h), that a scene may name as
+   part.geometry.  The file is then loaded without overrides, with
    the overrides of the input, and with three fixed sets of overrides; after
    each load the contract of scene_load (src/scene.h) is checked and any
    breach aborts, which libFuzzer reports as a crash:
@@ -29,12 +31,28 @@
 #include "scene.h"
 #include "contract.h"
 #include "folder.h"
+#include "../part_geometry.h"
 
 enum { MAX_OVERRIDES = 16 };
 
 static int binary;             /* the scene part holds a NUL byte */
+static char geo[300];          /* the part's geometry, part.geo */
 
-/* make the folder and the shape file, once */
+static void remove_geo(void)
+{
+  unlink(geo);
+}
+
+/* make SAN=1 and the fuzzer: gmsh's parser leaks the lists it was
+   building when a .geo has a syntax error (gmsh_yyparse), inside the
+   library; LeakSanitizer ignores that stack alone, read by the slow
+   unwinder (as in tests/test_part.c) */
+const char *__asan_default_options(void);
+const char *__asan_default_options(void) { return "fast_unwind_on_malloc=0"; }
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void) { return "leak:gmsh_yyparse\n"; }
+
+/* make the folder, the shape file and the geometry, once */
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
   FILE *fp;
@@ -49,6 +67,12 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
   fprintf(fp, "# x1 alpha\n");
   for (i = 0; i <= 16; i++) fprintf(fp, "%g %g\n", 0.25 * i, 0.003125 * i);
   fclose(fp);
+  snprintf(geo, sizeof geo, "%s/part.geo", dir);
+  if (!(fp = fopen(geo, "w")) || fputs(PART_GEO, fp) < 0 || fclose(fp)) {
+    perror("fuzz_scene: part.geo");
+    exit(1);
+  }
+  atexit(remove_geo);   /* before the folder's cleanup, registered earlier */
   return 0;
 }
 
