@@ -460,7 +460,7 @@ static int check_part(Scene_loader *L, Scene *s)
   Mesh *m;
   if (!p->part.geometry[0]) return 0;
   if (!(m = mesh_new(p, &st))) {
-    scene_fail(L, "%s: %s", L->path, st.msg);
+    scene_fail(L, "%s: part.geometry: %s", L->path, st.msg);
     if (L->st) L->st->code = st.code;
     return L->failed = st.code;
   }
