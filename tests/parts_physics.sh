@@ -20,6 +20,8 @@
 #  - gradcheck on a part with a hole and two materials, frictionless and
 #    Tresca, to gradcheck.sh's 1e-6; optimize ends converged with each
 #    method, and with Coulomb friction (slsqp);
+#  - Example 5.1 on its built-in rectangle and on the same band given as
+#    a geometry (tests/parts/example-5.1.geo): E* converge to one limit;
 #  - a rectangle scene loads no gmsh library, a part scene does;
 #  - effective.scene of a part's run reproduces the run.
 . tests/lib.sh
