@@ -1,0 +1,20 @@
+// Example 5.1's band (a, b) x (C0prime, gamma) = (0, 4) x (0.25, 1),
+// its top split at x1 = 2 so that the curve "load" is the loaded part
+// (2, 4) x {1} of the article's top side and "unloaded" the rest
+Point(1) = {0, 0.25, 0};
+Point(2) = {4, 0.25, 0};
+Point(3) = {4, 1, 0};
+Point(4) = {2, 1, 0};
+Point(5) = {0, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 5};
+Line(5) = {5, 1};
+Curve Loop(1) = {1, 2, 3, 4, 5};
+Plane Surface(1) = {1};
+Physical Curve("load") = {3};
+Physical Curve("unloaded") = {4};
+Physical Curve("left") = {5};
+Physical Curve("right") = {2};
+Physical Surface("body") = {1};
