@@ -38,27 +38,32 @@ best() { c=$1 s=$2 d=$3 t=; shift 3
   done
   printf '%s\n' $t | sort -g | head -n 1; }
 # sci X: X in LaTeX, four digits
-sci() { awk -v x="$1" 'BEGIN { a = x < 0 ? -x : x; e = int(log(a) / log(10)); if (a < 1) e--
+sci() { awk -v x="$1" 'BEGIN { a = x < 0 ? -x : x
+  e = int(log(a) / log(10)); if (a < 1) e--
   printf "$%.4f\\cdot10^{%d}$", x / 10 ^ e, e }'; }
 # rectangle SCENE SOLVEDIR: the rectangle's scene, on standard output
 rectangle() {
   a=$(ini geometry a "$2"); b=$(ini geometry b "$2"); N=$(ini design N "$2")
   c=$(ini mesh C0prime "$2"); set -- "$1" "$2" $(points "$2/solution.vtu")
-  load=$(awk '/^reaction_.*_x2 / { s += $2 } END { printf "%.17g", s }' "$2/summary.dat")
+  load=$(awk '/^reaction_.*_x2 / { s += $2 } END { printf "%.17g", s }' \
+    "$2/summary.dat")
   T=$(awk '!/^#/ { s += $5 } END { printf "%.17g", s }' "$2/contact.dat")
   awk '/^\[/ { skip = $1 ~ /^\[(part|boundary\.|material\.)/; s = $1 }
     !skip && !(s == "[design]" && $1 == "C2")' "$1"
   awk -v a="$a" -v b="$b" -v N="$N" -v c="$c" -v g="$4" -v R="$load" -v T="$T" \
       -v C2="$(ini design C2 "$2")" 'BEGIN {
     r = int((g - c) * N / (b - a) + 0.5); if (r < 1) r = 1
-    printf "[geometry]\ngamma = %.17g\n[design]\nC2 = %.17g\n", g, C2 + (g - c) * (b - a)
+    printf "[geometry]\ngamma = %.17g\n", g
+    printf "[design]\nC2 = %.17g\n", C2 + (g - c) * (b - a)
     printf "[mesh]\nR = %d\n", r
-    printf "[top]\nbc = traction\nfrom = %.17g\nto = %.17g\nP1 = 0\nP2 = %.17g\n", a, b,
-           -(R + T) / (b - a) }'; }
+    printf "[top]\nbc = traction\nfrom = %.17g\nto = %.17g\n", a, b
+    printf "P1 = 0\nP2 = %.17g\n", -(R + T) / (b - a) }'; }
 echo "% written by src/parts-table.sh; do not edit"
 printf '%s\n' '\begin{tabular}{@{}lrrrrrrlrrrr@{}}\toprule' \
-  'part & triangles & rectangle & nodes & $E(\alpha^0)$ [J/m] & $E^*$ [J/m] & iterations & status' \
-  '  & solve [ms] & $\times$ & optimize [ms] & $\times$\\\midrule'
+  'part & \multicolumn{2}{c}{triangles} & nodes & $E(\alpha^0)$ & $E^*$ & its.' \
+  '  & status & solve & $\times$ & optimize & $\times$\\' \
+  '  & part & rect. & & [J/m] & [J/m] & & & [ms] & & [ms] &\\\midrule'
+m=$out/macros.dat
 for sc in data/parts/*.scene; do
   n=$(basename "$sc" .scene); d=$out/$n
   ts=$(best solve "$sc" $d-solve); to=$(best optimize "$sc" $d-optimize)
@@ -67,18 +72,22 @@ for sc in data/parts/*.scene; do
   ro=$(best optimize $d-rectangle.scene $d-rectangle-optimize)
   set -- $(points $d-solve/solution.vtu)
   E0=$(sci "$(v energy $d-solve)") E=$(sci "$(v energy $d-optimize)") \
-  awk -v n="$n" -v t="$(v triangles $d-solve)" -v rt="$(v triangles $d-rectangle-solve)" -v nodes="$1" -v it="$(v iterations $d-optimize)" \
-      -v st="$(v stop_reason $d-optimize)" -v ts="$ts" -v rs="$rs" -v to="$to" -v ro="$ro" -v m="$out/macros.dat" 'BEGIN {
+  awk -v n="$n" -v t="$(v triangles $d-solve)" -v nodes="$1" \
+      -v rt="$(v triangles $d-rectangle-solve)" -v it="$(v iterations $d-optimize)" \
+      -v st="$(v stop_reason $d-optimize)" -v ts="$ts" -v rs="$rs" \
+      -v to="$to" -v ro="$ro" -v m="$m" 'BEGIN {
     gsub("_", "\\_", st)
-    printf "%s & %d & %d & %d & %s & %s & %d & %s & %.3g & %.2g & %.3g & %.2g\\\\\n",
-           n, t, rt, nodes, ENVIRON["E0"], ENVIRON["E"], it, st, 1000 * ts, ts / rs, 1000 * to, to / ro
+    printf "%s & %d & %d & %d & %s & %s & %d & %s", n, t, rt, nodes,
+           ENVIRON["E0"], ENVIRON["E"], it, st
+    printf " & %.3g & %.2g & %.3g & %.2g\\\\\n", 1000 * ts, ts / rs, 1000 * to, to / ro
     print it, to / ro >> m }'
 done
 printf '%s\n' '\bottomrule\end{tabular}'
 printf '%s %s, %s cores, load %s.}\n' \
   '\par\smallskip{\footnotesize Measured by \texttt{make figures} on' \
   "$(date -u +%F)" "$(v cores $d-optimize)" "$(v load_average $d-optimize)"
-awk 'NR == 1 || $1 > i { i = $1 } NR == 1 || $2 < lo { lo = $2 } NR == 1 || $2 > hi { hi = $2 }
-  END { printf "\\gdef\\partsitsmax{%d}\n\\gdef\\partsoptratiomin{%.2g}\n\\gdef\\partsoptratiomax{%.2g}\n", i, lo, hi }' \
-  $out/macros.dat
-rm -f $out/macros.dat
+awk 'NR == 1 || $1 > i { i = $1 }
+  NR == 1 || $2 < lo { lo = $2 } NR == 1 || $2 > hi { hi = $2 } END {
+  printf "\\gdef\\partsitsmax{%d}\n", i
+  printf "\\gdef\\partsoptratiomin{%.2g}\n\\gdef\\partsoptratiomax{%.2g}\n", lo, hi }' $m
+rm -f $m
