@@ -1,4 +1,4 @@
-// A bearing block (pillow block), the right half of a cast-iron block
+// A bearing block (pillow block), the left half of a cast-iron block
 // 0.2 m wide and 0.125 m high, cut by its plane of symmetry x1 = 0.1 m:
 // the half block (0, 0.1) x (0.005, 0.125) above the strip, its bore of
 // radius 0.03 m centred on the symmetry plane at x2 = 0.07 m.  The shaft
