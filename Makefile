@@ -22,7 +22,7 @@ MODULES := status resources problem scene part mesh fem qp condense friction hel
 HEADERS := sparse
 PRIVATE := qp_private qp_inline model_private pdas cgssor psor opt_private plot_private design_private newton_private scene_private output_private
 SOURCES := $(MODULES:%=src/%.c) $(INNER:%=src/%.c)
-SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh \
+SCRIPTS := src/reproduction.sh src/c2-of-shape.sh src/suite-table.sh src/parts-table.sh \
            src/friction.sh src/fig-friction.gp src/coulomb.sh src/fig-coulomb.gp \
            src/objectives.sh src/fig-objectives.gp \
            src/accuracy-run.sh src/accuracy.sh src/accuracy-table.sh src/accuracy-numbers.sh src/fig-accuracy.gp \
@@ -51,7 +51,7 @@ FIGURES := $(foreach f,5.1 5.2 5.3 5.4,figures/fig-$(f).pdf figures/fig-$(f).png
 # (paper/cgssor.nw), each written by the script that runs its cases (under
 # a minute together): rebuilt, not tracked (the last one is timed).
 HARD_FIGS := figures/hard-nu.tex figures/hard-units.tex figures/hard-thin.tex figures/hard-vertex.tex figures/hard-parts.tex \
-             figures/cgssor.tex
+             figures/cgssor.tex figures/parts.tex
 # The robustness suite of the optimiser (paper/opt.nw): each scene by the
 # Newton method and by SLSQP, whose failures to converge are its result.
 SUITE := $(patsubst data/suite/%.scene,%,$(wildcard data/suite/*.scene))
@@ -362,6 +362,21 @@ figures/hard-parts.tex: $(B)/tests/test_kirsch tests/scenes/kirsch.scene tests/p
 figures/cgssor.tex: src/cgssor-table.sh bin/contactopt data/example-5.1-tresca.scene
 	@mkdir -p figures
 	sh $< out/cgssor > $@.partial && mv $@.partial $@
+# the shipped parts against the rectangles of the same N (paper/parts-examples.nw):
+# timed, so rebuilt, not tracked
+figures/parts.tex: src/parts-table.sh bin/contactopt $(wildcard data/parts/*.scene data/parts/*.geo)
+	@mkdir -p figures
+	sh $< out/parts > $@.partial && mv $@.partial $@
+# make parts-plots: the figure of each optimised part by contactopt plot
+# (the body at its initial shape, the results of its optimisation), from
+# the runs of figures/parts.tex; not yet among the figures of make figures
+PARTS_PLOTS := $(patsubst data/parts/%.scene,figures/part-%-results.pdf,$(wildcard data/parts/*.scene))
+.PHONY: parts-plots
+parts-plots: $(PARTS_PLOTS)
+figures/part-%-results.pdf: figures/parts.tex
+	bin/contactopt plot out/parts/$*-solve --body --title '$*' -o figures/part-$*-body
+	bin/contactopt plot out/parts/$*-optimize --results --start out/parts/$*-solve \
+	  --title '$*' -o figures/part-$*-results
 figures/accuracy-numbers.tex: src/accuracy-numbers.sh out/accuracy/sweep.dat paper/bench-state.tex
 	@mkdir -p figures
 	sh $< out/accuracy/sweep.dat paper/bench-state.tex > $@.partial && mv $@.partial $@
@@ -471,7 +486,7 @@ figures/keys.tex: bin/contactopt
 # meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
 figures: $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table, the tables of the hard cases and of MPRGP)"
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table, the tables of the hard cases, of MPRGP and of the shipped parts)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null

@@ -35,7 +35,7 @@ $BIN solve $scene -o $TMP/out -s "nosuchsection.a=1" > /dev/null 2> $TMP/err
 told=$(sed -n 's/.*(the sections are \(.*\))$/\1/p' $TMP/err)
 check "the sections the loader accepts are the sections printed ($told)" \
   [ "$told" = "$(echo $sections | sed 's/ /, /g')" ]
-for f in data/*.scene data/suite/*.scene tests/scenes/*.scene; do
+for f in data/*.scene data/parts/*.scene data/suite/*.scene tests/scenes/*.scene; do
   case $f in */fuzz-*) continue ;; esac     # fuzzing's inputs: not scenes
   unlisted=$(awk '/^\[/ { gsub(/[][]/, ""); s = $1
       sub(/^boundary\.[A-Za-z0-9_]+$/, "boundary.NAME", s)
