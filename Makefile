@@ -133,7 +133,8 @@ $(B)/example: $(B)/example.o $(OBJ)
 # ---- installing (paper/install.nw) -------------------------------------------------
 # make install copies the program, the manual page contactopt(1), the
 # completion for bash and the example scenes (data/*.scene, which name no
-# other file) under PREFIX, by the GNU conventions; DESTDIR stages the whole
+# other file, and the parts of data/parts/, each scene beside its geometry)
+# under PREFIX, by the GNU conventions; DESTDIR stages the whole
 # tree elsewhere (for a package). make uninstall removes them, and the
 # folders the install created (it lists them in
 # DATADIR/contactopt/installed-dirs), not those it found.
@@ -142,11 +143,11 @@ BINDIR  ?= $(PREFIX)/bin
 DATADIR ?= $(PREFIX)/share
 MANDIR  ?= $(DATADIR)/man
 INSTALL ?= install
-SHIPPED := $(wildcard data/*.scene)
+SHIPPED := $(wildcard data/*.scene data/parts/*.scene data/parts/*.geo)
 INSTALL_DIRS := $(BINDIR) $(MANDIR)/man1 $(DATADIR)/contactopt/examples \
                 $(DATADIR)/bash-completion/completions
 INSTALLED := $(BINDIR)/contactopt $(MANDIR)/man1/contactopt.1 \
-             $(SHIPPED:data/%=$(DATADIR)/contactopt/examples/%) \
+             $(addprefix $(DATADIR)/contactopt/examples/,$(notdir $(SHIPPED))) \
              $(DATADIR)/bash-completion/completions/contactopt
 # The manual page and the completion are written from the program's own
 # texts (src/man.sh, src/completion.sh); the page names DATADIR, which is

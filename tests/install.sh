@@ -17,8 +17,8 @@ p=$root$prefix
 ( cd $root && find . | sort ) > $TMP/installed
 expected=$(printf '%s\n' bin/contactopt share/man/man1/contactopt.1 \
   share/bash-completion/completions/contactopt share/contactopt/installed-dirs \
-  $(ls data/*.scene | sed 's|^data/|share/contactopt/examples/|') | sort)
-check "the program, the manual page, the completion and the $(ls data/*.scene | wc -l) example scenes are installed under $prefix, nothing else" \
+  $(ls data/*.scene data/parts/*.scene data/parts/*.geo | sed 's|^.*/|share/contactopt/examples/|') | sort)
+check "the program, the manual page, the completion, the $(ls data/*.scene | wc -l) example scenes and the $(ls data/parts/*.scene | wc -l) parts with their geometries are installed under $prefix, nothing else" \
   [ "$(cd $p && find . -type f | sed 's|^\./||' | sort)" = "$expected" ]
 check "the program is executable, the other files are not" \
   sh -c "[ -x $p/bin/contactopt ] && [ -z \"\$(find $p -type f -perm /111 ! -path '*/bin/contactopt')\" ]"
@@ -35,6 +35,9 @@ check "installed: optimize converges (exit $rc, $(value stop_reason opt 2>/dev/n
 $co plot opt --results --start start -o fig > $TMP/plot.out 2>&1; rc=$?
 check "installed: plot draws the results (exit $rc, fig.pdf and fig.png)" \
   sh -c "[ $rc -eq 0 ] && [ -s fig.pdf ] && [ -s fig.png ]"
+$co optimize $p/share/contactopt/examples/pad.scene -o pad > $TMP/pad.out 2>&1; rc=$?
+check "installed: optimize of the installed part pad.scene, its geometry beside it, converges (exit $rc, $(value stop_reason pad 2>/dev/null))" \
+  sh -c "[ $rc -eq 0 ] && [ \"\$(awk '\$1 == \"stop_reason\" { print \$2 }' pad/summary.dat)\" = converged ]"
 $co solve nosuch.scene > /dev/null 2> $TMP/err; rc=$?
 check "installed: a missing scene is one line and exit 2 ($(cat $TMP/err))" \
   clean_failure $rc 2 $TMP/err out/nosuch 'nosuch.scene'
