@@ -1,10 +1,10 @@
-#line 234 "paper/figures.nw"
+#line 253 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1462 "paper/figures.nw"
+#line 1855 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -22,14 +22,14 @@ typedef struct {
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
 } Results_page;
-#line 1482 "paper/figures.nw"
+#line 1875 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1492 "paper/figures.nw"
+#line 1885 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -45,7 +45,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1512 "paper/figures.nw"
+#line 1905 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -61,7 +61,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1532 "paper/figures.nw"
+#line 1925 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -71,21 +71,21 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1544 "paper/figures.nw"
+#line 1937 "paper/figures.nw"
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
   double w = HUGE_VAL, h = HUGE_VAL;
   Results_page L;
-  L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * p->gamma));
-  L.vex = p->gamma * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (p->gamma * L.ucm));
+  L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * pl->top));
+  L.vex = pl->top * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (pl->top * L.ucm));
   plot_widen(&L.ucm, &L.vex, 1.05 * (p->b - p->a) * L.ucm, 1.2, 2.6);
   L.pw = 1.05 * (p->b - p->a) * L.ucm;
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   L.sinks = free_vertically(p);
   for (int k = 0; k < 1 + pl->optimize; k++) {
     least_cell(&pl->mesh[k], &L, &w, &h);
-    state_scale(&pl->mesh[k], L.sinks, 0.2 * p->gamma, &L.S[k], &L.t2[k]);
+    state_scale(&pl->mesh[k], L.sinks, 0.2 * pl->top, &L.S[k], &L.t2[k]);
     L.below[k] = crosses(&pl->mesh[k], L.S[k], L.t2[k], CROSS / (L.ucm * L.vex));
   }
   L.scol = (int) fmax(1, ceil(MESHCELL / w - SLACK));
@@ -95,7 +95,7 @@ static Results_page results_page(const Plot *pl)
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
   return L;
 }
-#line 1571 "paper/figures.nw"
+#line 1964 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -106,7 +106,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1588 "paper/figures.nw"
+#line 1981 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -127,7 +127,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1619 "paper/figures.nw"
+#line 2012 "paper/figures.nw"
 static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
 {
   int d = sc < sr ? sc : sr;
@@ -150,7 +150,7 @@ static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
   fprintf(f, "EOD\n");
 }
-#line 1648 "paper/figures.nw"
+#line 2041 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -169,7 +169,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
   if (pl->args->start) fprintf(f, "start = "), plot_quote(f, pl->args->start, 0), fprintf(f, "\n");
   fprintf(f, "bxlo = %s; bxhi = %s; bylo = %s; byhi = %s    # a body panel\n",
           plot_real(p->a - 0.025 * W, 6), plot_real(p->b + 0.025 * W, 6),
-          plot_real(-0.25 * p->gamma, 6), plot_real(1.1 * p->gamma, 6));
+          plot_real(-0.25 * pl->top, 6), plot_real(1.1 * pl->top, 6));
   fprintf(f, "ucm = %s; vex = %s              # cm per metre along x1; x2 exaggerated\n"
           "left = 2.8; colw = %s; colgap = 2.4; pw = (bxhi - bxlo)*ucm    # cm\n"
           "top = 2.4; rowgap = 3.0; graphh = %s; bodyh = (byhi - bylo)*ucm*vex\n"
@@ -192,14 +192,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1692 "paper/figures.nw"
+#line 2085 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 1704 "paper/figures.nw"
+#line 2097 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -230,7 +230,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1742 "paper/figures.nw"
+#line 2135 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -242,7 +242,7 @@ static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, con
   plot_place(f, x, "pw", y, "bodyh");
   fprintf(f, "  set xrange [bxlo:bxhi]; set yrange [bylo:byhi]\n");
   plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor(L->pw / 2))), 0);
-  plot_tics(f, "y", 0, p->gamma, 2, 0);
+  plot_tics(f, "y", 0, pl->top, 2, 0);
   fprintf(f, "  set border 3\n  set xlabel '{/:Italic x}_1 [m]' offset 0, %s\n"
           "  set ylabel '{/:Italic x}_2 [m]' offset 0.6, 0\n",
           q->kind == DEFORMED && L->below[q->state] ? "-0.6" : "0.4");
@@ -286,7 +286,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 1804 "paper/figures.nw"
+#line 2197 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -317,7 +317,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 1842 "paper/figures.nw"
+#line 2235 "paper/figures.nw"
 #define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
@@ -332,7 +332,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW / w), 3));
 }
-#line 1862 "paper/figures.nw"
+#line 2255 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -348,7 +348,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 1883 "paper/figures.nw"
+#line 2276 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -357,7 +357,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1916 "paper/figures.nw"
+#line 2309 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -400,7 +400,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1971 "paper/figures.nw"
+#line 2364 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -430,7 +430,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 2005 "paper/figures.nw"
+#line 2398 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
