@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 292 "paper/figures.nw"
+#line 293 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -39,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 332 "paper/figures.nw"
+#line 333 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -59,7 +59,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 356 "paper/figures.nw"
+#line 357 "paper/figures.nw"
 static const char *const state_files[] = { "shape.dat", "contact.dat", "solution.vtu" };
 
 /* dir: a finished run of solve or optimize (*optimize says which) whose
@@ -93,7 +93,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 394 "paper/figures.nw"
+#line 395 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -284,9 +284,13 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->start_value = a->start ? summary_value(a->start,
                    objective_name(pl->s.optimizer.objective.kind), NAN) : NAN;
   pl->top = pl->s.problem.gamma;
+  pl->left = pl->s.problem.a, pl->right = pl->s.problem.b;
   if (pl->s.problem.part.geometry[0]) {
     if (!(pl->part = mesh_new(&pl->s.problem, st))) return st->code;
     pl->top = pl->part->gamma;
+    for (int k = 0; k < pl->part->nnodes; k++)     /* a part may overhang [a, b] */
+      pl->left = fmin(pl->left, pl->part->xy[2 * k]),
+      pl->right = fmax(pl->right, pl->part->xy[2 * k]);
     if (plot_chains(pl->part, &pl->chains))
       return status_set(st, STATUS_MEMORY, "plot: out of memory");
   }
@@ -295,7 +299,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
       return rc;
   return STATUS_OK;
 }
-#line 2754 "paper/figures.nw"
+#line 2758 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };

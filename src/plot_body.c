@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1212 "paper/figures.nw"
+#line 1213 "paper/figures.nw"
 #define LROOM 1.4     /* room for the name */
 #define BELOW 0.88    /* the foundation, drawn under x2 = 0 */
 #define ABOVE 0.88    /* room above the top's decoration */
@@ -16,10 +16,10 @@ typedef struct {
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
   double width;               /* cm: the page */
 } Body_page;
-#line 1228 "paper/figures.nw"
+#line 1229 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 1236 "paper/figures.nw"
+#line 1237 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x,
@@ -45,7 +45,7 @@ static void side_support(FILE *f, Problem_bc_kind kind, const char *x, const cha
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER, top);
 }
-#line 1264 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void top_support(FILE *f, Problem_bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -60,7 +60,7 @@ static void top_support(FILE *f, Problem_bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 1283 "paper/figures.nw"
+#line 1284 "paper/figures.nw"
 static double load_reach(const Problem_side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Problem_side *sd, int k)
@@ -72,12 +72,12 @@ static double side_reach(const Problem_side *sd, int k)
   default: return 0;
   }
 }
-#line 1299 "paper/figures.nw"
+#line 1300 "paper/figures.nw"
 static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
-  double W = p->b - p->a, amax = 0;
+  double W = pl->right - pl->left, amax = 0;
   Body_page L;
   for (int i = 0; i <= p->N; i++) amax = fmax(amax, pl->s.alpha0[i]);
   L.ucm = fmin(17.6 / W, 8.8 / pl->top);
@@ -89,8 +89,8 @@ static Body_page body_page(const Plot *pl)
     L.ext[SIDE_TOP] = plot_part_reach(pl, L.ucm, L.vex, 0);
     L.ext[SIDE_LEFT] = fmax(L.ext[SIDE_LEFT], r), L.ext[SIDE_RIGHT] = fmax(L.ext[SIDE_RIGHT], r);
   }
-  L.xlo = p->a - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
-  L.xhi = p->b + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
+  L.xlo = pl->left - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
+  L.xhi = pl->right + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
   L.ylo = -BELOW / (L.ucm * L.vex);
   L.yhi = pl->top + (L.ext[SIDE_TOP] + ABOVE) / (L.ucm * L.vex);
   L.top = L.vex != 1 ? 2.2 : 1.4;
@@ -100,7 +100,7 @@ static Body_page body_page(const Plot *pl)
   body_fit(pl, &L);
   return L;
 }
-#line 1333 "paper/figures.nw"
+#line 1334 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
 static void load_text(const Problem_side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
@@ -123,7 +123,7 @@ static void body_fit(const Plot *pl, Body_page *L)
            pl->args->title ? pl->args->title : pl->args->dir);
   L->width = fmax(2.6 + (L->xhi - L->xlo) * L->ucm + 0.6, plot_text_cm(t, 12) + 1);
 }
-#line 1375 "paper/figures.nw"
+#line 1376 "paper/figures.nw"
 static const double normal[SIDE_COUNT][2] = { { -1, 0 }, { 1, 0 }, { 0, 1 } };
 
 /* the tail and head of the arrows of side k, cm from the side */
@@ -148,7 +148,7 @@ static double load_reach(const Problem_side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 1402 "paper/figures.nw"
+#line 1403 "paper/figures.nw"
 static void load_text(const Problem_side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -158,13 +158,13 @@ static void load_text(const Problem_side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 1416 "paper/figures.nw"
+#line 1417 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 1426 "paper/figures.nw"
+#line 1427 "paper/figures.nw"
 static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -198,7 +198,7 @@ static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1475 "paper/figures.nw"
+#line 1476 "paper/figures.nw"
 /* the sides' names at 1.2 times the text, so that they print at 9.8 pt
    (the text's 8.2 pt, fontpt); the stacked scripts of Gamma_P^k at 0.85 of
    gnuplot's scripts (0.8), 6.7 pt, where the two clear each other */
@@ -230,7 +230,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1515 "paper/figures.nw"
+#line 1516 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -259,7 +259,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1546 "paper/figures.nw"
+#line 1547 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -270,7 +270,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1561 "paper/figures.nw"
+#line 1562 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -280,7 +280,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1578 "paper/figures.nw"
+#line 1579 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L);
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -314,7 +314,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1627 "paper/figures.nw"
+#line 1628 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -332,7 +332,7 @@ static void body_part(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1656 "paper/figures.nw"
+#line 1657 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -363,7 +363,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1691 "paper/figures.nw"
+#line 1692 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -373,7 +373,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1709 "paper/figures.nw"
+#line 1710 "paper/figures.nw"
 /* a part's outline: its chains, those filled, its holes */
 static void body_part_blocks(FILE *f, const Plot *pl)
 {

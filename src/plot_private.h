@@ -6,7 +6,7 @@
 #include "scene.h"
 #include "objective.h"
 #include "mesh.h"
-#line 419 "paper/figures.nw"
+#line 420 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   int n;            /* all nodes: ncol*nrow, then a part's own */
@@ -21,7 +21,7 @@ typedef struct {
 int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
                     Status *st);
 void plot_state_free(Plot_state *s);
-#line 573 "paper/figures.nw"
+#line 574 "paper/figures.nw"
 typedef struct {
   int nchain;   /* chains of boundary edges */
   int *order;   /* nedge: the edges chain by chain, each one's end the next one's start */
@@ -50,18 +50,19 @@ typedef struct {
   Mesh *part;              /* a part of the user's own: its mesh, rebuilt
                               from the scene; NULL for the rectangle */
   double top;              /* the body's top: gamma, or the part's */
+  double left, right;      /* its extent in x1: a and b, or the part's */
   Plot_chains chains;      /* a part: its boundary edges in chains */
   double start_value;      /* --start: the objective at alpha0 as given, or NaN */
 } Plot;
 #line 171 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
-#line 1205 "paper/figures.nw"
+#line 1206 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
 #define LGAP 0.22     /* between a decoration and the side's name */
-#line 1368 "paper/figures.nw"
+#line 1369 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */

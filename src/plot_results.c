@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1865 "paper/figures.nw"
+#line 1866 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -23,7 +23,7 @@ typedef struct {
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
   int tris;           /* a part: its triangles drawn (else only its outline) */
 } Results_page;
-#line 1886 "paper/figures.nw"
+#line 1887 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
@@ -32,7 +32,7 @@ static int free_vertically(const Problem *p)
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1898 "paper/figures.nw"
+#line 1899 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -48,7 +48,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1918 "paper/figures.nw"
+#line 1919 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -64,7 +64,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1938 "paper/figures.nw"
+#line 1939 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -74,7 +74,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1950 "paper/figures.nw"
+#line 1951 "paper/figures.nw"
 /* a part: the side of its mean own triangle on the page, cm */
 static double part_cell(const Mesh *m, const Results_page *L)
 {
@@ -89,10 +89,10 @@ static Results_page results_page(const Plot *pl)
   const Problem *p = &pl->s.problem;
   double w = HUGE_VAL, h = HUGE_VAL;
   Results_page L;
-  L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * pl->top));
+  L.ucm = fmin(COLW / (1.05 * (pl->right - pl->left)), 7.0 / (1.35 * pl->top));
   L.vex = pl->top * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (pl->top * L.ucm));
-  plot_widen(&L.ucm, &L.vex, 1.05 * (p->b - p->a) * L.ucm, 1.2, 2.6);
-  L.pw = 1.05 * (p->b - p->a) * L.ucm;
+  plot_widen(&L.ucm, &L.vex, 1.05 * (pl->right - pl->left) * L.ucm, 1.2, 2.6);
+  L.pw = 1.05 * (pl->right - pl->left) * L.ucm;
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   L.sinks = free_vertically(p);
   for (int k = 0; k < 1 + pl->optimize; k++) {
@@ -108,7 +108,7 @@ static Results_page results_page(const Plot *pl)
   L.tris = pl->part && part_cell(pl->part, &L) >= 2 * MESHCELL;
   return L;
 }
-#line 1987 "paper/figures.nw"
+#line 1988 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -119,7 +119,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 2004 "paper/figures.nw"
+#line 2005 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -140,7 +140,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 2035 "paper/figures.nw"
+#line 2036 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris);
 static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int sc, int sr,
                        int tris)
@@ -156,7 +156,7 @@ static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int 
   for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
-#line 2067 "paper/figures.nw"
+#line 2068 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris)
 {
   const Mesh *m = s->part;
@@ -186,7 +186,7 @@ static void arrow_block(FILE *f, const Plot_state *s, const Results_page *L, int
   if (s->part) part_arrows(f, s, L);
   fprintf(f, "EOD\n");
 }
-#line 2100 "paper/figures.nw"
+#line 2101 "paper/figures.nw"
 static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
 {
   double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
@@ -207,13 +207,12 @@ static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
   }
   free(taken);
 }
-#line 2127 "paper/figures.nw"
+#line 2128 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
-  const Problem *p = &pl->s.problem;
-  double W = p->b - p->a;
+  double W = pl->right - pl->left;
   plot_script_head(f, pl, "The results", out);
   for (int k = 0; k < 1 + pl->optimize; k++) {
     fprintf(f, "s%d = ", k);
@@ -225,7 +224,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
   if (pl->optimize) fprintf(f, "opt = "), plot_quote(f, pl->args->dir, 0), fprintf(f, "\n");
   if (pl->args->start) fprintf(f, "start = "), plot_quote(f, pl->args->start, 0), fprintf(f, "\n");
   fprintf(f, "bxlo = %s; bxhi = %s; bylo = %s; byhi = %s    # a body panel\n",
-          plot_real(p->a - 0.025 * W, 6), plot_real(p->b + 0.025 * W, 6),
+          plot_real(pl->left - 0.025 * W, 6), plot_real(pl->right + 0.025 * W, 6),
           plot_real(-0.25 * pl->top, 6), plot_real(1.1 * pl->top, 6));
   fprintf(f, "ucm = %s; vex = %s              # cm per metre along x1; x2 exaggerated\n"
           "left = 2.8; colw = %s; colgap = 2.4; pw = (bxhi - bxlo)*ucm    # cm\n"
