@@ -14,7 +14,7 @@ NW := paper/contactopt.nw $(PARTS:%=paper/%.nw)
 # which share the module's private header; and the program.
 MODULES := status resources problem scene part mesh fem qp condense friction held model grad objective coulomb design newton opt output usage interrupt args threads plot
  INNER   := qp_base pdas cgssor psor condense_adjoint objective_grad model_read objective_evaluate grad_check design_project newton_ip opt_eval opt_projgrad opt_slsqp opt_mma opt_newton \
-           plot_text plot_state plot_body plot_results \
+           plot_text plot_state plot_body plot_results plot_part \
            scene_keys scene_message scene_ini scene_value scene_check scene_shape scene_write \
            output_path output_state output_vtu output_solve output_optimize \
            design_set

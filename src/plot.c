@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 268 "paper/figures.nw"
+#line 293 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -39,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 308 "paper/figures.nw"
+#line 333 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -59,7 +59,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 332 "paper/figures.nw"
+#line 357 "paper/figures.nw"
 static const char *const state_files[] = { "shape.dat", "contact.dat", "solution.vtu" };
 
 /* dir: a finished run of solve or optimize (*optimize says which) whose
@@ -93,7 +93,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 370 "paper/figures.nw"
+#line 395 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -107,7 +107,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 2040 "paper/figures.nw"
+#line 2519 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -139,7 +139,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 2075 "paper/figures.nw"
+#line 2554 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -152,7 +152,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 2096 "paper/figures.nw"
+#line 2575 "paper/figures.nw"
 enum { GNUPLOT_GRACE = 2000 };   /* ms that gnuplot has to end after an interrupt */
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
@@ -174,7 +174,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 2124 "paper/figures.nw"
+#line 2603 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -208,7 +208,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 2166 "paper/figures.nw"
+#line 2645 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -236,7 +236,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 2203 "paper/figures.nw"
+#line 2682 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -257,7 +257,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 2233 "paper/figures.nw"
+#line 2712 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -283,11 +283,23 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   pl->start_value = a->start ? summary_value(a->start,
                    objective_name(pl->s.optimizer.objective.kind), NAN) : NAN;
+  pl->top = pl->s.problem.gamma;
+  pl->left = pl->s.problem.a, pl->right = pl->s.problem.b;
+  if (pl->s.problem.part.geometry[0]) {
+    if (!(pl->part = mesh_new(&pl->s.problem, st))) return st->code;
+    pl->top = pl->part->gamma;
+    for (int k = 0; k < pl->part->nnodes; k++)     /* a part may overhang [a, b] */
+      pl->left = fmin(pl->left, pl->part->xy[2 * k]),
+      pl->right = fmax(pl->right, pl->part->xy[2 * k]);
+    if (plot_chains(pl->part, &pl->chains))
+      return status_set(st, STATUS_MEMORY, "plot: out of memory");
+  }
   for (int k = 0; k < 1 + pl->optimize && (a->figures & PLOT_RESULTS); k++)
-    if ((rc = plot_state_read(pl->state[k], &pl->s.problem, &pl->mesh[k], st))) return rc;
+    if ((rc = plot_state_read(pl->state[k], &pl->s.problem, pl->part, &pl->mesh[k], st)))
+      return rc;
   return STATUS_OK;
 }
-#line 2267 "paper/figures.nw"
+#line 2758 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };
@@ -313,6 +325,8 @@ int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
   if (!rc && a->print && fflush(out))
     rc = status_set(st, STATUS_SYSTEM, "plot: cannot print the script: %s", strerror(errno));
   plot_state_free(&pl.mesh[0]), plot_state_free(&pl.mesh[1]);
+  plot_chains_free(&pl.chains);
+  mesh_free(pl.part);
   scene_free(&pl.s);
   return rc;
 }

@@ -1,13 +1,9 @@
-#line 215 "paper/figures.nw"
+#line 226 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 863 "paper/figures.nw"
-#define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
-#define ROLLER 0.154  /* a roller's radius (0.035 m) */
-#define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
-#define LGAP 0.22     /* between a decoration and the side's name */
+#line 1213 "paper/figures.nw"
 #define LROOM 1.4     /* room for the name */
 #define BELOW 0.88    /* the foundation, drawn under x2 = 0 */
 #define ABOVE 0.88    /* room above the top's decoration */
@@ -20,35 +16,36 @@ typedef struct {
   double slo, shi, exag;      /* the strip: slo < x2 < shi, exaggerated exag times */
   double width;               /* cm: the page */
 } Body_page;
-#line 883 "paper/figures.nw"
+#line 1229 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 891 "paper/figures.nw"
+#line 1237 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
-/* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x */
+/* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x,
+   from end up to top */
 static void side_support(FILE *f, Problem_bc_kind kind, const char *x, const char *end,
-                         int s, int n)
+                         int s, int n, const char *top)
 {
   if (kind == BC_CLAMPED && s < 0)
-    fprintf(f, "  set object rect from %s - cx(%g), %s to %s, gamma %s\n",
-            x, WALL, end, x, hatch);
+    fprintf(f, "  set object rect from %s - cx(%g), %s to %s, %s %s\n",
+            x, WALL, end, x, top, hatch);
   if (kind == BC_CLAMPED && s > 0)
-    fprintf(f, "  set object rect from %s, %s to %s + cx(%g), gamma %s\n",
-            x, end, x, WALL, hatch);
+    fprintf(f, "  set object rect from %s, %s to %s + cx(%g), %s %s\n",
+            x, end, x, WALL, top, hatch);
   if (kind != BC_ROLLER) return;
   fprintf(f, "  do for [k=1:%d] {\n"
-          "    set object circle at %s %c cx(%g), %s + k*(gamma - %s)/%d size cx(%g) \\\n"
+          "    set object circle at %s %c cx(%g), %s + k*(%s - %s)/%d size cx(%g) \\\n"
           "        fs empty border lc 'black' lw 1.5 front\n  }\n", n, x,
-          s > 0 ? '+' : '-', ROLLER, end, end, n + 1, ROLLER);
-  fprintf(f, "  set object rect from %s %c cx(%g), %s to %s %c cx(%g), gamma %s\n",
+          s > 0 ? '+' : '-', ROLLER, end, top, end, n + 1, ROLLER);
+  fprintf(f, "  set object rect from %s %c cx(%g), %s to %s %c cx(%g), %s %s\n",
           x, s > 0 ? '+' : '-', 2 * ROLLER, end, x, s > 0 ? '+' : '-',
-          2 * ROLLER + RWALL, hatch);
-  fprintf(f, "  set arrow from %s %c cx(%g), %s to %s %c cx(%g), gamma "
+          2 * ROLLER + RWALL, top, hatch);
+  fprintf(f, "  set arrow from %s %c cx(%g), %s to %s %c cx(%g), %s "
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
-          end, x, s > 0 ? '+' : '-', 2 * ROLLER);
+          end, x, s > 0 ? '+' : '-', 2 * ROLLER, top);
 }
-#line 918 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 static void top_support(FILE *f, Problem_bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -63,7 +60,7 @@ static void top_support(FILE *f, Problem_bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 937 "paper/figures.nw"
+#line 1284 "paper/figures.nw"
 static double load_reach(const Problem_side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Problem_side *sd, int k)
@@ -75,22 +72,27 @@ static double side_reach(const Problem_side *sd, int k)
   default: return 0;
   }
 }
-#line 953 "paper/figures.nw"
+#line 1300 "paper/figures.nw"
 static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
-  double W = p->b - p->a, amax = 0;
+  double W = pl->right - pl->left, amax = 0;
   Body_page L;
   for (int i = 0; i <= p->N; i++) amax = fmax(amax, pl->s.alpha0[i]);
-  L.ucm = fmin(17.6 / W, 8.8 / p->gamma);
-  L.vex = p->gamma * L.ucm >= 1.76 ? 1 : plot_nice_down(3.52 / (p->gamma * L.ucm));
+  L.ucm = fmin(17.6 / W, 8.8 / pl->top);
+  L.vex = pl->top * L.ucm >= 1.76 ? 1 : plot_nice_down(3.52 / (pl->top * L.ucm));
   plot_widen(&L.ucm, &L.vex, W * L.ucm, 1.76, 3.52);
   for (int k = 0; k < SIDE_COUNT; k++) L.ext[k] = side_reach(&p->side[k], k);
-  L.xlo = p->a - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
-  L.xhi = p->b + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
+  if (pl->part) {
+    double r = plot_part_reach(pl, L.ucm, L.vex, 1);
+    L.ext[SIDE_TOP] = plot_part_reach(pl, L.ucm, L.vex, 0);
+    L.ext[SIDE_LEFT] = fmax(L.ext[SIDE_LEFT], r), L.ext[SIDE_RIGHT] = fmax(L.ext[SIDE_RIGHT], r);
+  }
+  L.xlo = pl->left - (L.ext[SIDE_LEFT] + LGAP + LROOM) / L.ucm;
+  L.xhi = pl->right + (L.ext[SIDE_RIGHT] + LGAP + LROOM) / L.ucm;
   L.ylo = -BELOW / (L.ucm * L.vex);
-  L.yhi = p->gamma + (L.ext[SIDE_TOP] + ABOVE) / (L.ucm * L.vex);
+  L.yhi = pl->top + (L.ext[SIDE_TOP] + ABOVE) / (L.ucm * L.vex);
   L.top = L.vex != 1 ? 2.2 : 1.4;
   L.slo = -0.2 * fmax(p->C0, amax);
   L.shi = 1.4 * fmax(p->C0, amax);
@@ -98,7 +100,7 @@ static Body_page body_page(const Plot *pl)
   body_fit(pl, &L);
   return L;
 }
-#line 982 "paper/figures.nw"
+#line 1334 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
 static void load_text(const Problem_side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
@@ -121,11 +123,7 @@ static void body_fit(const Plot *pl, Body_page *L)
            pl->args->title ? pl->args->title : pl->args->dir);
   L->width = fmax(2.6 + (L->xhi - L->xlo) * L->ucm + 0.6, plot_text_cm(t, 12) + 1);
 }
-#line 1017 "paper/figures.nw"
-#define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
-#define AGAP 0.088    /* between the side and the arrow (0.02 m) */
-#define ASTEP 1.1     /* between two arrows (0.25 m) */
-#define AHEAD 0.264   /* the arrow's head (0.06 m) */
+#line 1376 "paper/figures.nw"
 static const double normal[SIDE_COUNT][2] = { { -1, 0 }, { 1, 0 }, { 0, 1 } };
 
 /* the tail and head of the arrows of side k, cm from the side */
@@ -150,7 +148,7 @@ static double load_reach(const Problem_side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 1048 "paper/figures.nw"
+#line 1403 "paper/figures.nw"
 static void load_text(const Problem_side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -160,13 +158,13 @@ static void load_text(const Problem_side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 1062 "paper/figures.nw"
+#line 1417 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 1072 "paper/figures.nw"
+#line 1427 "paper/figures.nw"
 static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -200,7 +198,7 @@ static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1121 "paper/figures.nw"
+#line 1476 "paper/figures.nw"
 /* the sides' names at 1.2 times the text, so that they print at 9.8 pt
    (the text's 8.2 pt, fontpt); the stacked scripts of Gamma_P^k at 0.85 of
    gnuplot's scripts (0.8), 6.7 pt, where the two clear each other */
@@ -232,27 +230,28 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1161 "paper/figures.nw"
+#line 1516 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
   char name[64], g[160];
   double x, up;
-  int low = p->gamma * L->ucm * L->vex < 3, narrow = !low && (p->b - p->a) * L->ucm < 4;
+  int low = pl->top * L->ucm * L->vex < 3, narrow = !low && (p->b - p->a) * L->ucm < 4;
   fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + %s*(b - a), %s*gamma "
           "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
           : "0.275", low ? "0.5" : "0.6");
   side_name(p, SIDE_LEFT, name, sizeof name);
-  fprintf(f, "  set label '%s' at a - cx(%.4g), 0.6*gamma right%s\n", name,
-          L->ext[0] + LGAP, NAMEFONT);
+  fprintf(f, "  set label '%s' at a - cx(%.4g), %s right%s\n", name,
+          L->ext[0] + LGAP, pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
   side_name(p, SIDE_RIGHT, name, sizeof name);
-  fprintf(f, "  set label '%s' at b + cx(%.4g), 0.6*gamma left%s\n", name,
-          L->ext[1] + LGAP, NAMEFONT);
+  fprintf(f, "  set label '%s' at b + cx(%.4g), %s left%s\n", name,
+          L->ext[1] + LGAP, pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
   side_name(p, SIDE_TOP, name, sizeof name);
   top_name_place(p, L, &x, &up);
-  fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center%s\n", name,
-          plot_num(x), up, NAMEFONT);
+  if (!pl->part)
+    fprintf(f, "  set label '%s' at %s, gamma + cy(%.4g) center%s\n", name,
+            plot_num(x), up, NAMEFONT);
   fprintf(f, "  set label 'Γ_C({/:Italic α}^0)' at a + %s*(b - a), cy(0.616) center front\n",
           narrow ? "0.5" : low ? "0.1" : "0.1875");
   foundation_text(p, g, sizeof g);
@@ -260,7 +259,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1191 "paper/figures.nw"
+#line 1547 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -271,7 +270,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1206 "paper/figures.nw"
+#line 1562 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -281,23 +280,28 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1223 "paper/figures.nw"
+#line 1579 "paper/figures.nw"
+static void body_part(FILE *f, const Plot *pl, const Body_page *L);
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
   plot_place(f, "left", "(xhi - xlo)*ucm", "top", "(yhi - ylo)*ucm*vex");
   fprintf(f, "  set xrange [xlo:xhi]; set yrange [ylo:yhi]\n");
   plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor((p->b - p->a) * L->ucm / 2))), 0);
-  plot_tics(f, "y", 0, p->gamma, 2, 1);
+  plot_tics(f, "y", 0, pl->top, 2, 1);
   fprintf(f, "  set ylabel '{/:Italic x}_2 [m]'\n  set border 3\n");
   if (L->vex != 1)
     fprintf(f, "  set title '%s scale exaggerated ×%g' offset 0, -0.3\n", L->vex > 1
             ? "vertical" : "horizontal", L->vex > 1 ? L->vex : 1 / L->vex);
   fprintf(f, "  set object rect from xlo, ylo to xhi, 0 fs pattern 5 noborder fc 'gray40' back\n"
           "  set arrow from xlo, 0 to xhi, 0 nohead lw 2 lc 'gray30' back\n");
+  if (pl->part) {
+    body_part(f, pl, L);
+    return;
+  }
   int n = rollers(p->gamma * L->ucm * L->vex);
-  side_support(f, p->side[SIDE_LEFT].kind, "a", "a_left", -1, n);
-  side_support(f, p->side[SIDE_RIGHT].kind, "b", "a_right", 1, n);
+  side_support(f, p->side[SIDE_LEFT].kind, "a", "a_left", -1, n, "gamma");
+  side_support(f, p->side[SIDE_RIGHT].kind, "b", "a_right", 1, n, "gamma");
   top_support(f, p->side[SIDE_TOP].kind, rollers((p->b - p->a) * L->ucm));
   for (int k = 0; k < SIDE_COUNT; k++)
     if (p->side[k].kind == BC_TRACTION)
@@ -310,7 +314,25 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1265 "paper/figures.nw"
+#line 1628 "paper/figures.nw"
+static void body_part(FILE *f, const Plot *pl, const Body_page *L)
+{
+  const Problem *p = &pl->s.problem;
+  int n = rollers(p->C0prime * L->ucm * L->vex);
+  side_support(f, p->side[SIDE_LEFT].kind, "a", "a_left", -1, n, "cprime");
+  side_support(f, p->side[SIDE_RIGHT].kind, "b", "a_right", 1, n, "cprime");
+  plot_part_curves(f, pl, L->ucm, L->vex);
+  body_labels(f, pl, L);
+  fprintf(f, "  set arrow from a, a_left to a, cprime nohead lw 2 lc 'black' front\n"
+          "  set arrow from b, cprime to b, a_right nohead lw 2 lc 'black' front\n"
+          "  plot shape using 1:2 with filledcurves y=cprime fc '#dce6f2' notitle, \\\n"
+          "       $part using 1:2 with filledcurves closed fc '#dce6f2' notitle, \\\n"
+          "       $holes using 1:2 with filledcurves closed fc 'white' notitle, \\\n"
+          "       $outline using 1:2 with lines lw 2 lc 'black' notitle, \\\n"
+          "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
+          "  unset object; unset arrow; unset label; unset title\n");
+}
+#line 1657 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -341,7 +363,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1300 "paper/figures.nw"
+#line 1692 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -351,7 +373,18 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1318 "paper/figures.nw"
+#line 1710 "paper/figures.nw"
+/* a part's outline: its chains, those filled, its holes */
+static void body_part_blocks(FILE *f, const Plot *pl)
+{
+  static const char *const name[3] = { "$holes", "$outline", "$part" };
+  for (int w = -1; w <= 1; w++) {
+    fprintf(f, "%s << EOD\n", name[w + 1]);
+    plot_chains_write(f, pl->part, &pl->chains, pl->part->xy, NULL, w);
+    fprintf(f, "EOD\n");
+  }
+}
+
 void plot_body_figure(FILE *f, const Plot *pl, const char *out)
 {
   const Problem *p = &pl->s.problem;
@@ -377,10 +410,11 @@ void plot_body_figure(FILE *f, const Plot *pl, const char *out)
   fprintf(f, "slo = %s; shi = %s; exag = %s     # the bottom strip, x2 times exag\n"
           "left = 2.6; top = %s; gap = 2.2                  # margins (cm)\n"
           "Wcm = %s       # left + (xhi - xlo)*ucm + 0.6, or the title's width\n"
-          "Hcm = top + (yhi - ylo)*ucm*vex + gap + (shi - slo)*exag*ucm + 1.6\n",
+          "Hcm = top + (yhi - ylo)*ucm*vex + gap + (shi - slo)*exag*ucm + %s\n",
           plot_real(L.slo, 6), plot_real(L.shi, 6), plot_real(L.exag, 0), plot_real(L.top, 0),
-          plot_real(L.width, 6));
+          plot_real(L.width, 6), pl->part ? "2.0" : "1.6");
   fputs(plot_page_lines, f);
+  if (pl->part) body_part_blocks(f, pl);
   fprintf(f, "do for [fmt in 'pdf png'] {\n%s", plot_terminal_lines);
   fprintf(f, "  set multiplot title sprintf('%%s: Ω({/:Italic α}^0) and the parts of its "
           "boundary', title)\n");

@@ -1,21 +1,44 @@
-#line 159 "paper/figures.nw"
+#line 161 "paper/figures.nw"
 #ifndef CONTACTOPT_PLOT_PRIVATE_H
 #define CONTACTOPT_PLOT_PRIVATE_H
 #include <stdio.h>
 #include "plot.h"
 #include "scene.h"
 #include "objective.h"
-#line 395 "paper/figures.nw"
+#include "mesh.h"
+#line 420 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
+  int n;            /* all nodes: ncol*nrow, then a part's own */
+  const Mesh *part; /* a part: its triangles and boundary edges; NULL for
+                       the rectangle */
   double *xy;       /* 2 per node: x1, x2 [m] */
   double *u;        /* 2 per node: u1, u2 [m] */
 } Plot_state;
-/* the state in dir/solution.vtu, of the mesh of p; STATUS_INPUT for a
-   file that is not such a state, STATUS_MEMORY */
-int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st);
+/* the state in dir/solution.vtu, of the mesh of p (of part, a part's
+   mesh, when not NULL); STATUS_INPUT for a file that is not such a
+   state, STATUS_MEMORY */
+int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
+                    Status *st);
 void plot_state_free(Plot_state *s);
-#line 248 "paper/figures.nw"
+#line 574 "paper/figures.nw"
+typedef struct {
+  int nchain;   /* chains of boundary edges */
+  int *order;   /* nedge: the edges chain by chain, each one's end the next one's start */
+  int *start;   /* nchain + 1: chain k is order[start[k] .. start[k+1] - 1] */
+  int *closed;  /* nchain: it ends at its first node */
+} Plot_chains;
+/* m's boundary edges in chains; nonzero when out of memory */
+int plot_chains(const Mesh *m, Plot_chains *c);
+void plot_chains_free(Plot_chains *c);
+/* the signed area that chain k closed by a straight line encloses, m^2 */
+double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double *xy);
+/* the chains as polylines, a line a node ("x1 x2", or "x1 x2 u1 u2" if
+   u), a blank line after each: the holes (which < 0), the rest (which >
+   0), or all (which == 0) */
+void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const double *xy,
+                       const double *u, int which);
+#line 268 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -24,11 +47,33 @@ typedef struct {
   int iterations;          /* its iterations */
   char state[2][1100];     /* the folders of its states: initial, final */
   Plot_state mesh[2];      /* their meshes and displacements (results only) */
+  Mesh *part;              /* a part of the user's own: its mesh, rebuilt
+                              from the scene; NULL for the rectangle */
+  double top;              /* the body's top: gamma, or the part's */
+  double left, right;      /* its extent in x1: a and b, or the part's */
+  Plot_chains chains;      /* a part: its boundary edges in chains */
   double start_value;      /* --start: the objective at alpha0 as given, or NaN */
 } Plot;
-#line 167 "paper/figures.nw"
+#line 171 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
+#line 1206 "paper/figures.nw"
+#define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
+#define ROLLER 0.154  /* a roller's radius (0.035 m) */
+#define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
+#define LGAP 0.22     /* between a decoration and the side's name */
+#line 1369 "paper/figures.nw"
+#define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
+#define AGAP 0.088    /* between the side and the arrow (0.02 m) */
+#define ASTEP 1.1     /* between two arrows (0.25 m) */
+#define AHEAD 0.264   /* the arrow's head (0.06 m) */
+#line 174 "paper/figures.nw"
+/* a part's named curves on the body figure: the decorations of their
+   conditions and their names, at ucm cm a metre, x2 exaggerated vex times */
+void plot_part_curves(FILE *f, const Plot *pl, double ucm, double vex);
+/* how far those whose names stand beside them (sideways) or above or
+   below them (!sideways) reach out of the body, their names included, cm */
+double plot_part_reach(const Plot *pl, double ucm, double vex, int sideways);
 /* the lines that set up the page and the terminal of every script */
 extern const char plot_page_lines[], plot_terminal_lines[];
 /* v as gnuplot reads it back exactly; in a static buffer of 8 */

@@ -1,10 +1,10 @@
-#line 234 "paper/figures.nw"
+#line 254 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1462 "paper/figures.nw"
+#line 1866 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -21,19 +21,22 @@ typedef struct {
   int sinks;          /* the body may move vertically: its sink is drawn unscaled */
   double S[2], t2[2]; /* each state: the scale of its displacements and its sink [m] */
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
+  int tris;           /* a part: its triangles drawn (else only its outline) */
 } Results_page;
-#line 1482 "paper/figures.nw"
+#line 1887 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
+  for (int s = 0; s < p->part.ncurve; s++)   /* a part's curves hold it as a top */
+    if (p->part.curve[s].kind == BC_CLAMPED || p->part.curve[s].kind == BC_ROLLER) return 0;
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1492 "paper/figures.nw"
+#line 1899 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
-  for (int k = 0; k < s->ncol * s->nrow; k++)
+  for (int k = 0; k < s->n; k++)
     m = fmax(m, hypot(s->u[2 * k], s->u[2 * k + 1] - t2));
   return m;
 }
@@ -45,7 +48,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1512 "paper/figures.nw"
+#line 1919 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -61,7 +64,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1532 "paper/figures.nw"
+#line 1939 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -71,21 +74,30 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1544 "paper/figures.nw"
+#line 1951 "paper/figures.nw"
+/* a part: the side of its mean own triangle on the page, cm */
+static double part_cell(const Mesh *m, const Results_page *L)
+{
+  int first = 2 * m->N * m->M;
+  double A = 0;
+  for (int t = first; t < m->ntri; t++) A += fabs(mesh_area(m, t));
+  return m->ntri > first ? sqrt(2 * A / (m->ntri - first)) * L->ucm * sqrt(L->vex) : 0;
+}
+
 static Results_page results_page(const Plot *pl)
 {
   const Problem *p = &pl->s.problem;
   double w = HUGE_VAL, h = HUGE_VAL;
   Results_page L;
-  L.ucm = fmin(COLW / (1.05 * (p->b - p->a)), 7.0 / (1.35 * p->gamma));
-  L.vex = p->gamma * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (p->gamma * L.ucm));
-  plot_widen(&L.ucm, &L.vex, 1.05 * (p->b - p->a) * L.ucm, 1.2, 2.6);
-  L.pw = 1.05 * (p->b - p->a) * L.ucm;
+  L.ucm = fmin(COLW / (1.05 * (pl->right - pl->left)), 7.0 / (1.35 * pl->top));
+  L.vex = pl->top * L.ucm >= 1.2 ? 1 : plot_nice_down(2.6 / (pl->top * L.ucm));
+  plot_widen(&L.ucm, &L.vex, 1.05 * (pl->right - pl->left) * L.ucm, 1.2, 2.6);
+  L.pw = 1.05 * (pl->right - pl->left) * L.ucm;
   L.graphs = pl->optimize ? (p->contact == CONTACT_FRICTIONLESS ? 1 : 2) : 0;
   L.sinks = free_vertically(p);
   for (int k = 0; k < 1 + pl->optimize; k++) {
     least_cell(&pl->mesh[k], &L, &w, &h);
-    state_scale(&pl->mesh[k], L.sinks, 0.2 * p->gamma, &L.S[k], &L.t2[k]);
+    state_scale(&pl->mesh[k], L.sinks, 0.2 * pl->top, &L.S[k], &L.t2[k]);
     L.below[k] = crosses(&pl->mesh[k], L.S[k], L.t2[k], CROSS / (L.ucm * L.vex));
   }
   L.scol = (int) fmax(1, ceil(MESHCELL / w - SLACK));
@@ -93,9 +105,10 @@ static Results_page results_page(const Plot *pl)
   L.acol = (int) fmax(1, ceil(ARROWCELL / w - SLACK));
   L.arow = (int) fmax(1, ceil(ARROWCELL / h - SLACK));
   L.marks = (int) ceil((p->N + 1.0) / MARKS);
+  L.tris = pl->part && part_cell(pl->part, &L) >= 2 * MESHCELL;
   return L;
 }
-#line 1571 "paper/figures.nw"
+#line 1988 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -106,7 +119,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 1588 "paper/figures.nw"
+#line 2005 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -127,11 +140,14 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 1619 "paper/figures.nw"
-static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
+#line 2036 "paper/figures.nw"
+static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris);
+static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int sc, int sr,
+                       int tris)
 {
   int d = sc < sr ? sc : sr;
   fprintf(f, "$mesh%d << EOD\n", k);
+  if (s->part) part_lines(f, pl, s, tris);
   mesh_straight(f, s, 0, 0, 1), mesh_straight(f, s, 0, s->nrow - 1, 1);
   mesh_straight(f, s, 1, 0, 1), mesh_straight(f, s, 1, s->ncol - 1, 1);
   for (int j = sr; j < s->nrow - 1; j += sr) mesh_straight(f, s, 0, j, sc);
@@ -140,23 +156,63 @@ static void mesh_block(FILE *f, const Plot_state *s, int k, int sc, int sr)
   for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
+#line 2068 "paper/figures.nw"
+static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris)
+{
+  const Mesh *m = s->part;
+  if (!tris) {
+    plot_chains_write(f, m, &pl->chains, s->xy, s->u, 0);
+    return;
+  }
+  for (int t = 2 * m->N * m->M; t < m->ntri; t++) {
+    for (int v = 0; v <= 3; v++) {
+      int n = m->tri[3 * t + v % 3];
+      fprintf(f, "%.9g %.9g %.10g %.10g\n", s->xy[2 * n], s->xy[2 * n + 1], s->u[2 * n],
+              s->u[2 * n + 1]);
+    }
+    fputc('\n', f);
+  }
+}
 
 /* the nodes that carry an arrow: every c-th of every r-th row, and the
    last row, where the top's load acts */
-static void arrow_block(FILE *f, const Plot_state *s, int k, int c, int r)
+static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L);
+static void arrow_block(FILE *f, const Plot_state *s, const Results_page *L, int k)
 {
+  int c = L->acol, r = L->arow;
   fprintf(f, "$arrows%d << EOD\n", k);
   for (int j = 0; j < s->nrow; j = j + r < s->nrow || j == s->nrow - 1 ? j + r : s->nrow - 1)
     for (int i = 0; i < s->ncol; i += c) mesh_node(f, s, i, j);
+  if (s->part) part_arrows(f, s, L);
   fprintf(f, "EOD\n");
 }
-#line 1648 "paper/figures.nw"
+#line 2101 "paper/figures.nw"
+static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
+{
+  double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+  double cell[2] = { ARROWCELL / L->ucm, ARROWCELL / (L->ucm * L->vex) };
+  int first = s->ncol * s->nrow, w, h;
+  char *taken;
+  for (int k = first; k < s->n; k++)
+    for (int i = 0; i < 2; i++)
+      lo[i] = fmin(lo[i], s->xy[2 * k + i]), hi[i] = fmax(hi[i], s->xy[2 * k + i]);
+  if (s->n <= first) return;
+  w = (int) ((hi[0] - lo[0]) / cell[0]) + 1, h = (int) ((hi[1] - lo[1]) / cell[1]) + 1;
+  if (!(taken = calloc((size_t) w * h, 1))) return;   /* no arrows in the part */
+  for (int k = first; k < s->n; k++) {
+    int i = (int) ((s->xy[2 * k] - lo[0]) / cell[0]), j = (int) ((s->xy[2 * k + 1] - lo[1]) / cell[1]);
+    if (taken[j * w + i]++) continue;
+    fprintf(f, "%.9g %.9g %.10g %.10g\n", s->xy[2 * k], s->xy[2 * k + 1], s->u[2 * k],
+            s->u[2 * k + 1]);
+  }
+  free(taken);
+}
+#line 2128 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
-  const Problem *p = &pl->s.problem;
-  double W = p->b - p->a;
+  double W = pl->right - pl->left;
   plot_script_head(f, pl, "The results", out);
   for (int k = 0; k < 1 + pl->optimize; k++) {
     fprintf(f, "s%d = ", k);
@@ -168,8 +224,8 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
   if (pl->optimize) fprintf(f, "opt = "), plot_quote(f, pl->args->dir, 0), fprintf(f, "\n");
   if (pl->args->start) fprintf(f, "start = "), plot_quote(f, pl->args->start, 0), fprintf(f, "\n");
   fprintf(f, "bxlo = %s; bxhi = %s; bylo = %s; byhi = %s    # a body panel\n",
-          plot_real(p->a - 0.025 * W, 6), plot_real(p->b + 0.025 * W, 6),
-          plot_real(-0.25 * p->gamma, 6), plot_real(1.1 * p->gamma, 6));
+          plot_real(pl->left - 0.025 * W, 6), plot_real(pl->right + 0.025 * W, 6),
+          plot_real(-0.25 * pl->top, 6), plot_real(1.1 * pl->top, 6));
   fprintf(f, "ucm = %s; vex = %s              # cm per metre along x1; x2 exaggerated\n"
           "left = 2.8; colw = %s; colgap = 2.4; pw = (bxhi - bxlo)*ucm    # cm\n"
           "top = 2.4; rowgap = 3.0; graphh = %s; bodyh = (byhi - bylo)*ucm*vex\n"
@@ -184,22 +240,22 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "amax(x, y) = x > y ? x : y\n"
           "tens(m) = m > 0 ? floor(log10(m)) : 0       # the power of ten of m\n");
   for (int k = 0; k < 1 + pl->optimize; k++) {
-    mesh_block(f, &pl->mesh[k], k, L->scol, L->srow);
-    arrow_block(f, &pl->mesh[k], k, L->acol, L->arow);
+    mesh_block(f, pl, &pl->mesh[k], k, L->scol, L->srow, L->tris);
+    arrow_block(f, &pl->mesh[k], L, k);
   }
   if (!isnan(pl->start_value))
     fprintf(f, "$start << EOD      # %s at alpha0 as given, from start's summary.dat\n"
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 1692 "paper/figures.nw"
+#line 2171 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 1704 "paper/figures.nw"
+#line 2183 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -230,7 +286,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 1742 "paper/figures.nw"
+#line 2221 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -242,7 +298,7 @@ static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, con
   plot_place(f, x, "pw", y, "bodyh");
   fprintf(f, "  set xrange [bxlo:bxhi]; set yrange [bylo:byhi]\n");
   plot_tics(f, "x", p->a, p->b, fmax(1, fmin(4, floor(L->pw / 2))), 0);
-  plot_tics(f, "y", 0, p->gamma, 2, 0);
+  plot_tics(f, "y", 0, pl->top, 2, 0);
   fprintf(f, "  set border 3\n  set xlabel '{/:Italic x}_1 [m]' offset 0, %s\n"
           "  set ylabel '{/:Italic x}_2 [m]' offset 0.6, 0\n",
           q->kind == DEFORMED && L->below[q->state] ? "-0.6" : "0.4");
@@ -286,7 +342,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 1804 "paper/figures.nw"
+#line 2283 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -296,8 +352,8 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
   int k = q->state;
   body_panel_place(f, pl, L, q);
   if (q->kind == MESH) {
-    panel_title(f, L, k, "(%c) triangulation of %s%s%s", q->letter, state_name[k],
-                exaggerated(L), every(L));
+    panel_title(f, L, k, "(%c) triangulation of %s%s%s%s", q->letter, state_name[k],
+                exaggerated(L), every(L), pl->part && !L->tris ? ", the part by its outline" : "");
     fprintf(f, "%s  plot $mesh%d using 1:2 with lines lw 1 lc 'black' notitle\n"
             "  unset object 1\n", foundation, k);
   }
@@ -317,7 +373,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 1842 "paper/figures.nw"
+#line 2321 "paper/figures.nw"
 #define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
@@ -332,7 +388,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW / w), 3));
 }
-#line 1862 "paper/figures.nw"
+#line 2341 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -348,7 +404,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 1883 "paper/figures.nw"
+#line 2362 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -357,7 +413,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 1916 "paper/figures.nw"
+#line 2395 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -400,7 +456,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 1971 "paper/figures.nw"
+#line 2450 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -430,7 +486,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 2005 "paper/figures.nw"
+#line 2484 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);

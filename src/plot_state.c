@@ -1,10 +1,10 @@
-#line 225 "paper/figures.nw"
+#line 236 "paper/figures.nw"
 #include <errno.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 412 "paper/figures.nw"
+#line 442 "paper/figures.nw"
 /* the value of the attribute name in line, into buf; NULL if none */
 static const char *attribute(const char *line, const char *name, char *buf, size_t size)
 {
@@ -18,7 +18,7 @@ static const char *attribute(const char *line, const char *name, char *buf, size
   buf[e - s] = 0;
   return buf;
 }
-#line 431 "paper/figures.nw"
+#line 461 "paper/figures.nw"
 typedef struct {
   long points;                   /* NumberOfPoints */
   int native;                    /* written in this machine's byte order */
@@ -46,7 +46,7 @@ static int vtu_head(FILE *f, Vtu_head *h)
   h->base = ftell(f);
   return c == '_' && h->points > 0 && h->at[0] >= 0 && h->at[1] >= 0;
 }
-#line 462 "paper/figures.nw"
+#line 492 "paper/figures.nw"
 static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf)
 {
   uint64_t bytes;
@@ -57,8 +57,9 @@ static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf
   for (size_t j = 0; j < n; j++) out[2 * j] = buf[3 * j], out[2 * j + 1] = buf[3 * j + 1];
   return 1;
 }
-#line 476 "paper/figures.nw"
-int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st)
+#line 506 "paper/figures.nw"
+int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
+                    Status *st)
 {
   char path[1200];
   Vtu_head h;
@@ -66,7 +67,8 @@ int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st
   int rc = STATUS_OK;
   FILE *f;
   memset(s, 0, sizeof *s);
-  s->ncol = p->N + 1, s->nrow = p->M + p->R + 1;
+  s->ncol = p->N + 1, s->nrow = part ? part->nrow : p->M + p->R + 1;
+  s->n = part ? part->nnodes : s->ncol * s->nrow, s->part = part;
   snprintf(path, sizeof path, "%s/solution.vtu", dir);
   if (!(f = fopen(path, "rb")))
     return status_set(st, STATUS_INPUT, "plot: cannot read %s: %s", path, strerror(errno));
@@ -75,9 +77,9 @@ int plot_state_read(const char *dir, const Problem *p, Plot_state *s, Status *st
                     "Points, displacement and appended data)", path);
   else if (!h.native)
     rc = status_set(st, STATUS_INPUT, "plot: %s: written in the other byte order", path);
-  else if (h.points != (long) s->ncol * s->nrow)
+  else if (h.points != (long) s->n)
     rc = status_set(st, STATUS_INPUT, "plot: %s: %ld points, where the scene's mesh "
-                    "has %d", path, h.points, s->ncol * s->nrow);
+                    "has %d", path, h.points, s->n);
   else if (!(s->xy = malloc(2 * h.points * sizeof(double)))
            || !(s->u = malloc(2 * h.points * sizeof(double)))
            || !(buf = malloc(3 * h.points * sizeof(double))))

@@ -476,6 +476,120 @@ else
   echo "# setsid or env --default-signal is missing: the interruption of plot is not tried"
 fi
 
+# ---- a part of the user's own ------------------------------------------------------
+# the band (0,4) x (0.25,1) of tests/parts/bore.geo on the strip, with a
+# bore of radius 0.2 at (2, 0.625) under a pressure, the top loaded: the
+# body figure draws the part's outline from its mesh, the bore a hole,
+# the curves named with their loads; both figures on the page
+mkdir -p $TMP/parts
+cat > $TMP/parts/bore.scene <<EOF2
+[geometry]
+a = 0
+b = 4
+[design]
+N = 16
+C0 = 0.05
+C1 = 0.025
+C2 = 0.91
+initial = arc
+arc_x1 = 4
+arc_x2 = 160.025
+arc_radius = 160.025
+[mesh]
+M = 1
+C0prime = 0.25
+[part]
+geometry = $PWD/tests/parts/bore.geo
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = clamped
+[right]
+bc = roller
+[boundary.top]
+bc = traction
+P2 = -5.75e8
+[boundary.bore]
+bc = pressure
+p = 2e8
+EOF2
+$BIN optimize $TMP/parts/bore.scene -o $TMP/bore > /dev/null 2>&1
+check "optimize a part with a bore exits 0" test -s $TMP/bore/final/solution.vtu
+plotted "optimize a part with a bore" $TMP/bore
+$BIN plot $TMP/bore --gnuplot > $TMP/bore.gp
+# block NAME: the lines of the data block $NAME of the body figure
+block() { awk -v n="\$$1" '$1 == n && $2 == "<<" { on = 1; next } $1 == "EOD" { on = 0 } on' $TMP/bore.gp; }
+# on_outline: every point (x, y) of the input on the band's sides x = 0,
+# x = 4 (0.25 <= y <= 1), its top y = 1 (0 <= x <= 4), or the bore
+on_outline() { awk 'NF { x = $1; y = $2; r = sqrt((x - 2)^2 + (y - 0.625)^2); e = 1e-9
+    side = (x < e || x > 4 - e) && y > 0.25 - e && y < 1 + e
+    if (!(side || (y > 1 - e && x > -e && x < 4 + e) || (r > 0.2 - 1e-6 && r < 0.2 + 1e-6))) bad++ }
+    END { exit bad > 0 }'; }
+# chains: "points closed length" of each polyline of the input
+chains() { awk 'function end() { if (n) printf "%d %d %.6f\n", n, (x0 == px && y0 == py), l; n = 0; l = 0 }
+    !NF { end(); next } { if (n) l += sqrt(($1 - px)^2 + ($2 - py)^2); else { x0 = $1; y0 = $2 }
+    px = $1; py = $2; n++ } END { end() }'; }
+block outline > $TMP/outline
+block holes > $TMP/hole
+check "a part: every point of its outline is on the band's sides, its top or the bore" \
+  on_outline < $TMP/outline
+chains < $TMP/outline > $TMP/chains
+chains < $TMP/hole > $TMP/holes
+check "a part: two chains, the sides and top open, 5.5 m long, the bore closed, about 2 pi 0.2 m long ($(tr '\n' ' ' < $TMP/chains))" \
+  sh -c "[ \$(wc -l < $TMP/chains) -eq 2 ] && awk '\$2 == 0 && \$3 > 5.5 - 1e-9 && \$3 < 5.5 + 1e-9 { o++ }
+    \$2 == 1 && \$1 >= 9 && \$3 > 0.98 * 2 * 3.14159265 * 0.2 && \$3 <= 2 * 3.14159265 * 0.2 { c++ }
+    END { exit !(o == 1 && c == 1) }' $TMP/chains"
+check "a part: the bore, and only it, is filled white as a hole" \
+  sh -c "[ \$(wc -l < $TMP/holes) -eq 1 ] && awk 'NF { r = sqrt((\$1 - 2)^2 + (\$2 - 0.625)^2); if (r < 0.2 - 1e-6 || r > 0.2 + 1e-6) bad++ } END { exit bad > 0 }' $TMP/hole"
+check "a part: its curves named with their conditions" sh -c \
+  "grep -q \"set label 'top'.': ({/:Italic P}_1, {/:Italic P}_2) = (0, −5.75·10^{8}) N/m^2'\" $TMP/bore.gp &&
+   grep -q \"set label 'bore'.': {/:Italic p} = 2·10^{8} N/m^2'\" $TMP/bore.gp"
+check "a part: its top is the mesh's, 1 m, and its strip ends at C0prime = 0.25" \
+  grep -q '^a = 0.0; b = 4.0; gamma = 1.0 .*cprime = 0.25\|^cprime = 0.25 ' $TMP/bore.gp
+# the pressure's arrows: those based on the bore (on its chords, at most
+# 0.01 m inside its circle at these sizes) point away from its centre
+# (into the body), their heads inside the bore; the top's point down
+ucm=$(sed -n 's/^ucm = \([^;]*\); vex = \([^ ]*\) .*/\1/p' $TMP/bore.gp | head -1)
+vex=$(sed -n 's/^ucm = \([^;]*\); vex = \([^ ]*\) .*/\2/p' $TMP/bore.gp | head -1)
+check "a part: the pressure's arrows in the bore push into the body, the top's load points down" sh -c \
+  "grep '^  set arrow from .*head filled' $TMP/bore.gp | sed 's/c[xy](\([^)]*\))/\1/g; s/,//g' |
+   awk -v u=$ucm -v v=$vex '{ x = \$4; y = \$7; tx = x + \$6 / u; ty = y + \$9 / (u * v)
+     hx = \$11 + \$13 / u; hy = \$14 + \$16 / (u * v); r = sqrt((x - 2)^2 + (y - 0.625)^2)
+     rh = sqrt((hx - 2)^2 + (hy - 0.625)^2); rt = sqrt((tx - 2)^2 + (ty - 0.625)^2)
+     if (r > 0.19 && r < 0.2 + 1e-6) { bore++; if (rh <= rt || rh > 0.2) bad++ }
+     else if (y > 1 - 1e-9) { top++; if (!(hx == tx && hy < ty)) bad++ } else bad++ }
+     END { exit !(bore >= 4 && top >= 8 && !bad) }'"
+# off_page FIG: the words of FIG.pdf whose box passes an edge of the page
+# by more than 1 pt (a clipped label), as tests/figures.sh reads them
+off_page() { pdftotext -bbox $1.pdf - | awk -v W="$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')" \
+    -v H="$(pdfinfo $1.pdf | awk '/^Page size/ { print $5 }')" '
+  /<word / { split($0, a, "\""); t = $0; sub(/.*">/, "", t); sub(/<\/word>.*/, "", t)
+             if (a[2] < -1 || a[4] < -1 || a[6] > W + 1 || a[8] > H + 1) printf "%s ", t }'; }
+if command -v pdftotext > /dev/null && command -v pdfinfo > /dev/null; then
+  for fig in body results; do
+    check "a part: every word of the $fig figure on its page ($(off_page $TMP/bore/plot-$fig))" \
+      test -z "$(off_page $TMP/bore/plot-$fig)"
+  done
+  check "a part: the curves' names are printed on the body figure" sh -c \
+    "pdftotext $TMP/bore/plot-body.pdf - | grep -q '^bore: ' && pdftotext $TMP/bore/plot-body.pdf - | grep -q '^top: '"
+else
+  echo "# pdftotext or pdfinfo is missing: the words of a part's figures are not read"
+fi
+# refined four times (16 times the triangles) and the top clamped: the
+# results draw the part's outline alone, and plot takes seconds
+$BIN optimize $TMP/parts/bore.scene -s mesh.refine=4 -s boundary.top.bc=clamped -o $TMP/bore4 > /dev/null 2>&1
+t0=$(date +%s.%N)
+$BIN plot $TMP/bore4 > /dev/null 2> $TMP/err; rc=$?
+t1=$(date +%s.%N)
+el=$(calc 't1 - t0' t1=$t1 t0=$t0)
+check "a part refined 4 times: plot exits 0 in under 20 s ($el s; $(head -c 200 $TMP/err))" \
+  sh -c "[ $rc -eq 0 ] && [ -s $TMP/bore4/plot-results.png ] && awk 'BEGIN { exit !($el < 20) }'"
+$BIN plot $TMP/bore4 --gnuplot > $TMP/bore4.gp
+check "a part refined 4 times: the results draw its outline, the top clamped hatched" sh -c \
+  "grep -q 'the part by its outline' $TMP/bore4.gp && grep -q \"set label 'top'.' (clamped)'\" $TMP/bore4.gp &&
+   [ \$(grep -c \"nohead lw 1 lc 'gray40'\" $TMP/bore4.gp) -ge 40 ]"
+
 # ---- the help ----------------------------------------------------------------------------
 $BIN plot --help > $TMP/help; rc=$?
 for opt in -o --body --results --start --title --gnuplot --plot-files 'Exit status'; do
