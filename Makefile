@@ -368,9 +368,9 @@ figures/cgssor.tex: src/cgssor-table.sh bin/contactopt data/example-5.1-tresca.s
 figures/parts.tex: src/parts-table.sh bin/contactopt $(wildcard data/parts/*.scene data/parts/*.geo)
 	@mkdir -p figures
 	sh $< out/parts > $@.partial && mv $@.partial $@
-# make parts-plots: the figure of each optimised part by contactopt plot
-# (the body at its initial shape, the results of its optimisation), from
-# the runs of figures/parts.tex; not yet among the figures of make figures
+# the figures of each optimised part by contactopt plot (the body at its
+# initial shape, the results of its optimisation), from the runs of
+# figures/parts.tex: among those of make figures, and make parts-plots alone
 PARTS_PLOTS := $(patsubst data/parts/%.scene,figures/part-%-results.pdf,$(wildcard data/parts/*.scene))
 .PHONY: parts-plots
 parts-plots: $(PARTS_PLOTS)
@@ -413,7 +413,7 @@ build/paper/%.tex: paper/%.nw build/paper/all.defs
 # first of each entry. The build fails where the pages do not set: an
 # overfull box over 20 pt, a float too large, an undefined reference, an
 # index entry twice (paper/latex-log.sh reads the log and the index).
-paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) figures/keys.tex figures/layers.tex paper/bench-state.tex \
+paper/contactopt.pdf: $(WOVEN) paper/latex-log.sh $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) $(PARTS_PLOTS) figures/keys.tex figures/layers.tex paper/bench-state.tex \
                       paper/bench-performance.tex paper/bench-optimize.tex \
                        paper/bench-output.tex paper/bench-kernels.tex \
                        paper/cholmod-long.tex paper/bench-levels.tex paper/bench-orderings.tex | deps
@@ -486,8 +486,8 @@ figures/keys.tex: bin/contactopt
 # depends on it, and make -j2 runs them side by side.  The figures draw the
 # meshes from nodes.dat and triangles.dat, which only --plot-files writes.
 
-figures: $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)
-	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table, the tables of the hard cases, of MPRGP and of the shipped parts)"
+figures: $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) $(PARTS_PLOTS)
+	@echo "figures: $(words $(FIGURES) $(ACCURACY_FIGS) $(HARD_FIGS) $(PARTS_PLOTS)) files in figures/ (Fig. 5.1-5.4 and the friction and Coulomb figures as PDF and PNG, the reproduction, suite, friction and Coulomb tables, the accuracy figure and table, the tables of the hard cases, of MPRGP and of the shipped parts, and the figures of the parts)"
 
 out/example-%/summary.dat: data/example-%.scene bin/contactopt
 	bin/contactopt solve $< -o $(@D) --plot-files > /dev/null

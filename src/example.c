@@ -1,4 +1,4 @@
-#line 360 "paper/overview.nw"
+#line 359 "paper/overview.nw"
 /* example.c: the contact shape of least energy of the body of a scene,
    as contactopt optimize finds it, without the files: example SCENE */
 #include <stdio.h>

@@ -197,7 +197,7 @@ static void fem_cos_sin_degrees(double degrees, double *c, double *s)
   default: *c = s0, *s = -c0; break;
   }
 }
-#line 513 "paper/fem.nw"
+#line 515 "paper/fem.nw"
 static const char *fem_isotropic_refusal(const Problem_material *m,
                                          char *buf, size_t size);
 static const char *fem_orthotropic_refusal(const Problem_material *m,
@@ -212,7 +212,7 @@ const char *fem_material_refusal(const Problem_material *m,
        ? fem_orthotropic_refusal(m, model, buf, size)
        : fem_isotropic_refusal(m, buf, size);
 }
-#line 530 "paper/fem.nw"
+#line 532 "paper/fem.nw"
 static const char *fem_refuse(char *buf, size_t size, const char *fmt, ...)
 {
   va_list ap;
@@ -242,7 +242,7 @@ static const char *fem_isotropic_refusal(const Problem_material *m,
   if (!(m->nu > -1)) return fem_refuse(buf, size, "nu must be > -1 (stability)");
   return NULL;
 }
-#line 565 "paper/fem.nw"
+#line 567 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size);
@@ -271,7 +271,7 @@ static const char *fem_orthotropic_refusal(const Problem_material *m,
                      "ellipticity: its D is not positive definite in floating point");
   return why;
 }
-#line 597 "paper/fem.nw"
+#line 599 "paper/fem.nw"
 static const char *fem_poisson_refusal(const Problem_material *m,
                                        Problem_plane_model model,
                                        char *buf, size_t size)
@@ -288,7 +288,7 @@ static const char *fem_poisson_refusal(const Problem_material *m,
                         name[k][2], sqrt(pair[k][1] / pair[k][2]));
   if (n == 1) return NULL;
   
-#line 618 "paper/fem.nw"
+#line 620 "paper/fem.nw"
 double nu21 = m->nu12 * m->E2 / m->E1, nu31 = m->nu13 * m->E3 / m->E1,
        nu32 = m->nu23 * m->E3 / m->E2;
 double delta = 1 - m->nu12 * nu21 - m->nu13 * nu31 - m->nu23 * nu32
@@ -297,10 +297,10 @@ if (!(delta > 0))
   return fem_refuse(buf, size, "the Poisson ratios must satisfy 1 - nu12 nu21 "
                     "- nu13 nu31 - nu23 nu32 - 2 nu21 nu32 nu13 > 0 "
                     "(ellipticity in plane strain), not %.3g", delta);
-#line 613 "paper/fem.nw"
+#line 615 "paper/fem.nw"
   return NULL;
 }
-#line 629 "paper/fem.nw"
+#line 631 "paper/fem.nw"
 /* D of m finite and positive definite: its leading minors > 0 */
 static int fem_definite(const Problem_material *m, Problem_plane_model model)
 {
@@ -316,7 +316,7 @@ static int fem_definite(const Problem_material *m, Problem_plane_model model)
                  + d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
   return d[0][0] > 0 && m2 > 0 && m3 > 0;
 }
-#line 694 "paper/fem.nw"
+#line 696 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6]);
 
 void fem_element_xy(const Mesh *m, int t, double xy[6])
@@ -334,7 +334,7 @@ void fem_element_q(const Mesh *m, const Fem_dofs *d, const double *Q, int t,
   fem_element_dofs(m, d, t, g);
   for (int r = 0; r < 6; r++) q[r] = g[r] >= 0 ? Q[g[r]] : 0;
 }
-#line 715 "paper/fem.nw"
+#line 717 "paper/fem.nw"
 double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
 {
   for (int k = 0; k < 3; k++) {
@@ -344,7 +344,7 @@ double fem_element_gradients(const double xy[6], double gx[3], double gy[3])
   }
   return (xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1]);
 }
-#line 728 "paper/fem.nw"
+#line 730 "paper/fem.nw"
 void fem_element_strain(const double gx[3], const double gy[3],
                         const double q[6], long double e[3])
 {
@@ -356,7 +356,7 @@ void fem_element_strain(const double gx[3], const double gy[3],
     e[2] += (long double) gx[k] * q[2 * k + 1];
   }
 }
-#line 746 "paper/fem.nw"
+#line 748 "paper/fem.nw"
 double fem_triangle_strain(const Mesh *m, const Fem_dofs *d, const double *Q,
                            int t, long double e[3])
 {
@@ -376,14 +376,14 @@ void fem_element_stress(const Fem_hooke *H, const long double e[3], long double 
     for (int c = 0; c < 3; c++) s[r] += (long double) H->D[r][c] * e[c];
   }
 }
-#line 772 "paper/fem.nw"
+#line 774 "paper/fem.nw"
 long double fem_element_stress33(const Fem_hooke *H, const long double e[3])
 {
   const double *d = H->D33;
   if (d[1] == d[0] && d[2] == 0) return d[0] * (e[0] + e[1]);
   return d[0] * e[0] + d[1] * e[1] + d[2] * e[2];
 }
-#line 787 "paper/fem.nw"
+#line 789 "paper/fem.nw"
 /* B of the triangle xy; returns twice its area */
 static double fem_element_B(const double xy[6], double B[3][6])
 {
@@ -395,13 +395,13 @@ static double fem_element_B(const double xy[6], double B[3][6])
   }
   return area2;
 }
-#line 801 "paper/fem.nw"
+#line 803 "paper/fem.nw"
 void fem_element_stiffness(const double xy[6], const Fem_hooke *H,
                            double K[6][6])
 {
   double B[3][6], area2 = fem_element_B(xy, B);
   
-#line 810 "paper/fem.nw"
+#line 812 "paper/fem.nw"
 double DB[3][6];
 const double (*D)[3] = H->D;
 for (int r = 0; r < 3; r++)
@@ -411,9 +411,9 @@ for (int r = 0; r < 6; r++)
   for (int c = 0; c < 6; c++)
     K[r][c] = 0.5 * area2 * (B[0][r] * DB[0][c] + B[1][r] * DB[1][c]
                             + B[2][r] * DB[2][c]);
-#line 806 "paper/fem.nw"
+#line 808 "paper/fem.nw"
 }
-#line 863 "paper/fem.nw"
+#line 865 "paper/fem.nw"
 static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
 {
   int n = m->nnodes, *p = calloc(n + 1, sizeof *p), *next = malloc(n * sizeof *next);
@@ -429,17 +429,17 @@ static int fem_neighbours(const Mesh *m, int **adj_p, int **adj)
   for (int k = 0, from = 0; k < n; k++) {
     int to = p[k + 1];
     
-#line 885 "paper/fem.nw"
+#line 887 "paper/fem.nw"
 for (int q = from + 1; q < to; q++)
   for (int r = q, v = a[q]; r > from && a[r - 1] > v; r--) a[r] = a[r - 1], a[r - 1] = v;
 for (int q = from; q < to; q++)
   if (q == from || a[q] != a[q - 1]) a[out++] = a[q];
-#line 878 "paper/fem.nw"
+#line 880 "paper/fem.nw"
     p[k + 1] = out, from = to;
   }
   return 0;
 }
-#line 893 "paper/fem.nw"
+#line 895 "paper/fem.nw"
 static int fem_column(const Fem_dofs *d, const int *adj_p, const int *adj, int b,
                       Sparse_index *rows)
 {
@@ -467,7 +467,7 @@ static size_t fem_pattern(const Fem_dofs *d, const int *adj_p, const int *adj,
   return nnz;
 }
 
-#line 841 "paper/fem.nw"
+#line 843 "paper/fem.nw"
 cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
                                   cholmod_common *cm, Status *st)
 {
@@ -482,7 +482,7 @@ cholmod_sparse *fem_stiffness_new(const Mesh *m, const Fem_dofs *d,
   if (!A) status_set(st, STATUS_MEMORY, "stiffness: out of memory");
   return A;
 }
-#line 923 "paper/fem.nw"
+#line 925 "paper/fem.nw"
 static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
 {
   for (int k = 0; k < 3; k++) {
@@ -491,7 +491,7 @@ static void fem_element_dofs(const Mesh *m, const Fem_dofs *d, int t, int g[6])
     g[2 * k + 1] = d->unknown[2 * node + 1];
   }
 }
-#line 936 "paper/fem.nw"
+#line 938 "paper/fem.nw"
 /* the index of row r in column c of A's pattern, -1 if it is not there */
 static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
 {
@@ -503,7 +503,7 @@ static Sparse_index fem_entry(const cholmod_sparse *A, int r, int c)
   }
   return lo <= hi && Ai[lo] == r ? lo : -1;
 }
-#line 962 "paper/fem.nw"
+#line 964 "paper/fem.nw"
 /* adds K's rows r0, r0+1 and columns c0, c0+1 (held unknowns skipped)
    into A at the unknowns gr (rows) and gc (columns); -1 when an entry is
    not in A's pattern */
@@ -525,7 +525,7 @@ static int fem_add_block(cholmod_sparse *A, double K[6][6], int r0, int c0,
     }
   return 0;
 }
-#line 988 "paper/fem.nw"
+#line 990 "paper/fem.nw"
 int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
                        const Fem_hooke *H, Status *st)
 {
@@ -537,17 +537,17 @@ int fem_stiffness_fill(cholmod_sparse *A, const Mesh *m, const Fem_dofs *d,
     fem_element_dofs(m, d, t, g);
     fem_element_stiffness(xy, H + mesh_material(m, t), K);
     
-#line 1005 "paper/fem.nw"
+#line 1007 "paper/fem.nw"
 for (int k = 0; k < 3; k++)
   for (int l = 0; l < 3; l++)
     if (fem_add_block(A, K, 2 * l, 2 * k, g + 2 * l, g + 2 * k))
       return status_set(st, STATUS_SYSTEM,
                         "stiffness: pattern does not match the mesh");
-#line 999 "paper/fem.nw"
+#line 1001 "paper/fem.nw"
   }
   return STATUS_OK;
 }
-#line 1021 "paper/fem.nw"
+#line 1023 "paper/fem.nw"
 static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p,
                               int held, double *b);
 
@@ -556,7 +556,7 @@ void fem_load(const Mesh *m, const Fem_dofs *d, const Problem *p, double *b)
   memset(b, 0, d->n * sizeof *b);
   fem_assemble_load(m, d, p, 0, b);
 }
-#line 1037 "paper/fem.nw"
+#line 1039 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b);
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
@@ -573,7 +573,7 @@ static void fem_assemble_load(const Mesh *m, const Fem_dofs *d, const Problem *p
       fem_add_traction(m, d, side, &p->side[side], held, b);
   if (m->nedge) fem_add_curve_loads(m, d, p, held, b);
 }
-#line 1057 "paper/fem.nw"
+#line 1059 "paper/fem.nw"
 static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double w,
                           int held, double *b)
 {
@@ -583,7 +583,7 @@ static void fem_add_force(const Fem_dofs *d, int node, const double f[2], double
     if (held && u < 0) b[k] += w * f[c];
   }
 }
-#line 1069 "paper/fem.nw"
+#line 1071 "paper/fem.nw"
 static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[2],
                                int held, double *b)
 {
@@ -591,7 +591,7 @@ static void fem_add_body_force(const Mesh *m, const Fem_dofs *d, const double F[
     for (int k = 0; k < 3; k++)
       fem_add_force(d, m->tri[3 * t + k], F, mesh_area(m, t) / 3, held, b);
 }
-#line 1083 "paper/fem.nw"
+#line 1085 "paper/fem.nw"
 static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id side,
                              const Problem_side *load, int held, double *b)
 {
@@ -609,7 +609,7 @@ static void fem_add_traction(const Mesh *m, const Fem_dofs *d, Problem_side_id s
     fem_add_force(d, q, load->P, L * (t1 * t1 - t0 * t0) / 2, held, b);
   }
 }
-#line 1108 "paper/fem.nw"
+#line 1110 "paper/fem.nw"
 static int fem_curve_force(const Mesh *m, const Problem *p, int e, double f[2])
 {
   if (m->edge_curve[e] < 0) return 0;
@@ -639,7 +639,7 @@ void fem_curve_resultant(const Mesh *m, const Problem *p, double L[2])
   for (int e = 0; e < m->nedge; e++)
     if (fem_curve_force(m, p, e, f)) L[0] += f[0], L[1] += f[1];
 }
-#line 1177 "paper/fem.nw"
+#line 1179 "paper/fem.nw"
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                    const Problem *p, const double *Q, double *r)
 {
@@ -652,7 +652,7 @@ void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
     if (g[0] >= 0 && g[1] >= 0 && g[2] >= 0 && g[3] >= 0 && g[4] >= 0 && g[5] >= 0)
       continue;                          /* no held vertex component */
     
-#line 1194 "paper/fem.nw"
+#line 1196 "paper/fem.nw"
 double xy[6], K[6][6], q[6];
 fem_element_xy(m, t, xy);
 fem_element_stiffness(xy, H + mesh_material(m, t), K);
@@ -663,10 +663,10 @@ for (int a = 0; a < 6; a++)
     for (int c = 0; c < 6; c++) s += (long double) K[a][c] * q[c];
     r[2 * m->tri[3 * t + a / 2] + a % 2] += (double) s;
   }
-#line 1189 "paper/fem.nw"
+#line 1191 "paper/fem.nw"
   }
 }
-#line 1209 "paper/fem.nw"
+#line 1211 "paper/fem.nw"
 static int fem_reaction_curve(const Mesh *m, const Problem *p, int node, int c)
 {
   for (int e = 0; e < m->nedge; e++)
@@ -675,7 +675,7 @@ static int fem_reaction_curve(const Mesh *m, const Problem *p, int node, int c)
       return SIDE_COUNT + m->edge_curve[e];
   return -1;
 }
-#line 1228 "paper/fem.nw"
+#line 1230 "paper/fem.nw"
 int fem_reaction_side(const Mesh *m, const Problem *p, int k)
 {
   int node = k / 2, c = k % 2, i = node % m->ncol, j = node / m->ncol;
@@ -692,20 +692,20 @@ int fem_reaction_side(const Mesh *m, const Problem *p, int k)
   if (owner < 0 && m->nedge) owner = fem_reaction_curve(m, p, node, c);
   return owner;
 }
-#line 1271 "paper/fem.nw"
+#line 1273 "paper/fem.nw"
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q)
 {
   long double U = 0, W = 0;
   for (int t = 0; t < m->ntri; t++) {
     
-#line 1285 "paper/fem.nw"
+#line 1287 "paper/fem.nw"
 long double e[3], sigma[3];
 long double area2 = fem_triangle_strain(m, d, Q, t, e);
 fem_element_stress(H + mesh_material(m, t), e, sigma);
 for (int r = 0; r < 3; r++)
   U += area2 / 4 * e[r] * sigma[r];     /* 1/2 |T| e'De, |T| = area2/2 */
-#line 1277 "paper/fem.nw"
+#line 1279 "paper/fem.nw"
   }
   for (int i = 0; i < d->n; i++) W += (long double) b[i] * Q[i];
   return (double) (U - W);

@@ -32,7 +32,7 @@ Fem_hooke fem_hooke_of(const Problem_material *m, Problem_plane_model model);
 const char *fem_material_refusal(const Problem_material *m,
                                  Problem_plane_model model, char *buf,
                                  size_t size);
-#line 671 "paper/fem.nw"
+#line 673 "paper/fem.nw"
 /* xy = (x1, y1, x2, y2, x3, y3), the vertices of triangle t */
 void fem_element_xy(const Mesh *m, int t, double xy[6]);
 /* q = (u1, u2) at the three vertices of triangle t; 0 where held */
@@ -64,7 +64,7 @@ void fem_curve_resultant(const Mesh *m, const Problem *p, double L[2]);
 /* E = 1/2 Q'AQ - b'Q, summed element by element as a strain energy */
 double fem_energy(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
                   const double *b, const double *Q);
-#line 1167 "paper/fem.nw"
+#line 1169 "paper/fem.nw"
 /* r (ndof) = K u - f at the held DOFs, the force of the sides on the
    body [N/m when Young's modulus is in Pa]; 0 at the unknowns */
 void fem_reactions(const Mesh *m, const Fem_dofs *d, const Fem_hooke *H,
