@@ -320,3 +320,39 @@ agrees() {
   _a=$(value energy $TMP/$2); _b=$(value energy $TMP/$1); _d=$(udiff $TMP/$2 $TMP/$1)
   check "$1: agrees with $2: E $_b (rel. $(rel "$_b" "$_a") <= 1e-9), u (rel. $(show %.1e "$_d") <= 1e-6)" \
     holds 'abs(b - a) <= 1e-9 * abs(a) && d <= 1e-6' a="$_a" b="$_b" d="$_d"; }
+
+# part_scene GEO: Example 5.1's strip and design (N = 16, M = 1, C0prime =
+# 0.25) under the part of the geometry file GEO, steel, clamped on the
+# left, on rollers on the right, its curve top under P2 = -5.75e8 Pa (the
+# article's load, over the whole top); a test appends its own sections
+part_scene() {
+  cat <<END
+[geometry]
+a = 0
+b = 4
+[design]
+N = 16
+C0 = 0.05
+C1 = 0.025
+C2 = 0.91
+initial = arc
+arc_x1 = 4
+arc_x2 = 160.025
+arc_radius = 160.025
+[mesh]
+M = 1
+C0prime = 0.25
+[part]
+geometry = $1
+[material]
+E = 2.15e11
+nu = 0.29
+[left]
+bc = clamped
+[right]
+bc = roller
+[boundary.top]
+bc = traction
+P2 = -5.75e8
+END
+}

@@ -28,36 +28,7 @@
 geo=$PWD/tests/parts
 # scene FILE GEO: Example 5.1's strip and design under the part GEO,
 # clamped left, roller right, the curve top under P2 = -5.75e8
-scene() { cat > "$1" <<END
-[geometry]
-a = 0
-b = 4
-[design]
-N = 16
-C0 = 0.05
-C1 = 0.025
-C2 = 0.91
-initial = arc
-arc_x1 = 4
-arc_x2 = 160.025
-arc_radius = 160.025
-[mesh]
-M = 1
-C0prime = 0.25
-[part]
-geometry = $geo/$2
-[material]
-E = 2.15e11
-nu = 0.29
-[left]
-bc = clamped
-[right]
-bc = roller
-[boundary.top]
-bc = traction
-P2 = -5.75e8
-END
-}
+scene() { part_scene "$geo/$2" > "$1"; }
 scene $TMP/window.scene window.geo
 scene $TMP/bore.scene bore.geo
 scene $TMP/layers.scene layers.geo

@@ -482,38 +482,12 @@ fi
 # body figure draws the part's outline from its mesh, the bore a hole,
 # the curves named with their loads; both figures on the page
 mkdir -p $TMP/parts
-cat > $TMP/parts/bore.scene <<EOF2
-[geometry]
-a = 0
-b = 4
-[design]
-N = 16
-C0 = 0.05
-C1 = 0.025
-C2 = 0.91
-initial = arc
-arc_x1 = 4
-arc_x2 = 160.025
-arc_radius = 160.025
-[mesh]
-M = 1
-C0prime = 0.25
-[part]
-geometry = $PWD/tests/parts/bore.geo
-[material]
-E = 2.15e11
-nu = 0.29
-[left]
-bc = clamped
-[right]
-bc = roller
-[boundary.top]
-bc = traction
-P2 = -5.75e8
+{ part_scene $PWD/tests/parts/bore.geo; cat <<EOF2
 [boundary.bore]
 bc = pressure
 p = 2e8
 EOF2
+} > $TMP/parts/bore.scene
 $BIN optimize $TMP/parts/bore.scene -o $TMP/bore > /dev/null 2>&1
 check "optimize a part with a bore exits 0" test -s $TMP/bore/final/solution.vtu
 plotted "optimize a part with a bore" $TMP/bore
