@@ -241,12 +241,15 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set label 'Ω({/:Italic α}^0)' at a + %s*(b - a), %s*gamma "
           "center front font sprintf(',%%g', 1.4*fsz)\n", narrow ? "0.5" : low ? "0.3"
           : "0.275", low ? "0.5" : "0.6");
+  /* beside its own supports, not past a part's labels */
   side_name(p, SIDE_LEFT, name, sizeof name);
   fprintf(f, "  set label '%s' at a - cx(%.4g), %s right%s\n", name,
-          L->ext[0] + LGAP, pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
+          side_reach(&p->side[SIDE_LEFT], SIDE_LEFT) + LGAP,
+          pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
   side_name(p, SIDE_RIGHT, name, sizeof name);
   fprintf(f, "  set label '%s' at b + cx(%.4g), %s left%s\n", name,
-          L->ext[1] + LGAP, pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
+          side_reach(&p->side[SIDE_RIGHT], SIDE_RIGHT) + LGAP,
+          pl->part ? "0.5*cprime" : "0.6*gamma", NAMEFONT);
   side_name(p, SIDE_TOP, name, sizeof name);
   top_name_place(p, L, &x, &up);
   if (!pl->part)
@@ -259,7 +262,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1547 "paper/figures.nw"
+#line 1550 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -270,7 +273,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1562 "paper/figures.nw"
+#line 1565 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -280,7 +283,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1579 "paper/figures.nw"
+#line 1582 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L);
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -314,7 +317,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1628 "paper/figures.nw"
+#line 1631 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -332,7 +335,7 @@ static void body_part(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1657 "paper/figures.nw"
+#line 1660 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -363,7 +366,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1692 "paper/figures.nw"
+#line 1695 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -373,7 +376,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1710 "paper/figures.nw"
+#line 1713 "paper/figures.nw"
 /* a part's outline: its chains, those filled, its holes */
 static void body_part_blocks(FILE *f, const Plot *pl)
 {

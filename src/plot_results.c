@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1866 "paper/figures.nw"
+#line 1869 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
@@ -23,7 +23,7 @@ typedef struct {
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
   int tris;           /* a part: its triangles drawn (else only its outline) */
 } Results_page;
-#line 1887 "paper/figures.nw"
+#line 1890 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
@@ -32,7 +32,7 @@ static int free_vertically(const Problem *p)
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1899 "paper/figures.nw"
+#line 1902 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -48,7 +48,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1919 "paper/figures.nw"
+#line 1922 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -64,7 +64,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1939 "paper/figures.nw"
+#line 1942 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -74,7 +74,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1951 "paper/figures.nw"
+#line 1954 "paper/figures.nw"
 /* a part: the side of its mean own triangle on the page, cm */
 static double part_cell(const Mesh *m, const Results_page *L)
 {
@@ -108,7 +108,7 @@ static Results_page results_page(const Plot *pl)
   L.tris = pl->part && part_cell(pl->part, &L) >= 2 * MESHCELL;
   return L;
 }
-#line 1988 "paper/figures.nw"
+#line 1991 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -119,7 +119,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 2005 "paper/figures.nw"
+#line 2008 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -140,7 +140,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 2036 "paper/figures.nw"
+#line 2039 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris);
 static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int sc, int sr,
                        int tris)
@@ -156,7 +156,7 @@ static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int 
   for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
-#line 2068 "paper/figures.nw"
+#line 2071 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris)
 {
   const Mesh *m = s->part;
@@ -186,7 +186,7 @@ static void arrow_block(FILE *f, const Plot_state *s, const Results_page *L, int
   if (s->part) part_arrows(f, s, L);
   fprintf(f, "EOD\n");
 }
-#line 2101 "paper/figures.nw"
+#line 2104 "paper/figures.nw"
 static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
 {
   double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
@@ -207,7 +207,7 @@ static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
   }
   free(taken);
 }
-#line 2128 "paper/figures.nw"
+#line 2131 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static const char *results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -248,14 +248,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 2171 "paper/figures.nw"
+#line 2174 "paper/figures.nw"
 static const char *results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
 }
-#line 2183 "paper/figures.nw"
+#line 2186 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -286,7 +286,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 2221 "paper/figures.nw"
+#line 2224 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -342,7 +342,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 2283 "paper/figures.nw"
+#line 2286 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -373,7 +373,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 2321 "paper/figures.nw"
+#line 2324 "paper/figures.nw"
 #define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
@@ -388,7 +388,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW / w), 3));
 }
-#line 2341 "paper/figures.nw"
+#line 2344 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -404,7 +404,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 2362 "paper/figures.nw"
+#line 2365 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q)
 {
   char x[32], y[96];
@@ -413,7 +413,7 @@ static void graph_place(FILE *f, const Panel *q)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 2395 "paper/figures.nw"
+#line 2398 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -456,7 +456,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 2450 "paper/figures.nw"
+#line 2453 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -486,7 +486,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 2484 "paper/figures.nw"
+#line 2487 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
