@@ -88,7 +88,7 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
 #line 277 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 814 "paper/part.nw"
+#line 818 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
@@ -111,7 +111,7 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1058 "paper/part.nw"
+#line 1062 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
 #line 244 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
@@ -294,10 +294,11 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
     if (name) g->free(name);
   }
   if (dt) g->free(dt);
-  if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
+  if (ierr && !code)
+    return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 606 "paper/part.nw"
+#line 607 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -325,14 +326,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 636 "paper/part.nw"
+#line 637 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 652 "paper/part.nw"
+#line 653 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -357,7 +358,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 680 "paper/part.nw"
+#line 681 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -377,7 +378,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 704 "paper/part.nw"
+#line 705 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -396,7 +397,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 726 "paper/part.nw"
+#line 727 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -416,7 +417,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 750 "paper/part.nw"
+#line 751 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -453,14 +454,17 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 789 "paper/part.nw"
+#line 790 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
   int *dt = NULL, ierr = 0, code;
   size_t n = 0;
   g->get_entities(&dt, &n, 1, &ierr);
-  if (ierr) { if (dt) g->free(dt); return part_gmsh_error(b, STATUS_SYSTEM, "gmsh lists no curves"); }
+  if (ierr) {
+    if (dt) g->free(dt);
+    return part_gmsh_error(b, STATUS_SYSTEM, "gmsh lists no curves");
+  }
   code = part_collect_joining(b, dt, n / 2);
   if (dt) g->free(dt);
   if (code || (code = part_check_cover(b))) return code;
@@ -469,7 +473,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 825 "paper/part.nw"
+#line 829 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -500,7 +504,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 859 "paper/part.nw"
+#line 863 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -527,7 +531,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 891 "paper/part.nw"
+#line 895 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -575,7 +579,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 943 "paper/part.nw"
+#line 947 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -592,7 +596,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 971 "paper/part.nw"
+#line 975 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -636,7 +640,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1024 "paper/part.nw"
+#line 1028 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -658,7 +662,7 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1062 "paper/part.nw"
+#line 1066 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -678,7 +682,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1086 "paper/part.nw"
+#line 1090 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -695,12 +699,13 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (types[y] != 1 && !code)
         code = status_set(b->st, STATUS_INPUT, "%s: curve %d is meshed with "
           "elements of gmsh's type %d, not 2-node lines", b->path, tag, types[y]);
-      Part_edge *grown = code ? NULL : realloc(*lines, (*nlines + nntags[y] / 2 + 1) * sizeof **lines);
+      size_t want = (*nlines + nntags[y] / 2 + 1) * sizeof **lines;
+      Part_edge *grown = code ? NULL : realloc(*lines, want);
       if (!code && !grown) code = part_memory(b);
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1124 "paper/part.nw"
+#line 1129 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
@@ -709,7 +714,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
     (*lines)[(*nlines)++] = (Part_edge){ (int) (iu < iw ? iu : iw), (int) (iu < iw ? iw : iu),
       0, 0, part_group_of(b->curve_of, b->ncurve_of, tag) };
 }
-#line 1107 "paper/part.nw"
+#line 1112 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -723,7 +728,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1137 "paper/part.nw"
+#line 1142 "paper/part.nw"
 static int part_boundary_edges(Part_build *b, const Part_edge *e, const Part_edge *lines,
                                size_t nlines)
 {
@@ -833,7 +838,7 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   if (code) { part_mesh_free(pm); return NULL; }
   return pm;
 }
-#line 1182 "paper/part.nw"
+#line 1187 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;
