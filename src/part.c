@@ -1,4 +1,4 @@
-#line 145 "paper/part.nw"
+#line 149 "paper/part.nw"
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "part.h"
-#line 159 "paper/part.nw"
+#line 163 "paper/part.nw"
 typedef void Gmsh_free(void *p);
 typedef void Gmsh_initialize(int argc, char **argv, const int readConfigFiles, int *ierr);
 typedef void Gmsh_finalize(int *ierr);
@@ -85,17 +85,17 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
   {"gmshModelMeshGetNodes", offsetof(Part_gmsh, get_nodes)},
   {"gmshModelMeshGetElements", offsetof(Part_gmsh, get_elements)},
 };
-#line 277 "paper/part.nw"
+#line 281 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 818 "paper/part.nw"
+#line 822 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
   long *where;      /* maxtag+1: the tag's place in gmsh's list, -1 if none */
   double *coord;    /* gmsh's coordinates, 3 a node */
 } Part_nodes;
-#line 280 "paper/part.nw"
+#line 284 "paper/part.nw"
 typedef struct {
   const Part_gmsh *g;
   const Problem *p;
@@ -111,9 +111,15 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1062 "paper/part.nw"
+#line 1112 "paper/part.nw"
+typedef struct {
+  double x0, y0, c;
+  int nx, ny;
+  int *first, *list;     /* nx*ny + 1; the triangles, cell by cell */
+} Part_grid;
+#line 1268 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
-#line 244 "paper/part.nw"
+#line 248 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
 
 static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
@@ -137,7 +143,7 @@ static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
   loaded = 1;
   return &api;
 }
-#line 302 "paper/part.nw"
+#line 306 "paper/part.nw"
 static int part_gmsh_error(Part_build *b, Status_code code, const char *what)
 {
   char *err = NULL;
@@ -155,7 +161,7 @@ static int part_memory(Part_build *b)
 {
   return status_set(b->st, STATUS_MEMORY, "%s: out of memory for its mesh", b->path);
 }
-#line 330 "paper/part.nw"
+#line 334 "paper/part.nw"
 static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
 {
   free(nd->index); free(nd->where);
@@ -163,7 +169,7 @@ static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
   *nd = (Part_nodes){ 0, NULL, NULL, NULL };
 }
 
-#line 440 "paper/part.nw"
+#line 444 "paper/part.nw"
 static int part_count_errors(Part_build *b, char *last, size_t size)
 {
   char **log = NULL;
@@ -196,7 +202,7 @@ static int part_generate(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 482 "paper/part.nw"
+#line 486 "paper/part.nw"
 static int part_check_points(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -228,7 +234,7 @@ static int part_check_points(Part_build *b)
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot read its points");
   return code;
 }
-#line 526 "paper/part.nw"
+#line 530 "paper/part.nw"
 static int part_check_name(Part_build *b, const char *kind, int tag, const char *name)
 {
   size_t len = strlen(name);
@@ -246,7 +252,7 @@ static int part_check_name(Part_build *b, const char *kind, int tag, const char 
       "character other than A-Z, a-z, 0-9 and _ in its name", b->path, kind, name);
   return STATUS_OK;
 }
-#line 547 "paper/part.nw"
+#line 551 "paper/part.nw"
 static int part_add_members(Part_build *b, int dim, int tag, int group,
                             char (*names)[PROBLEM_NAME], Part_member **list, int *n)
 {
@@ -268,7 +274,7 @@ static int part_add_members(Part_build *b, int dim, int tag, int group,
   if (ierr) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list a physical group");
   return grown ? code : part_memory(b);
 }
-#line 574 "paper/part.nw"
+#line 578 "paper/part.nw"
 static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], int *count)
 {
   const Part_gmsh *g = b->g;
@@ -298,7 +304,7 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
     return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 607 "paper/part.nw"
+#line 611 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -326,14 +332,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 637 "paper/part.nw"
+#line 641 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 653 "paper/part.nw"
+#line 657 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -358,7 +364,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 681 "paper/part.nw"
+#line 685 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -378,7 +384,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 705 "paper/part.nw"
+#line 709 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -397,7 +403,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 727 "paper/part.nw"
+#line 731 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -417,7 +423,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 751 "paper/part.nw"
+#line 755 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -454,7 +460,7 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 790 "paper/part.nw"
+#line 794 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -473,7 +479,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 829 "paper/part.nw"
+#line 833 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -504,7 +510,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 863 "paper/part.nw"
+#line 867 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -531,7 +537,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 895 "paper/part.nw"
+#line 899 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -579,7 +585,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 947 "paper/part.nw"
+#line 951 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -596,7 +602,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 975 "paper/part.nw"
+#line 979 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -640,7 +646,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1028 "paper/part.nw"
+#line 1032 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -662,7 +668,159 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1066 "paper/part.nw"
+#line 1084 "paper/part.nw"
+/* the physical surface of triangle t, for a message: " (surface NAME)" */
+static const char *part_region_words(const Part_mesh *pm, int t, char *buf, size_t size)
+{
+  if (pm->region[t] < 0) snprintf(buf, size, " (in no physical surface)");
+  else snprintf(buf, size, " (physical surface \"%s\")", pm->surface_name[pm->region[t]]);
+  return buf;
+}
+
+/* 1 when node k lies inside or on triangle t, of which it is no corner */
+static int part_covers(const Part_mesh *pm, int t, int k)
+{
+  const int *v = pm->tri + 3 * t;
+  if (v[0] == k || v[1] == k || v[2] == k) return 0;
+  const double *x = pm->xy + 2 * k;
+  double area = 2 * part_area(pm, v);
+  for (int i = 0; i < 3; i++) {
+    const double *p = pm->xy + 2 * v[(i + 1) % 3], *q = pm->xy + 2 * v[(i + 2) % 3];
+    double lambda = ((q[0] - p[0]) * (x[1] - p[1]) - (x[0] - p[0]) * (q[1] - p[1])) / area;
+    if (lambda < -1e-9) return 0;
+  }
+  return 1;
+}
+#line 1120 "paper/part.nw"
+static void part_cells(const Part_grid *gr, const double lo[2], const double hi[2],
+                       int from[2], int to[2])
+{
+  double o[2] = { gr->x0, gr->y0 }, pad = 1e-6 * gr->c;
+  int n[2] = { gr->nx, gr->ny };
+  for (int d = 0; d < 2; d++) {
+    from[d] = (int) floor((lo[d] - pad - o[d]) / gr->c);
+    to[d] = (int) floor((hi[d] + pad - o[d]) / gr->c);
+    from[d] = from[d] < 0 ? 0 : from[d] >= n[d] ? n[d] - 1 : from[d];
+    to[d] = to[d] < 0 ? 0 : to[d] >= n[d] ? n[d] - 1 : to[d];
+  }
+}
+
+static void part_triangle_box(const Part_mesh *pm, int t, double lo[2], double hi[2])
+{
+  for (int d = 0; d < 2; d++) {
+    lo[d] = hi[d] = pm->xy[2 * pm->tri[3 * t] + d];
+    for (int i = 1; i < 3; i++) {
+      double z = pm->xy[2 * pm->tri[3 * t + i] + d];
+      lo[d] = fmin(lo[d], z), hi[d] = fmax(hi[d], z);
+    }
+  }
+}
+
+static int part_grid_fill(const Part_mesh *pm, Part_grid *gr, int count)
+{
+  for (int t = 0; t < pm->ntri; t++) {
+    double lo[2], hi[2];
+    int from[2], to[2];
+    part_triangle_box(pm, t, lo, hi);
+    part_cells(gr, lo, hi, from, to);
+    for (int j = from[1]; j <= to[1]; j++)
+      for (int i = from[0]; i <= to[0]; i++) {
+        size_t cell = (size_t) j * gr->nx + i;
+        if (count) gr->first[cell + 1]++;
+        else gr->list[gr->first[cell]++] = t;
+      }
+  }
+  if (count) {
+    size_t ncell = (size_t) gr->nx * gr->ny;
+    for (size_t k = 0; k < ncell; k++) gr->first[k + 1] += gr->first[k];
+    return gr->first[ncell];
+  }
+  for (size_t k = (size_t) gr->nx * gr->ny; k > 0; k--) gr->first[k] = gr->first[k - 1];
+  gr->first[0] = 0;
+  return 0;
+}
+
+static int part_grid_new(const Part_mesh *pm, Part_grid *gr)
+{
+  double lo[2] = { pm->xy[0], pm->xy[1] }, hi[2] = { lo[0], lo[1] }, area = 0;
+  for (int k = 0; k < pm->nnodes; k++)
+    for (int d = 0; d < 2; d++)
+      lo[d] = fmin(lo[d], pm->xy[2 * k + d]), hi[d] = fmax(hi[d], pm->xy[2 * k + d]);
+  for (int t = 0; t < pm->ntri; t++) area += part_area(pm, pm->tri + 3 * t);
+  gr->c = fmax(sqrt(area / pm->ntri), 1e-3 * fmax(hi[0] - lo[0], hi[1] - lo[1]));
+  gr->x0 = lo[0], gr->y0 = lo[1];
+  gr->nx = (int) ((hi[0] - lo[0]) / gr->c) + 1, gr->ny = (int) ((hi[1] - lo[1]) / gr->c) + 1;
+  gr->first = calloc((size_t) gr->nx * gr->ny + 1, sizeof *gr->first);
+  gr->list = NULL;
+  if (!gr->first) return 0;
+  int n = part_grid_fill(pm, gr, 1);
+  if (!(gr->list = malloc((size_t) n * sizeof *gr->list + 1))) return 0;
+  part_grid_fill(pm, gr, 0);
+  return 1;
+}
+#line 1190 "paper/part.nw"
+static int part_no_overlap(Part_build *b)
+{
+  const Part_mesh *pm = b->pm;
+  Part_grid gr;
+  int code = part_grid_new(pm, &gr) ? STATUS_OK : part_memory(b);
+  for (int k = 0; !code && k < pm->nnodes; k++) {
+    int from[2], to[2];
+    part_cells(&gr, pm->xy + 2 * k, pm->xy + 2 * k, from, to);
+    size_t cell = (size_t) from[1] * gr.nx + from[0];
+    for (int l = gr.first[cell]; !code && l < gr.first[cell + 1]; l++) {
+      int t = gr.list[l];
+      if (!part_covers(pm, t, k)) continue;
+      char x[STATUS_NUMBER], y[STATUS_NUMBER], words[PROBLEM_NAME + 32];
+      code = status_set(b->st, STATUS_INPUT, "%s: the node at (%s, %s) lies on a "
+        "triangle%s that it is no corner of: surfaces overlap, or touch along "
+        "a curve or at a point that they do not share (gmsh: Coherence, or "
+        "BooleanFragments with OpenCASCADE)", b->path, status_digits(pm->xy[2 * k], 6, x),
+        status_digits(pm->xy[2 * k + 1], 6, y), part_region_words(pm, t, words, sizeof words));
+    }
+  }
+  free(gr.first); free(gr.list);
+  return code;
+}
+#line 1218 "paper/part.nw"
+static int part_root(int *parent, int k)
+{
+  while (parent[k] != k) k = parent[k] = parent[parent[k]];
+  return k;
+}
+
+static int part_joined(Part_build *b)
+{
+  const Part_mesh *pm = b->pm;
+  int *parent = malloc(2 * (size_t) pm->nnodes * sizeof *parent + 1), code = STATUS_OK;
+  if (!parent) return part_memory(b);
+  int *rests = parent + pm->nnodes;
+  for (int k = 0; k < pm->nnodes; k++) parent[k] = k, rests[k] = 0;
+  for (int t = 0; t < pm->ntri; t++)
+    for (int i = 1; i < 3; i++) {
+      int r = part_root(parent, pm->tri[3 * t]), s = part_root(parent, pm->tri[3 * t + i]);
+      if (r != s) parent[r < s ? s : r] = r < s ? r : s;
+    }
+  for (int k = 0; k < pm->nnodes; k++) if (pm->column[k] >= 0) rests[part_root(parent, k)] = 1;
+  for (int t = 0; !code && t < pm->ntri; t++) {
+    if (rests[part_root(parent, pm->tri[3 * t])]) continue;
+    const double *x = pm->xy + 2 * pm->tri[3 * t];
+    char x1[STATUS_NUMBER], x2[STATUS_NUMBER], words[PROBLEM_NAME + 32];
+    code = status_set(b->st, STATUS_INPUT, "%s: the triangle at (%s, %s)%s shares "
+      "no node, through the others, with the joining segment: a surface apart, "
+      "which nothing joins to the strip", b->path, status_digits(x[0], 6, x1),
+      status_digits(x[1], 6, x2), part_region_words(pm, t, words, sizeof words));
+  }
+  free(parent);
+  return code;
+}
+
+static int part_one_body(Part_build *b)
+{
+  int code = part_no_overlap(b);
+  return code ? code : part_joined(b);
+}
+#line 1272 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -682,7 +840,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1090 "paper/part.nw"
+#line 1296 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -705,7 +863,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1129 "paper/part.nw"
+#line 1335 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
@@ -714,7 +872,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
     (*lines)[(*nlines)++] = (Part_edge){ (int) (iu < iw ? iu : iw), (int) (iu < iw ? iw : iu),
       0, 0, part_group_of(b->curve_of, b->ncurve_of, tag) };
 }
-#line 1112 "paper/part.nw"
+#line 1318 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -728,7 +886,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1142 "paper/part.nw"
+#line 1348 "paper/part.nw"
 static int part_boundary_edges(Part_build *b, const Part_edge *e, const Part_edge *lines,
                                size_t nlines)
 {
@@ -772,7 +930,7 @@ static int part_boundary(Part_build *b)
   return code;
 }
 
-#line 376 "paper/part.nw"
+#line 380 "paper/part.nw"
 static int part_steps(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -793,11 +951,11 @@ static int part_steps(Part_build *b)
   if (!(b->pm = calloc(1, sizeof *b->pm))) return part_memory(b);
   if ((code = part_copy_names(b)) || (code = part_read_mesh(b))
       || (code = part_snap_joining(b)) || (code = part_orient(b))
-      || (code = part_boundary(b)))
+      || (code = part_one_body(b)) || (code = part_boundary(b)))
     return code;
   return STATUS_OK;
 }
-#line 416 "paper/part.nw"
+#line 420 "paper/part.nw"
 static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
 {
   const char *home = getenv("HOME");
@@ -809,7 +967,7 @@ static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
   free(saved);
 }
 
-#line 340 "paper/part.nw"
+#line 344 "paper/part.nw"
 Part_mesh *part_mesh_new(const Problem *p, Status *st)
 {
   const char *path = p->part.geometry;
@@ -838,7 +996,7 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   if (code) { part_mesh_free(pm); return NULL; }
   return pm;
 }
-#line 1187 "paper/part.nw"
+#line 1393 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;

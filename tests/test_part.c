@@ -302,6 +302,9 @@ static void refusals(void)
   refused("bad-quads.geo", STATUS_INPUT, "elements of gmsh's type 3, not 3-node triangles");
   refused("bad-order.geo", STATUS_INPUT, "elements of gmsh's type 9, not 3-node triangles");
   refused("bad-mesh.geo", STATUS_INPUT, "gmsh cannot mesh it: Unable to recover the edge");
+  refused("bad-overlap.geo", STATUS_INPUT, "the node at (1.5, 0.4) lies on a triangle (physical surface \"body\") that it is no corner of: surfaces overlap");
+  refused("bad-seam.geo", STATUS_INPUT, "that it is no corner of: surfaces overlap, or touch along a curve or at a point that they do not share");
+  refused("bad-island.geo", STATUS_INPUT, "(physical surface \"island\") shares no node, through the others, with the joining segment");
 }
 
 /* make SAN=1: gmsh's parser leaks the lists it was building when a .geo
