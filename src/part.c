@@ -1,4 +1,4 @@
-#line 149 "paper/part.nw"
+#line 152 "paper/part.nw"
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "part.h"
-#line 163 "paper/part.nw"
+#line 166 "paper/part.nw"
 typedef void Gmsh_free(void *p);
 typedef void Gmsh_initialize(int argc, char **argv, const int readConfigFiles, int *ierr);
 typedef void Gmsh_finalize(int *ierr);
@@ -85,17 +85,17 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
   {"gmshModelMeshGetNodes", offsetof(Part_gmsh, get_nodes)},
   {"gmshModelMeshGetElements", offsetof(Part_gmsh, get_elements)},
 };
-#line 281 "paper/part.nw"
+#line 284 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 822 "paper/part.nw"
+#line 825 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
   long *where;      /* maxtag+1: the tag's place in gmsh's list, -1 if none */
   double *coord;    /* gmsh's coordinates, 3 a node */
 } Part_nodes;
-#line 284 "paper/part.nw"
+#line 287 "paper/part.nw"
 typedef struct {
   const Part_gmsh *g;
   const Problem *p;
@@ -111,15 +111,15 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1112 "paper/part.nw"
+#line 1115 "paper/part.nw"
 typedef struct {
   double x0, y0, c;
   int nx, ny;
   int *first, *list;     /* nx*ny + 1; the triangles, cell by cell */
 } Part_grid;
-#line 1268 "paper/part.nw"
+#line 1271 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
-#line 248 "paper/part.nw"
+#line 251 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
 
 static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
@@ -143,7 +143,7 @@ static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
   loaded = 1;
   return &api;
 }
-#line 306 "paper/part.nw"
+#line 309 "paper/part.nw"
 static int part_gmsh_error(Part_build *b, Status_code code, const char *what)
 {
   char *err = NULL;
@@ -161,7 +161,7 @@ static int part_memory(Part_build *b)
 {
   return status_set(b->st, STATUS_MEMORY, "%s: out of memory for its mesh", b->path);
 }
-#line 334 "paper/part.nw"
+#line 337 "paper/part.nw"
 static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
 {
   free(nd->index); free(nd->where);
@@ -169,7 +169,7 @@ static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
   *nd = (Part_nodes){ 0, NULL, NULL, NULL };
 }
 
-#line 444 "paper/part.nw"
+#line 447 "paper/part.nw"
 static int part_count_errors(Part_build *b, char *last, size_t size)
 {
   char **log = NULL;
@@ -202,7 +202,7 @@ static int part_generate(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 486 "paper/part.nw"
+#line 489 "paper/part.nw"
 static int part_check_points(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -234,7 +234,7 @@ static int part_check_points(Part_build *b)
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot read its points");
   return code;
 }
-#line 530 "paper/part.nw"
+#line 533 "paper/part.nw"
 static int part_check_name(Part_build *b, const char *kind, int tag, const char *name)
 {
   size_t len = strlen(name);
@@ -252,7 +252,7 @@ static int part_check_name(Part_build *b, const char *kind, int tag, const char 
       "character other than A-Z, a-z, 0-9 and _ in its name", b->path, kind, name);
   return STATUS_OK;
 }
-#line 551 "paper/part.nw"
+#line 554 "paper/part.nw"
 static int part_add_members(Part_build *b, int dim, int tag, int group,
                             char (*names)[PROBLEM_NAME], Part_member **list, int *n)
 {
@@ -274,7 +274,7 @@ static int part_add_members(Part_build *b, int dim, int tag, int group,
   if (ierr) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list a physical group");
   return grown ? code : part_memory(b);
 }
-#line 578 "paper/part.nw"
+#line 581 "paper/part.nw"
 static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], int *count)
 {
   const Part_gmsh *g = b->g;
@@ -304,7 +304,7 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
     return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 611 "paper/part.nw"
+#line 614 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -332,14 +332,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 641 "paper/part.nw"
+#line 644 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 657 "paper/part.nw"
+#line 660 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -364,7 +364,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 685 "paper/part.nw"
+#line 688 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -384,7 +384,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 709 "paper/part.nw"
+#line 712 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -403,7 +403,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 731 "paper/part.nw"
+#line 734 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -423,7 +423,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 755 "paper/part.nw"
+#line 758 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -460,7 +460,7 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 794 "paper/part.nw"
+#line 797 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -479,7 +479,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 833 "paper/part.nw"
+#line 836 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -510,7 +510,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 867 "paper/part.nw"
+#line 870 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -537,7 +537,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 899 "paper/part.nw"
+#line 902 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -585,7 +585,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 951 "paper/part.nw"
+#line 954 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -602,7 +602,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 979 "paper/part.nw"
+#line 982 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -646,7 +646,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1032 "paper/part.nw"
+#line 1035 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -668,7 +668,7 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1084 "paper/part.nw"
+#line 1087 "paper/part.nw"
 /* the physical surface of triangle t, for a message: " (surface NAME)" */
 static const char *part_region_words(const Part_mesh *pm, int t, char *buf, size_t size)
 {
@@ -691,7 +691,7 @@ static int part_covers(const Part_mesh *pm, int t, int k)
   }
   return 1;
 }
-#line 1120 "paper/part.nw"
+#line 1123 "paper/part.nw"
 static void part_cells(const Part_grid *gr, const double lo[2], const double hi[2],
                        int from[2], int to[2])
 {
@@ -758,7 +758,7 @@ static int part_grid_new(const Part_mesh *pm, Part_grid *gr)
   part_grid_fill(pm, gr, 0);
   return 1;
 }
-#line 1190 "paper/part.nw"
+#line 1193 "paper/part.nw"
 static int part_no_overlap(Part_build *b)
 {
   const Part_mesh *pm = b->pm;
@@ -782,7 +782,7 @@ static int part_no_overlap(Part_build *b)
   free(gr.first); free(gr.list);
   return code;
 }
-#line 1218 "paper/part.nw"
+#line 1221 "paper/part.nw"
 static int part_root(int *parent, int k)
 {
   while (parent[k] != k) k = parent[k] = parent[parent[k]];
@@ -820,7 +820,7 @@ static int part_one_body(Part_build *b)
   int code = part_no_overlap(b);
   return code ? code : part_joined(b);
 }
-#line 1272 "paper/part.nw"
+#line 1275 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -840,7 +840,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1296 "paper/part.nw"
+#line 1299 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -863,16 +863,21 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1335 "paper/part.nw"
+#line 1339 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
   long iw = w <= b->nodes.maxtag ? b->nodes.index[w] : -1;
+  int group = part_group_of(b->curve_of, b->ncurve_of, tag);
   if (iu >= 0 && iw >= 0)
     (*lines)[(*nlines)++] = (Part_edge){ (int) (iu < iw ? iu : iw), (int) (iu < iw ? iw : iu),
-      0, 0, part_group_of(b->curve_of, b->ncurve_of, tag) };
+      0, 0, group };
+  else if (group >= 0 && !code)
+    code = status_set(b->st, STATUS_INPUT, "%s: physical curve \"%s\" holds curve %d, "
+      "which bounds no surface: a condition there would act on nothing", b->path,
+      b->names[group], tag);
 }
-#line 1318 "paper/part.nw"
+#line 1321 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -886,29 +891,54 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1348 "paper/part.nw"
-static int part_boundary_edges(Part_build *b, const Part_edge *e, const Part_edge *lines,
+#line 1363 "paper/part.nw"
+static Part_edge *part_line_of(Part_edge *lines, size_t nlines, int lo, int hi)
+{
+  for (size_t a = 0, z = nlines; a < z;) {   /* binary search on (lo, hi) */
+    size_t mid = (a + z) / 2;
+    int c = lo != lines[mid].lo ? (lo > lines[mid].lo) - (lo < lines[mid].lo)
+                                : (hi > lines[mid].hi) - (hi < lines[mid].hi);
+    if (c == 0) return lines + mid;
+    if (c < 0) z = mid; else a = mid + 1;
+  }
+  return NULL;
+}
+
+/* the refusal of the physical curve of line l, whose edge e is not on the
+   boundary; what: its words, with the edge's two ends */
+static int part_inner_curve(Part_build *b, const Part_edge *e, const Part_edge *l,
+                            const char *what)
+{
+  const double *p = b->pm->xy + 2 * e->lo, *q = b->pm->xy + 2 * e->hi;
+  char x[4][STATUS_NUMBER], words[256];
+  snprintf(words, sizeof words, what, status_digits(p[0], 6, x[0]),
+           status_digits(p[1], 6, x[1]), status_digits(q[0], 6, x[2]),
+           status_digits(q[1], 6, x[3]));
+  return status_set(b->st, STATUS_INPUT, "%s: physical curve \"%s\" %s: a condition "
+    "acts on the boundary only", b->path, b->pm->curve_name[l->t], words);
+}
+
+static int part_boundary_edges(Part_build *b, const Part_edge *e, Part_edge *lines,
                                size_t nlines)
 {
   Part_mesh *pm = b->pm;
   size_t n3 = 3 * (size_t) pm->ntri;
   pm->nedge = 0;
   for (size_t k = 0; k < n3; k++) {
-    int twice = (k + 1 < n3 && e[k + 1].lo == e[k].lo && e[k + 1].hi == e[k].hi)
-             || (k > 0 && e[k - 1].lo == e[k].lo && e[k - 1].hi == e[k].hi);
+    int next = k + 1 < n3 && e[k + 1].lo == e[k].lo && e[k + 1].hi == e[k].hi;
+    int twice = next || (k > 0 && e[k - 1].lo == e[k].lo && e[k - 1].hi == e[k].hi);
+    Part_edge *l = part_line_of(lines, nlines, e[k].lo, e[k].hi);
+    if (next && l && l->t >= 0) return part_inner_curve(b, e + k, l, "runs inside the "
+      "part (its line from (%s, %s) to (%s, %s) has a triangle on each side)");
     if (twice || (pm->column[e[k].lo] >= 0 && pm->column[e[k].hi] >= 0)) continue;
-    Part_edge key = { e[k].lo, e[k].hi, 0, 0, -2 };
-    const Part_edge *l = NULL;
-    for (size_t lo = 0, hi = nlines; lo < hi && !l;) {   /* binary search on (lo, hi) */
-      size_t mid = (lo + hi) / 2;
-      int c = key.lo != lines[mid].lo ? (key.lo > lines[mid].lo) - (key.lo < lines[mid].lo)
-                                      : (key.hi > lines[mid].hi) - (key.hi < lines[mid].hi);
-      if (c == 0) l = lines + mid; else if (c < 0) hi = mid; else lo = mid + 1;
-    }
     pm->edge[2 * pm->nedge] = e[k].from;
     pm->edge[2 * pm->nedge + 1] = e[k].to;
     pm->curve[pm->nedge++] = l ? l->t : -1;
+    if (l) l->from = 1;
   }
+  for (size_t k = 0; k < nlines; k++)
+    if (lines[k].t >= 0 && !lines[k].from) return part_inner_curve(b, lines + k, lines + k,
+      "has a line from (%s, %s) to (%s, %s) that is no edge of the mesh");
   return STATUS_OK;
 }
 
@@ -930,7 +960,7 @@ static int part_boundary(Part_build *b)
   return code;
 }
 
-#line 380 "paper/part.nw"
+#line 383 "paper/part.nw"
 static int part_steps(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -955,7 +985,7 @@ static int part_steps(Part_build *b)
     return code;
   return STATUS_OK;
 }
-#line 420 "paper/part.nw"
+#line 423 "paper/part.nw"
 static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
 {
   const char *home = getenv("HOME");
@@ -967,7 +997,7 @@ static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
   free(saved);
 }
 
-#line 344 "paper/part.nw"
+#line 347 "paper/part.nw"
 Part_mesh *part_mesh_new(const Problem *p, Status *st)
 {
   const char *path = p->part.geometry;
@@ -996,7 +1026,7 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   if (code) { part_mesh_free(pm); return NULL; }
   return pm;
 }
-#line 1393 "paper/part.nw"
+#line 1433 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;

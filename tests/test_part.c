@@ -304,6 +304,8 @@ static void refusals(void)
   refused("bad-mesh.geo", STATUS_INPUT, "gmsh cannot mesh it: Unable to recover the edge");
   refused("bad-overlap.geo", STATUS_INPUT, "the node at (1.5, 0.4) lies on a triangle (physical surface \"body\") that it is no corner of: surfaces overlap");
   refused("bad-seam.geo", STATUS_INPUT, "that it is no corner of: surfaces overlap, or touch along a curve or at a point that they do not share");
+  refused("bad-inner.geo", STATUS_INPUT, "physical curve \"inner\" runs inside the part (its line from (1, 0.6) to (1.25, 0.6) has a triangle on each side)");
+  refused("bad-ghost.geo", STATUS_INPUT, "physical curve \"ghost\" holds curve 5, which bounds no surface");
   refused("bad-island.geo", STATUS_INPUT, "(physical surface \"island\") shares no node, through the others, with the joining segment");
 }
 

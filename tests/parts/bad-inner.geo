@@ -1,0 +1,18 @@
+// The band of rectangle.geo with a physical curve "inner" from (1, 0.6)
+// to (3, 0.6) embedded in its surface: it runs inside the part
+Point(1) = {0, 0.25, 0};
+Point(2) = {4, 0.25, 0};
+Point(3) = {4, 1, 0};
+Point(4) = {0, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Point(5) = {1, 0.6, 0};
+Point(6) = {3, 0.6, 0};
+Line(5) = {5, 6};
+Curve{5} In Surface{1};
+Physical Curve("inner") = {5};
+Physical Surface("body") = {1};
