@@ -1,4 +1,4 @@
-#line 698 "paper/main.nw"
+#line 741 "paper/main.nw"
 #include <errno.h>
 #include <pthread.h>
 #include <signal.h>
@@ -17,7 +17,7 @@ static struct sigaction before[2];   /* SIGINT's and SIGTERM's, while caught */
 static struct sigaction fallback;    /* the default action */
 static int caught[2];                /* whether each is caught now */
 
-#line 723 "paper/main.nw"
+#line 766 "paper/main.nw"
 static void on_signal(int sig)
 {
   int saved = errno;
@@ -34,7 +34,7 @@ static void on_signal(int sig)
   }
   errno = saved;
 }
-#line 744 "paper/main.nw"
+#line 787 "paper/main.nw"
 void interrupt_catch(int on, const char *message, void (*fn)(void *),
                      void *arg)
 {
@@ -61,5 +61,5 @@ void interrupt_catch(int on, const char *message, void (*fn)(void *),
   }
 }
 
-#line 719 "paper/main.nw"
+#line 762 "paper/main.nw"
 int interrupt_signal(void) { return noted; }

@@ -1,4 +1,4 @@
-#line 671 "paper/main.nw"
+#line 714 "paper/main.nw"
 #ifndef CONTACTOPT_INTERRUPT_H
 #define CONTACTOPT_INTERRUPT_H
 /* on: SIGINT and SIGTERM are caught, but one that was ignored before

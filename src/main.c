@@ -94,7 +94,32 @@ static void warn_unloaded(const Scene *s)
             "or curve with bc = traction or pressure, no body force): its "
             "state is u = 0\n", s->path);
 }
-#line 374 "paper/main.nw"
+#line 390 "paper/main.nw"
+#define LOCK_RATIO 20.0  /* lambda/mu in plane strain: P1 triangles lock */
+static void warn_material(const char *path, const char *key, const Problem_material *m)
+{
+  if (m->kind != MATERIAL_ISOTROPIC) return;
+  double ratio = 2 * m->nu / (1 - 2 * m->nu);
+  if (ratio >= LOCK_RATIO)
+    fprintf(stderr, "contactopt: warning: %s: %s.nu = %.6g in plane strain "
+            "(lambda/mu = %.3g): linear triangles lock as nu nears 1/2, and "
+            "the body comes out too stiff; compare the results under a "
+            "larger mesh.refine\n", path, key, m->nu, ratio);
+}
+
+/* plane strain: each isotropic material near incompressibility */
+static void warn_locking(const Scene *s)
+{
+  const Problem *p = &s->problem;
+  char key[PROBLEM_NAME + 16];
+  if (p->model != MODEL_PLANE_STRAIN) return;
+  warn_material(s->path, "material", &p->material);
+  for (int j = 0; j < p->part.nregion; j++) {
+    snprintf(key, sizeof key, "material.%s", p->part.region[j].name);
+    warn_material(s->path, key, &p->part.region[j].material);
+  }
+}
+#line 417 "paper/main.nw"
 typedef struct {
   const char *name, *usage, *suffix;  /* the command, its help, its folder */
   int (*run)(Run *r, Status *st);     /* the command itself */
@@ -125,13 +150,13 @@ static int run_command(const Args *a, const Command *c, cholmod_common *cm,
     r.md = model_new(&r.s.problem, &r.s.solver, cm, st);
     rc = r.md ? c->run(&r, st) : (int) st->code;
   }
-  if (!rc) warn_unloaded(&r.s);
+  if (!rc) warn_unloaded(&r.s), warn_locking(&r.s);
   if (rc) name_the_scene(st, r.s.path);
   model_free(r.md);
   scene_free(&r.s);
   return rc;
 }
-#line 434 "paper/main.nw"
+#line 477 "paper/main.nw"
 #define LARGE 0.1    /* of the body's size: small strains no longer */
 static void warn_large(const Run *r)
 {
@@ -143,7 +168,7 @@ static void warn_large(const Run *r)
             "exceeds %g of the body's size %.3g m: linear (small-strain) "
             "elasticity does not hold there (E in Pa?)\n", r->s.path, u, LARGE, size);
 }
-#line 454 "paper/main.nw"
+#line 497 "paper/main.nw"
 /* the staging folder of the command's files, signals caught while it is
    there: the first says what the run does about it, a second removes it */
 static int begin(Run *r, Output *o, Status *st)
@@ -178,7 +203,7 @@ static int finish(Run *r, Output *o, int rc, Status *st)
   if (rc || !r->a->matrix_market) return rc;
   return output_matrix_market(r->a->matrix_market, r->md, st);
 }
-#line 491 "paper/main.nw"
+#line 534 "paper/main.nw"
 static int command_solve(Run *r, Status *st)
 {
   Output o;
@@ -193,7 +218,7 @@ static int command_solve(Run *r, Status *st)
          model_report(md)->active, model_dofs(md)->nc, model_seconds(md), r->dir);
   return STATUS_OK;
 }
-#line 529 "paper/main.nw"
+#line 572 "paper/main.nw"
 #define GRADCHECK_LONG 60.0   /* seconds: a check to warn of */
 static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
 {
@@ -216,7 +241,7 @@ static int gradcheck_estimate(Run *r, const Grad_check *gc, Status *st)
   }
   return STATUS_OK;
 }
-#line 555 "paper/main.nw"
+#line 598 "paper/main.nw"
 typedef struct {
   double start, last;       /* the check's start, the last line's time */
   int done;                 /* nodes checked so far */
@@ -235,7 +260,7 @@ static void gradcheck_progress(int i, const Grad_check *gc, void *data)
          ceil((now - g->start) / g->done * (gc->ncheck - g->done)));
   fflush(stdout);
 }
-#line 583 "paper/main.nw"
+#line 626 "paper/main.nw"
 /* the method the scene did not name, and why it is the one */
 static void say_method(const Run *r)
 {
@@ -287,7 +312,7 @@ static int command_gradcheck(Run *r, Status *st)
   grad_check_free(gc);
   return rc;
 }
-#line 782 "paper/main.nw"
+#line 825 "paper/main.nw"
 static int monitor(const Opt_progress *p, const double *X, void *data)
 {
   const Output_history *h = data;
@@ -298,7 +323,7 @@ static int monitor(const Opt_progress *p, const double *X, void *data)
   output_history_add(data, p, X);
   return interrupt_signal() != 0;
 }
-#line 799 "paper/main.nw"
+#line 842 "paper/main.nw"
 #define START_TOL 1e-12     /* the violation of B that moves the start */
 static int optimize_start(Run *r, const Design_set *B, double *X,
                           double *moved, Status *st)
@@ -311,7 +336,7 @@ static int optimize_start(Run *r, const Design_set *B, double *X,
            r->s.path, v, *moved);
   return rc ? rc : model_solve_to_rounding(r->md, X, st);
 }
-#line 824 "paper/main.nw"
+#line 867 "paper/main.nw"
 /* the coarse levels' monitor: only Ctrl-C, which ends them */
 static int coarse_monitor(const Opt_progress *p, const double *X, void *data)
 {
@@ -341,7 +366,7 @@ static int optimize_coarse(Run *r, double *X, Opt_report *c, Status *st)
            N / 2, c->evaluations, c->evaluations == 1 ? "" : "s", c->seconds, N);
   return rc;
 }
-#line 857 "paper/main.nw"
+#line 900 "paper/main.nw"
 /* rep, the fine level's report, with the coarse levels' c added */
 static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
 {
@@ -351,7 +376,7 @@ static int optimize_report_coarse(Opt_report *rep, const Opt_report *c)
   rep->seconds += c->seconds;
   return STATUS_OK;
 }
-#line 877 "paper/main.nw"
+#line 920 "paper/main.nw"
 /* the value of the run's objective at the model's state */
 static double optimize_value(Run *r, Status *st)
 {
@@ -380,7 +405,7 @@ static int optimize_one_start(Run *r, const Design_set *B, int k, double *X,
            objective_unit(o->objective.kind), rk->stop_reason, rk->iterations);
   return rc;
 }
-#line 908 "paper/main.nw"
+#line 951 "paper/main.nw"
 /* X = the lowest optimum of the K starts (X the first on entry); sr
    their report (starts 1 and no cost when K = 1) */
 static int optimize_starts(Run *r, const Design_set *B, double *X,
@@ -400,17 +425,17 @@ static int optimize_starts(Run *r, const Design_set *B, double *X,
     if ((rc = optimize_one_start(r, B, k, Y, &rk, &v, st))) break;
     sr->starts_evaluations += rk.evaluations;
     
-#line 938 "paper/main.nw"
+#line 981 "paper/main.nw"
 if (!isnan(v) && (isnan(sr->starts_min) || v < sr->starts_min))
   sr->starts_min = v, sr->starts_best = k + 1, memcpy(X, Y, n * sizeof *X);
 if (!isnan(v) && (isnan(sr->starts_max) || v > sr->starts_max)) sr->starts_max = v;
-#line 927 "paper/main.nw"
+#line 970 "paper/main.nw"
     if (!strcmp(rk.stop_reason, "interrupted")) break;
   }
   sr->starts = K;
   sr->starts_seconds = resources_clock() - t0;
   
-#line 944 "paper/main.nw"
+#line 987 "paper/main.nw"
 if (!rc && sr->starts_best)
   printf("%s: %d starts: %s from %.12g to %.12g%s (spread %.2e relative); the "
          "run goes on from start %d\n", r->s.path, K,
@@ -420,11 +445,11 @@ if (!rc && sr->starts_best)
          sr->starts_best);
 else if (!rc)
   printf("%s: %d starts: none ended; the run goes on from the first\n", r->s.path, K);
-#line 932 "paper/main.nw"
+#line 975 "paper/main.nw"
   free(Y);
   return rc;
 }
-#line 957 "paper/main.nw"
+#line 1000 "paper/main.nw"
 static int optimize_report_starts(Opt_report *rep, const Opt_report *sr)
 {
   rep->starts = sr->starts, rep->starts_best = sr->starts_best;
@@ -434,7 +459,7 @@ static int optimize_report_starts(Opt_report *rep, const Opt_report *sr)
   rep->seconds += sr->starts_seconds;
   return STATUS_OK;
 }
-#line 977 "paper/main.nw"
+#line 1020 "paper/main.nw"
 static int command_optimize(Run *r, Status *st)
 {
   Design_set B = design_set(&r->s.problem);
@@ -492,7 +517,7 @@ static int command_optimize(Run *r, Status *st)
   design_multipliers_free(m);
   return rc;
 }
-#line 1044 "paper/main.nw"
+#line 1087 "paper/main.nw"
 static int command_plot(int argc, char **argv)
 {
   Status st = { STATUS_OK, "" };
@@ -511,7 +536,7 @@ static int command_plot(int argc, char **argv)
     printf("%s: %s.pdf, %s.png\n", a.dir, d.name[d.drawn[k]], d.name[d.drawn[k]]);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1074 "paper/main.nw"
+#line 1117 "paper/main.nw"
 static int command_plain(int argc, char **argv)
 {
   int latex = argc == 3 && !strcmp(argv[2], "--latex");
@@ -527,7 +552,7 @@ static int command_plain(int argc, char **argv)
   } else scene_keys_print(stdout, latex);
   return fflush(stdout) ? STATUS_SYSTEM : STATUS_OK;
 }
-#line 1102 "paper/main.nw"
+#line 1145 "paper/main.nw"
 static const Command commands[] = {
   { "solve", usage_solve, "", command_solve, 1, 0, 0 },
   { "gradcheck", usage_gradcheck, "-gradcheck", command_gradcheck, 0, 1, 0 },
