@@ -53,7 +53,7 @@ do for [fmt in "pdf png"] {
     set terminal pdfcairo enhanced color size Wcm/2.54, Hcm/2.54 \
         font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw
   } else {
-    set terminal pngcairo enhanced color size int(Wcm*dpcm), int(Hcm*dpcm) \
+    set terminal pngcairo enhanced color size int(Wcm*dpcm + 0.5), int(Hcm*dpcm) \
         font sprintf("DejaVu Sans,%.2f", fsz) linewidth klw background "white"
   }
   set output out.".".fmt

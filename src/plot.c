@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 293 "paper/figures.nw"
+#line 301 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -39,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 333 "paper/figures.nw"
+#line 341 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -59,7 +59,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 357 "paper/figures.nw"
+#line 365 "paper/figures.nw"
 static const char *const state_files[] = { "shape.dat", "contact.dat", "solution.vtu" };
 
 /* dir: a finished run of solve or optimize (*optimize says which) whose
@@ -93,7 +93,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 395 "paper/figures.nw"
+#line 403 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -107,7 +107,23 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 2523 "paper/figures.nw"
+#line 420 "paper/figures.nw"
+/* the least and greatest objective (column 2) of dir/history.dat; NaN
+   where it has none */
+static void history_range(const char *dir, double *lo, double *hi)
+{
+  char path[2200], line[1024];
+  double k, v;
+  FILE *f;
+  *lo = *hi = NAN;
+  snprintf(path, sizeof path, "%s/history.dat", dir);
+  if (!(f = fopen(path, "r"))) return;
+  while (fgets(line, sizeof line, f))
+    if (line[0] != '#' && sscanf(line, "%lf %lf", &k, &v) == 2 && isfinite(v))
+      *lo = isnan(*lo) ? v : fmin(*lo, v), *hi = isnan(*hi) ? v : fmax(*hi, v);
+  fclose(f);
+}
+#line 2662 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -139,7 +155,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 2558 "paper/figures.nw"
+#line 2697 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -152,7 +168,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 2579 "paper/figures.nw"
+#line 2718 "paper/figures.nw"
 enum { GNUPLOT_GRACE = 2000 };   /* ms that gnuplot has to end after an interrupt */
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
@@ -174,7 +190,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 2607 "paper/figures.nw"
+#line 2746 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -208,7 +224,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 2649 "paper/figures.nw"
+#line 2788 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -236,7 +252,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 2686 "paper/figures.nw"
+#line 2825 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -257,7 +273,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 2716 "paper/figures.nw"
+#line 2855 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -283,6 +299,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
   pl->iterations = (int) summary_value(a->dir, "iterations", 0);
   pl->start_value = a->start ? summary_value(a->start,
                    objective_name(pl->s.optimizer.objective.kind), NAN) : NAN;
+  history_range(a->dir, &pl->jlo, &pl->jhi);
   pl->top = pl->s.problem.gamma;
   pl->left = pl->s.problem.a, pl->right = pl->s.problem.b;
   if (pl->s.problem.part.geometry[0]) {
@@ -299,7 +316,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
       return rc;
   return STATUS_OK;
 }
-#line 2762 "paper/figures.nw"
+#line 2902 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };

@@ -6,7 +6,7 @@
 #include "scene.h"
 #include "objective.h"
 #include "mesh.h"
-#line 420 "paper/figures.nw"
+#line 447 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   int n;            /* all nodes: ncol*nrow, then a part's own */
@@ -21,7 +21,7 @@ typedef struct {
 int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
                     Status *st);
 void plot_state_free(Plot_state *s);
-#line 574 "paper/figures.nw"
+#line 601 "paper/figures.nw"
 typedef struct {
   int nchain;   /* chains of boundary edges */
   int *order;   /* nedge: the edges chain by chain, each one's end the next one's start */
@@ -38,7 +38,7 @@ double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double 
    0), or all (which == 0) */
 void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const double *xy,
                        const double *u, int which);
-#line 268 "paper/figures.nw"
+#line 274 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -53,16 +53,18 @@ typedef struct {
   double left, right;      /* its extent in x1: a and b, or the part's */
   Plot_chains chains;      /* a part: its boundary edges in chains */
   double start_value;      /* --start: the objective at alpha0 as given, or NaN */
+  double jlo, jhi;         /* the least and the greatest objective of
+                              history.dat (NaN: none) */
 } Plot;
 #line 171 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
-#line 1206 "paper/figures.nw"
+#line 1265 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
 #define LGAP 0.22     /* between a decoration and the side's name */
-#line 1369 "paper/figures.nw"
+#line 1438 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -100,6 +102,12 @@ void plot_place(FILE *f, const char *x, const char *w, const char *y, const char
 /* the width on the page of enhanced text s at pt points, in cm (an
    estimate: DejaVu Sans averages 0.6 of its size a character) */
 double plot_text_cm(const char *s, double pt);
+/* the characters of the widest label of tick marks from first to last
+   (first <= last) printed with the decimals of step ('%.*f') */
+int plot_tick_chars(double first, double step, double last);
+/* cm: how much more room left of an axis its tick labels of chars
+   characters need than four characters take, on a page Wcm wide */
+double plot_tick_excess(int chars, double Wcm);
 /* a body w cm wide on the page, under least cm: x1 exaggerated a round
    number of times, to about want cm (*ucm times it, *vex divided by it) */
 void plot_widen(double *ucm, double *vex, double w, double least, double want);

@@ -1,11 +1,12 @@
-#line 254 "paper/figures.nw"
+#line 260 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1869 "paper/figures.nw"
+#line 1938 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
+#define RMARGIN 0.5   /* cm: the page right of the right column */
 #define GRAPHH 5.0    /* the height of a graph's row */
 #define VHEAD 0.1029  /* the head of a displacement arrow (0.04 m in Fig. 5.2) */
 #define MESHCELL 0.15 /* cm: the least cell of the mesh drawn */
@@ -23,7 +24,7 @@ typedef struct {
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
   int tris;           /* a part: its triangles drawn (else only its outline) */
 } Results_page;
-#line 1890 "paper/figures.nw"
+#line 1960 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
@@ -32,7 +33,7 @@ static int free_vertically(const Problem *p)
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 1902 "paper/figures.nw"
+#line 1972 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -48,7 +49,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 1922 "paper/figures.nw"
+#line 1992 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -64,7 +65,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 1942 "paper/figures.nw"
+#line 2012 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -74,7 +75,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 1954 "paper/figures.nw"
+#line 2024 "paper/figures.nw"
 /* a part: the side of its mean own triangle on the page, cm */
 static double part_cell(const Mesh *m, const Results_page *L)
 {
@@ -108,7 +109,7 @@ static Results_page results_page(const Plot *pl)
   L.tris = pl->part && part_cell(pl->part, &L) >= 2 * MESHCELL;
   return L;
 }
-#line 1991 "paper/figures.nw"
+#line 2061 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -119,7 +120,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 2008 "paper/figures.nw"
+#line 2078 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -140,7 +141,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 2039 "paper/figures.nw"
+#line 2109 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris);
 static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int sc, int sr,
                        int tris)
@@ -156,7 +157,7 @@ static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int 
   for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
-#line 2071 "paper/figures.nw"
+#line 2141 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris)
 {
   const Mesh *m = s->part;
@@ -186,7 +187,7 @@ static void arrow_block(FILE *f, const Plot_state *s, const Results_page *L, int
   if (s->part) part_arrows(f, s, L);
   fprintf(f, "EOD\n");
 }
-#line 2104 "paper/figures.nw"
+#line 2174 "paper/figures.nw"
 static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
 {
   double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
@@ -208,9 +209,9 @@ static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
   }
   free(taken);
 }
-#line 2132 "paper/figures.nw"
+#line 2202 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
-static const char *results_width(const Plot *pl);
+static double results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
 {
   double W = pl->right - pl->left;
@@ -234,7 +235,7 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
           "graphgap = rowgap + 0.8          # between two rows of graphs, room for x labels\n"
           "Hcm = top + 3*bodyh + 2*rowgap + %d*(rowgap + graphh) + %d*0.8 + 2.0\n",
           plot_real(L->ucm, 6), plot_real(L->vex, 0), plot_real(COLW, 0), plot_real(GRAPHH, 0),
-          results_width(pl), L->graphs, L->graphs > 1 ? L->graphs - 1 : 0);
+          plot_real(results_width(pl), 6), L->graphs, L->graphs > 1 ? L->graphs - 1 : 0);
   fputs(plot_page_lines, f);
   fprintf(f, "colx(c) = left + c*(colw + colgap)         # the left edge of column c\n"
           "bodyx(c) = colx(c) + (colw - pw)/2          # and of its body panels\n"
@@ -249,14 +250,14 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 2175 "paper/figures.nw"
-static const char *results_width(const Plot *pl)
+#line 2245 "paper/figures.nw"
+static double results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
-  return plot_real(fmax(2.8 + 2 * COLW + 2.4 + 0.5, w), 6);
+  return fmax(2.8 + 2 * COLW + 2.4 + RMARGIN, w);
 }
-#line 2187 "paper/figures.nw"
+#line 2257 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
 static void results_scales(FILE *f, const Plot *pl)
 {
@@ -287,7 +288,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 2225 "paper/figures.nw"
+#line 2295 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -343,7 +344,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 2287 "paper/figures.nw"
+#line 2357 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -374,8 +375,9 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 2325 "paper/figures.nw"
-#define TITLEW (COLW + 2.0)   /* cm: the widest title over a body panel */
+#line 2400 "paper/figures.nw"
+/* cm: the widest title over a body panel of column c */
+#define TITLEW(c) (COLW + 2 * ((c) ? RMARGIN : 1.0))
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
 {
   char t[512], shown[600];
@@ -387,9 +389,9 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   snprintf(shown, sizeof shown, t, L->S[k]);
   w = plot_text_cm(shown, 12);
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
-          plot_real(fmin(1, TITLEW / w), 3));
+          plot_real(fmin(1, TITLEW(k) / w), 3));
 }
-#line 2345 "paper/figures.nw"
+#line 2421 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -405,16 +407,18 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 2366 "paper/figures.nw"
-static void graph_place(FILE *f, const Panel *q)
+#line 2442 "paper/figures.nw"
+static void graph_place(FILE *f, const Panel *q, double indent)
 {
-  char x[32], y[96];
-  snprintf(x, sizeof x, "colx(%d)", q->col);
+  char x[64], y[96], w[64];
+  snprintf(x, sizeof x, "colx(%d)%s%s", q->col, indent > 0 ? " + " : "",
+           indent > 0 ? plot_real(indent, 3) : "");
+  snprintf(w, sizeof w, "colw%s%s", indent > 0 ? " - " : "", indent > 0 ? plot_real(indent, 3) : "");
   if (q->row < 3) snprintf(y, sizeof y, "top + %d*(bodyh + rowgap)", q->row);
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
-  plot_place(f, x, "colw", y, q->row < 3 ? "bodyh" : "graphh");
+  plot_place(f, x, w, y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 2399 "paper/figures.nw"
+#line 2477 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -429,12 +433,14 @@ static void objective_words(const Objective *o, char *title, char *symbol, size_
     snprintf(title, size, "%s%s, {/:Italic q} = %s", name[o->kind], sym[o->kind], plot_num(o->q));
 }
 
+static int objective_format(FILE *f, const Plot *pl);
 static void objective_graph(FILE *f, const Plot *pl)
 {
   const Objective *o = &pl->s.optimizer.objective;
   const char *unit = objective_unit(o->kind);
   double step = plot_nice_up(fmax(1, pl->iterations / 6.0));
   char title[128], sym[64];
+  int formatted = objective_format(f, pl);
   objective_words(o, title, sym, sizeof title);
   fprintf(f, "  set title '(d) %s against iteration'\n"
           "  set xlabel 'iteration' offset 0, 0.4\n", title);
@@ -455,9 +461,52 @@ static void objective_graph(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       $start using 1:($2/10.0**ee) with points pt 6 ps 1.2 lc 'black' "
             "title '%s'", pl->projected ? "{/:Italic α}^0 (outside {/:Italic B})"
                                         : "{/:Italic α}^0 as given");
-  fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
+  fprintf(f, "\n  set offsets 0, 0, 0, 0\n%s", formatted ? "  set format y\n" : "");
 }
-#line 2454 "paper/figures.nw"
+#line 2538 "paper/figures.nw"
+/* gnuplot's step of tick marks for a range r (quantize_normal_tics, guide 20) */
+static double gnuplot_step(double r)
+{
+  double power = pow(10, floor(log10(r))), xnorm = r / power, posns = 20 / xnorm;
+  double t = posns > 40 ? 0.05 : posns > 20 ? 0.1 : posns > 10 ? 0.2 : posns > 4 ? 0.5
+           : posns > 2 ? 1 : posns > 0.5 ? 2 : ceil(xnorm);
+  return t * power;
+}
+
+/* the characters of (d)'s widest tick label, 0 without a history; *step:
+   gnuplot's step between them, in units of 10^ee */
+static int objective_ticks(const Plot *pl, double *step)
+{
+  double lo = pl->jlo, hi = pl->jhi, m = fmax(fabs(lo), fabs(hi));
+  if (isnan(lo)) return 0;
+  int e = m > 0 ? (int) floor(log10(m)) : 0;
+  if (!*objective_unit(pl->s.optimizer.objective.kind) && e >= -2 && e < 3) e = 0;
+  if (!isnan(pl->start_value)) lo = fmin(lo, pl->start_value), hi = fmax(hi, pl->start_value);
+  lo /= pow(10, e), hi /= pow(10, e);
+  if (hi == lo) lo -= lo ? 0.01 * fabs(lo) : 1, hi += hi ? 0.01 * fabs(hi) : 1;
+  double d = hi - lo;
+  lo -= 0.05 * d, hi += atof(KEYBAND) * d;
+  *step = gnuplot_step(hi - lo);
+  return plot_tick_chars(lo, *step, hi);
+}
+
+/* cm: how far (d) starts right of its column, for its widest tick label */
+static double objective_indent(const Plot *pl)
+{
+  double step;
+  return plot_tick_excess(objective_ticks(pl, &step), results_width(pl));
+}
+
+/* (d)'s tick labels with the decimals of their step, where they are
+   long; 1 if so */
+static int objective_format(FILE *f, const Plot *pl)
+{
+  double step;
+  if (objective_ticks(pl, &step) <= 4) return 0;
+  fprintf(f, "  set format y '%%.%df'\n", (int) fmax(0, ceil(-log10(step) - SLACK)));
+  return 1;
+}
+#line 2593 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -487,7 +536,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 2488 "paper/figures.nw"
+#line 2627 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
@@ -502,7 +551,7 @@ void plot_results_figure(FILE *f, const Plot *pl, const char *out)
     if (k > 0 && q[k - 1].kind <= FIELD)
       fprintf(f, "  unset title; set title font sprintf(',%%g', fsz)\n"
               "  set border 3; set ytics autofreq; set xtics autofreq\n");
-    graph_place(f, &q[k]);
+    graph_place(f, &q[k], q[k].kind == ENERGY ? objective_indent(pl) : 0);
     if (q[k].kind == ENERGY) objective_graph(f, pl);
     else contact_graph(f, pl, &L, &q[k]);
   }

@@ -174,6 +174,16 @@ figure() {
   [ "$(head -c 5 "$1.pdf")" = "%PDF-" ] && [ "$(wc -c < "$1.pdf")" -gt 10000 ] \
     && [ "$(wc -c < "$1.png")" -gt 20000 ] && [ "$(png_width "$1.png")" -eq 1600 ] \
     && png_drawn "$1.png"; }
+# off_page FIG: the words of FIG.pdf whose box passes an edge of the page
+# by more than 1 pt (a clipped label), as tests/figures.sh reads them
+off_page() { pdftotext -bbox $1.pdf - | awk -v W="$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')" \
+    -v H="$(pdfinfo $1.pdf | awk '/^Page size/ { print $5 }')" '
+  /<word / { split($0, a, "\""); t = $0; sub(/.*">/, "", t); sub(/<\/word>.*/, "", t)
+             if (a[2] < -1 || a[4] < -1 || a[6] > W + 1 || a[8] > H + 1) printf "%s ", t }'; }
+# on_page DIR: no word of DIR's two figures passes an edge (off_page);
+# a title or label wholly off the page is not reported at all (the check
+# of (d)'s axis name, below, looks for its words)
+on_page() { test -z "$(off_page $1/plot-body)$(off_page $1/plot-results)"; }
 # plotted LABEL DIR: contactopt plot DIR draws both figures of DIR, and
 # leaves no staging file
 plotted() {
@@ -182,6 +192,7 @@ plotted() {
     sh -c "[ $_rc -eq 0 ] && [ \$(grep -c '\\.pdf, .*\\.png' $TMP/out) -eq 2 ] && [ ! -s $TMP/err ]"
   check "$1: the body figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-body"
   check "$1: the results figure, a PDF and a PNG drawing 1600 pixels wide" figure "$2/plot-results"
+  check "$1: every word of both figures on its page ($(off_page $2/plot-body)$(off_page $2/plot-results))" on_page "$2"
   check "$1: no staging file is left" sh -c "! ls '$2'/*.partial-* 2>/dev/null"; }
 
 # ---- every shipped scene, and the user's ------------------------------------------
@@ -376,6 +387,19 @@ check "a tall body: 7 cm high, its panels ($(calc '1.05 * 0.5 * u' u="$1") cm, x
   holds 'abs(1.35 * 3 * u * v - 7) < 1e-3 && 1.05 * 0.5 * u < 10.8 && abs(v - 0.5) < 1e-12' u="$1" v="$2"
 check "a tall body: the titles of its body panels say x1 ×2" \
   grep -q "(a) triangulation of Ω({/:Italic α}^0), {/:Italic x}_1 ×2[,']" $TMP/script.gp
+# optimised, E changes by less than a millionth: the tick labels of (d)
+# have eleven characters (-4.9793830), printed with the decimals of their
+# step (gnuplot's own format repeats some), (d) starts right of its
+# column so that its axis name stays on the page, the long titles of the
+# right column fit, and so do the strip's tick labels (0.005) and the
+# name of its axis on the body figure
+$BIN optimize $scenes/tall.scene -o $TMP/tall-opt > /dev/null 2>&1
+plotted "optimize a tall body" $TMP/tall-opt
+script $TMP/tall-opt --results
+check "a tall body optimised: (d) indented for its tick labels, which have the decimals of their step" sh -c \
+  "grep -q '^  set lmargin at screen sx(colx(0) + [0-9.]*); ' $TMP/script.gp && grep -q \"^  set format y '%.[0-9]f'\" $TMP/script.gp"
+check "a tall body optimised: the name of (d)'s axis, E_h [10^e J/m], on the page" \
+  sh -c "pdftotext -bbox $TMP/tall-opt/plot-results.pdf - | grep -q '>J/m\]<'"
 $BIN plot $TMP/tall --title "$(printf 'a very long title %.0s' 1 2 3 4 5 6)" -o $TMP/long --gnuplot > $TMP/script.gp
 set -- $(awk '/^Wcm = / { print $3 }' $TMP/script.gp)
 check "a title of 108 characters: both pages ($1, $2 cm) wider than it and its end (at 0.254 cm a character)" \
@@ -534,12 +558,6 @@ check "a part: the pressure's arrows in the bore push into the body, the top's l
      if (r > 0.19 && r < 0.2 + 1e-6) { bore++; if (rh <= rt || rh > 0.2) bad++ }
      else if (y > 1 - 1e-9) { top++; if (!(hx == tx && hy < ty)) bad++ } else bad++ }
      END { exit !(bore >= 4 && top >= 8 && !bad) }'"
-# off_page FIG: the words of FIG.pdf whose box passes an edge of the page
-# by more than 1 pt (a clipped label), as tests/figures.sh reads them
-off_page() { pdftotext -bbox $1.pdf - | awk -v W="$(pdfinfo $1.pdf | awk '/^Page size/ { print $3 }')" \
-    -v H="$(pdfinfo $1.pdf | awk '/^Page size/ { print $5 }')" '
-  /<word / { split($0, a, "\""); t = $0; sub(/.*">/, "", t); sub(/<\/word>.*/, "", t)
-             if (a[2] < -1 || a[4] < -1 || a[6] > W + 1 || a[8] > H + 1) printf "%s ", t }'; }
 if command -v pdftotext > /dev/null && command -v pdfinfo > /dev/null; then
   for fig in body results; do
     check "a part: every word of the $fig figure on its page ($(off_page $TMP/bore/plot-$fig))" \
