@@ -85,17 +85,17 @@ static const struct { const char *name; size_t at; } part_gmsh_symbols[] = {
   {"gmshModelMeshGetNodes", offsetof(Part_gmsh, get_nodes)},
   {"gmshModelMeshGetElements", offsetof(Part_gmsh, get_elements)},
 };
-#line 284 "paper/part.nw"
+#line 290 "paper/part.nw"
 typedef struct { int tag, group; } Part_member;  /* entity tag -> group index */
 typedef struct { int tag, lo, hi; } Part_join;   /* a joining curve, x_lo..x_hi */
-#line 825 "paper/part.nw"
+#line 911 "paper/part.nw"
 typedef struct {
   size_t maxtag;
   long *index;      /* maxtag+1: a tag's node, -1 while unused */
   long *where;      /* maxtag+1: the tag's place in gmsh's list, -1 if none */
   double *coord;    /* gmsh's coordinates, 3 a node */
 } Part_nodes;
-#line 287 "paper/part.nw"
+#line 293 "paper/part.nw"
 typedef struct {
   const Part_gmsh *g;
   const Problem *p;
@@ -111,15 +111,15 @@ typedef struct {
   Part_nodes nodes;
   Part_mesh *pm;
 } Part_build;
-#line 1115 "paper/part.nw"
+#line 1201 "paper/part.nw"
 typedef struct {
   double x0, y0, c;
   int nx, ny;
   int *first, *list;     /* nx*ny + 1; the triangles, cell by cell */
 } Part_grid;
-#line 1271 "paper/part.nw"
+#line 1357 "paper/part.nw"
 typedef struct { int lo, hi, from, to, t; } Part_edge;
-#line 251 "paper/part.nw"
+#line 254 "paper/part.nw"
 #define PART_GMSH_LIBRARY "libgmsh.so.4.8"
 
 static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
@@ -134,16 +134,19 @@ static const Part_gmsh *part_gmsh_load(const char *path, Status *st)
     if (!f) { why = part_gmsh_symbols[k].name; gone = " missing"; dlclose(lib); lib = NULL; break; }
     memcpy((char *) &api + part_gmsh_symbols[k].at, &f, sizeof f);
   }
-  if (!lib) {
+  int memory = why && (strstr(why, "failed to map segment") || strstr(why, "allocate memory"));
+  if (!lib && memory)
+    status_set(st, STATUS_MEMORY, "%s: cannot load gmsh's library %s (%s): the memory "
+               "this process may use is too small for it", path, PART_GMSH_LIBRARY, why);
+  else if (!lib)
     status_set(st, STATUS_SYSTEM, "%s: cannot load gmsh's library %s (%s%s): "
       "install Debian's libgmsh-dev", path, PART_GMSH_LIBRARY,
       why ? why : "not found", gone);
-    return NULL;
-  }
+  if (!lib) return NULL;
   loaded = 1;
   return &api;
 }
-#line 309 "paper/part.nw"
+#line 315 "paper/part.nw"
 static int part_gmsh_error(Part_build *b, Status_code code, const char *what)
 {
   char *err = NULL;
@@ -161,7 +164,7 @@ static int part_memory(Part_build *b)
 {
   return status_set(b->st, STATUS_MEMORY, "%s: out of memory for its mesh", b->path);
 }
-#line 337 "paper/part.nw"
+#line 343 "paper/part.nw"
 static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
 {
   free(nd->index); free(nd->where);
@@ -169,7 +172,7 @@ static void part_nodes_free(const Part_gmsh *g, Part_nodes *nd)
   *nd = (Part_nodes){ 0, NULL, NULL, NULL };
 }
 
-#line 447 "paper/part.nw"
+#line 533 "paper/part.nw"
 static int part_count_errors(Part_build *b, char *last, size_t size)
 {
   char **log = NULL;
@@ -202,7 +205,7 @@ static int part_generate(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 489 "paper/part.nw"
+#line 575 "paper/part.nw"
 static int part_check_points(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -234,7 +237,7 @@ static int part_check_points(Part_build *b)
   if (ierr && !code) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot read its points");
   return code;
 }
-#line 533 "paper/part.nw"
+#line 619 "paper/part.nw"
 static int part_check_name(Part_build *b, const char *kind, int tag, const char *name)
 {
   size_t len = strlen(name);
@@ -252,7 +255,7 @@ static int part_check_name(Part_build *b, const char *kind, int tag, const char 
       "character other than A-Z, a-z, 0-9 and _ in its name", b->path, kind, name);
   return STATUS_OK;
 }
-#line 554 "paper/part.nw"
+#line 640 "paper/part.nw"
 static int part_add_members(Part_build *b, int dim, int tag, int group,
                             char (*names)[PROBLEM_NAME], Part_member **list, int *n)
 {
@@ -274,7 +277,7 @@ static int part_add_members(Part_build *b, int dim, int tag, int group,
   if (ierr) return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list a physical group");
   return grown ? code : part_memory(b);
 }
-#line 581 "paper/part.nw"
+#line 667 "paper/part.nw"
 static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], int *count)
 {
   const Part_gmsh *g = b->g;
@@ -304,7 +307,7 @@ static int part_read_dim(Part_build *b, int dim, char (*names)[PROBLEM_NAME], in
     return part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot list its physical groups");
   return code;
 }
-#line 614 "paper/part.nw"
+#line 700 "paper/part.nw"
 static int part_read_groups(Part_build *b)
 {
   int code, n;
@@ -332,14 +335,14 @@ static int part_copy_names(Part_build *b)
   memcpy(pm->surface_name, b->names + b->ncurve, b->nsurface * sizeof *pm->surface_name);
   return STATUS_OK;
 }
-#line 644 "paper/part.nw"
+#line 730 "paper/part.nw"
 static int part_group_of(const Part_member *list, int n, int tag)
 {
   for (int m = 0; m < n; m++)
     if (list[m].tag == tag) return list[m].group;
   return -1;
 }
-#line 660 "paper/part.nw"
+#line 746 "paper/part.nw"
 static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
 {
   const Part_gmsh *g = b->g;
@@ -364,7 +367,7 @@ static int part_on_joining_line(Part_build *b, int tag, double x[2], int *on)
   if (xyz) g->free(xyz);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh cannot evaluate a curve") : STATUS_OK;
 }
-#line 688 "paper/part.nw"
+#line 774 "paper/part.nw"
 static int part_grid_index(Part_build *b, int tag, double x, int *i)
 {
   const Problem *p = b->p;
@@ -384,7 +387,7 @@ static int part_grid_index(Part_build *b, int tag, double x, int *i)
       status_number(problem_node_x(p, *i), s[1]), p->N);
   return STATUS_OK;
 }
-#line 712 "paper/part.nw"
+#line 798 "paper/part.nw"
 static int part_check_joining_curve(Part_build *b, int tag)
 {
   const Part_gmsh *g = b->g;
@@ -403,7 +406,7 @@ static int part_check_joining_curve(Part_build *b, int tag)
       "strip is attached", b->path, b->names[group], tag);
   return STATUS_OK;
 }
-#line 734 "paper/part.nw"
+#line 820 "paper/part.nw"
 static int part_collect_joining(Part_build *b, const int *dt, size_t n)
 {
   const Problem *p = b->p;
@@ -423,7 +426,7 @@ static int part_collect_joining(Part_build *b, const int *dt, size_t n)
   }
   return code;
 }
-#line 758 "paper/part.nw"
+#line 844 "paper/part.nw"
 static int part_join_cmp(const void *x, const void *y)
 {
   const Part_join *s = x, *t = y;
@@ -460,7 +463,7 @@ static int part_check_cover(Part_build *b)
   }
   return reach < p->N ? part_missing(b, reach, p->N) : STATUS_OK;
 }
-#line 797 "paper/part.nw"
+#line 883 "paper/part.nw"
 static int part_find_joining(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -479,7 +482,7 @@ static int part_find_joining(Part_build *b)
                              "Progression", 1.0, &ierr);
   return ierr ? part_gmsh_error(b, STATUS_SYSTEM, "gmsh refuses a transfinite curve") : STATUS_OK;
 }
-#line 836 "paper/part.nw"
+#line 922 "paper/part.nw"
 static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t *n)
 {
   const Part_gmsh *g = b->g;
@@ -510,7 +513,7 @@ static int part_surface_triangles(Part_build *b, int tag, size_t **nodes, size_t
   if (code && *nodes) { g->free(*nodes); *nodes = NULL; }
   return code;
 }
-#line 870 "paper/part.nw"
+#line 956 "paper/part.nw"
 static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
 {
   Part_mesh *pm = b->pm;
@@ -537,7 +540,7 @@ static int part_append_triangles(Part_build *b, int tag, Part_nodes *nd)
   pm->ntri += (int) n;
   return code;
 }
-#line 902 "paper/part.nw"
+#line 988 "paper/part.nw"
 static int part_read_nodes(Part_build *b, Part_nodes *nd)
 {
   const Part_gmsh *g = b->g;
@@ -585,7 +588,7 @@ static int part_number_nodes(Part_build *b, Part_nodes *nd)
   for (int v = 0; v < 3 * pm->ntri; v++) pm->tri[v] = (int) nd->index[pm->tri[v]];
   return STATUS_OK;
 }
-#line 954 "paper/part.nw"
+#line 1040 "paper/part.nw"
 static int part_read_mesh(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -602,7 +605,7 @@ static int part_read_mesh(Part_build *b)
   return code ? code : part_number_nodes(b, nd);
 }
 
-#line 982 "paper/part.nw"
+#line 1068 "paper/part.nw"
 static int part_snap_curve(Part_build *b, const Part_join *j, int *seen)
 {
   const Part_gmsh *g = b->g;
@@ -646,7 +649,7 @@ static int part_snap_joining(Part_build *b)
   free(seen);
   return code;
 }
-#line 1035 "paper/part.nw"
+#line 1121 "paper/part.nw"
 static double part_area(const Part_mesh *pm, const int *v)
 {
   const double *p = pm->xy + 2 * v[0], *q = pm->xy + 2 * v[1], *r = pm->xy + 2 * v[2];
@@ -668,7 +671,7 @@ static int part_orient(Part_build *b)
   }
   return STATUS_OK;
 }
-#line 1087 "paper/part.nw"
+#line 1173 "paper/part.nw"
 /* the physical surface of triangle t, for a message: " (surface NAME)" */
 static const char *part_region_words(const Part_mesh *pm, int t, char *buf, size_t size)
 {
@@ -691,7 +694,7 @@ static int part_covers(const Part_mesh *pm, int t, int k)
   }
   return 1;
 }
-#line 1123 "paper/part.nw"
+#line 1209 "paper/part.nw"
 static void part_cells(const Part_grid *gr, const double lo[2], const double hi[2],
                        int from[2], int to[2])
 {
@@ -758,7 +761,7 @@ static int part_grid_new(const Part_mesh *pm, Part_grid *gr)
   part_grid_fill(pm, gr, 0);
   return 1;
 }
-#line 1193 "paper/part.nw"
+#line 1279 "paper/part.nw"
 static int part_no_overlap(Part_build *b)
 {
   const Part_mesh *pm = b->pm;
@@ -782,7 +785,7 @@ static int part_no_overlap(Part_build *b)
   free(gr.first); free(gr.list);
   return code;
 }
-#line 1221 "paper/part.nw"
+#line 1307 "paper/part.nw"
 static int part_root(int *parent, int k)
 {
   while (parent[k] != k) k = parent[k] = parent[parent[k]];
@@ -820,7 +823,7 @@ static int part_one_body(Part_build *b)
   int code = part_no_overlap(b);
   return code ? code : part_joined(b);
 }
-#line 1275 "paper/part.nw"
+#line 1361 "paper/part.nw"
 static int part_edge_cmp(const void *x, const void *y)
 {
   const Part_edge *s = x, *u = y;
@@ -840,7 +843,7 @@ static Part_edge *part_all_edges(const Part_mesh *pm)
   if (e) qsort(e, 3 * (size_t) pm->ntri, sizeof *e, part_edge_cmp);
   return e;
 }
-#line 1299 "paper/part.nw"
+#line 1385 "paper/part.nw"
 static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
 {
   const Part_gmsh *g = b->g;
@@ -863,7 +866,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       if (grown) *lines = grown;
       for (size_t l = 0; grown && l < nntags[y] / 2; l++)
         
-#line 1339 "paper/part.nw"
+#line 1425 "paper/part.nw"
 {
   size_t u = ntags[y][2 * l], w = ntags[y][2 * l + 1];
   long iu = u <= b->nodes.maxtag ? b->nodes.index[u] : -1;
@@ -877,7 +880,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
       "which bounds no surface: a condition there would act on nothing", b->path,
       b->names[group], tag);
 }
-#line 1321 "paper/part.nw"
+#line 1407 "paper/part.nw"
       g->free(etags[y]); g->free(ntags[y]);
     }
     if (types) g->free(types);
@@ -891,7 +894,7 @@ static int part_curve_lines(Part_build *b, Part_edge **lines, size_t *nlines)
   if (!code) qsort(*lines, *nlines, sizeof **lines, part_edge_cmp);
   return code;
 }
-#line 1363 "paper/part.nw"
+#line 1449 "paper/part.nw"
 static Part_edge *part_line_of(Part_edge *lines, size_t nlines, int lo, int hi)
 {
   for (size_t a = 0, z = nlines; a < z;) {   /* binary search on (lo, hi) */
@@ -960,7 +963,7 @@ static int part_boundary(Part_build *b)
   return code;
 }
 
-#line 383 "paper/part.nw"
+#line 395 "paper/part.nw"
 static int part_steps(Part_build *b)
 {
   const Part_gmsh *g = b->g;
@@ -985,7 +988,7 @@ static int part_steps(Part_build *b)
     return code;
   return STATUS_OK;
 }
-#line 423 "paper/part.nw"
+#line 509 "paper/part.nw"
 static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
 {
   const char *home = getenv("HOME");
@@ -997,10 +1000,74 @@ static void part_gmsh_initialize(const Part_gmsh *g, int *ierr)
   free(saved);
 }
 
-#line 347 "paper/part.nw"
+#line 434 "paper/part.nw"
+static struct {
+  Problem key;             /* the problem that made it: the fields read */
+  Part_mesh *pm;           /* NULL: none yet */
+} part_memo;
+
+static int part_memo_same(const Problem *p, const Problem *q)
+{
+  return !strcmp(p->part.geometry, q->part.geometry) && p->a == q->a && p->b == q->b
+         && p->N == q->N && p->C0prime == q->C0prime && p->part.refine == q->part.refine;
+}
+
+static void *part_dup(const void *x, size_t bytes, int *ok)
+{
+  void *y = malloc(bytes + 1);
+  if (y) memcpy(y, x, bytes);
+  else *ok = 0;
+  return y;
+}
+
+/* a copy of pm; NULL when memory runs out */
+static Part_mesh *part_mesh_copy(const Part_mesh *pm)
+{
+  Part_mesh *c = malloc(sizeof *c);
+  int ok = c != NULL;
+  if (!c) return NULL;
+  *c = *pm;
+  size_t n = pm->nnodes, t = pm->ntri, e = pm->nedge;
+  c->xy = part_dup(pm->xy, 2 * n * sizeof *pm->xy, &ok);
+  c->column = part_dup(pm->column, n * sizeof *pm->column, &ok);
+  c->tri = part_dup(pm->tri, 3 * t * sizeof *pm->tri, &ok);
+  c->region = part_dup(pm->region, t * sizeof *pm->region, &ok);
+  c->edge = part_dup(pm->edge, 2 * e * sizeof *pm->edge, &ok);
+  c->curve = part_dup(pm->curve, e * sizeof *pm->curve, &ok);
+  c->curve_name = part_dup(pm->curve_name, (pm->ncurve + 1) * sizeof *pm->curve_name, &ok);
+  c->surface_name = part_dup(pm->surface_name, (pm->nsurface + 1) * sizeof *pm->surface_name,
+                             &ok);
+  if (!ok) { part_mesh_free(c); return NULL; }
+  return c;
+}
+
+/* a copy of the last mesh if p made it; NULL if not, and NULL with st
+   set and *failed = 1 when the copy fails */
+static Part_mesh *part_memo_get(const Problem *p, Status *st, int *failed)
+{
+  if (!part_memo.pm || !part_memo_same(p, &part_memo.key)) return NULL;
+  Part_mesh *c = part_mesh_copy(part_memo.pm);
+  if (!c) *failed = 1, status_set(st, STATUS_MEMORY, "%s: out of memory for its mesh",
+                                  p->part.geometry);
+  return c;
+}
+
+/* keep a copy of pm, made by p (none if memory runs out: the next call
+   meshes again) */
+static void part_memo_put(const Problem *p, const Part_mesh *pm)
+{
+  part_mesh_free(part_memo.pm);
+  part_memo.pm = part_mesh_copy(pm);
+  part_memo.key = *p;
+}
+
+#line 355 "paper/part.nw"
 Part_mesh *part_mesh_new(const Problem *p, Status *st)
 {
   const char *path = p->part.geometry;
+  int failed = 0;
+  Part_mesh *copy = part_memo_get(p, st, &failed);
+  if (copy || failed) return copy;
   const Part_gmsh *g = part_gmsh_load(path, st);
   if (!g) return NULL;
   Part_build *b = calloc(1, sizeof *b);
@@ -1024,9 +1091,10 @@ Part_mesh *part_mesh_new(const Problem *p, Status *st)
   Part_mesh *pm = b->pm;
   free(b->curve_of); free(b->surface_of); free(b->join); free(b);
   if (code) { part_mesh_free(pm); return NULL; }
+  part_memo_put(p, pm);
   return pm;
 }
-#line 1433 "paper/part.nw"
+#line 1519 "paper/part.nw"
 void part_mesh_free(Part_mesh *pm)
 {
   if (!pm) return;

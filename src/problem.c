@@ -1,10 +1,10 @@
-#line 276 "paper/problem.nw"
+#line 278 "paper/problem.nw"
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 #include "problem.h"
 
-#line 284 "paper/problem.nw"
+#line 286 "paper/problem.nw"
 const char *const problem_model_names[] = {"plane_stress", "plane_strain",
                                            NULL};
 const char *const problem_bc_names[] = {"free", "clamped", "roller",
@@ -26,13 +26,13 @@ const char *problem_contact_name(Problem_contact_law law)
 {
   return (unsigned)law <= CONTACT_COULOMB ? problem_contact_names[law] : "?";
 }
-#line 310 "paper/problem.nw"
+#line 312 "paper/problem.nw"
 double problem_node_x(const Problem *p, int i)
 {
   double t = (double)i / p->N;
   return (1 - t) * p->a + t * p->b;
 }
-#line 319 "paper/problem.nw"
+#line 321 "paper/problem.nw"
 void problem_supports(const Problem *p, char *buf, size_t size)
 {
   int n = snprintf(buf, size, "left.bc = %s, right.bc = %s",

@@ -55,10 +55,12 @@ typedef struct {
   double load[2];          /* its area and the resultant of its curves'
                               loads (N/m), for the check of a body that
                               friction holds sideways */
+  int nodes;               /* and its nodes, those of the joining segment
+                              not counted: for the memory estimate */
   Problem_curve curve[PROBLEM_NAMED];
   Problem_region region[PROBLEM_NAMED];
 } Problem_part;
-#line 199 "paper/problem.nw"
+#line 201 "paper/problem.nw"
 typedef struct {
   /* Omega(alpha) = {a < x1 < b, alpha(x1) < x2 < gamma} */
   double a, b, gamma;
@@ -89,7 +91,7 @@ typedef struct {
                           point after the first solve, >= 1 */
 } Problem;
 
-#line 248 "paper/problem.nw"
+#line 250 "paper/problem.nw"
 extern const char *const problem_model_names[]; /* plane_stress, ... */
 extern const char *const problem_bc_names[];    /* free, clamped, ... */
 extern const char *const problem_contact_names[]; /* frictionless, ... */

@@ -1,8 +1,8 @@
-#line 3154 "paper/scene.nw"
+#line 3156 "paper/scene.nw"
 #include <stdlib.h>
 #include <string.h>
 #include "scene_private.h"
-#line 3163 "paper/scene.nw"
+#line 3165 "paper/scene.nw"
 int scene_load(Scene *s, const char *path, int noverride,
                char *const *override, Status *st)
 {
@@ -22,7 +22,7 @@ int scene_load(Scene *s, const char *path, int noverride,
   if (rc) scene_free(s);
   return rc;
 }
-#line 3186 "paper/scene.nw"
+#line 3188 "paper/scene.nw"
 void scene_free(Scene *s)
 {
   if (!s) return;

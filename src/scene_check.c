@@ -451,7 +451,7 @@ static int read_named(Scene_loader *L, Scene *s)
   part->nregion = n;
   return 0;
 }
-#line 2896 "paper/scene.nw"
+#line 2897 "paper/scene.nw"
 /* a part: mesh it once; its rollers' components, area and curves' load */
 static int check_part(Scene_loader *L, Scene *s)
 {
@@ -470,10 +470,11 @@ static int check_part(Scene_loader *L, Scene *s)
   p->part.area = 0;
   for (int t = 2 * m->N * m->M; t < m->ntri; t++) p->part.area += mesh_area(m, t);
   fem_curve_resultant(m, p, p->part.load);
+  p->part.nodes = m->nnodes - (m->N + 1) * (m->M + 1);
   mesh_free(m);
   return 0;
 }
-#line 2934 "paper/scene.nw"
+#line 2936 "paper/scene.nw"
 /* [body_force] F, [contact] model; then what holds the body sideways */
 static int read_loads(Scene_loader *L, Scene *s)
 {
@@ -488,7 +489,7 @@ static int read_loads(Scene_loader *L, Scene *s)
   if ((rc = read_contact(L, s))) return rc;
   return check_held(L, s);
 }
-#line 2952 "paper/scene.nw"
+#line 2954 "paper/scene.nw"
 /* [contact] model, and g or friction as the law needs */
 static int read_contact(Scene_loader *L, Scene *s)
 {
@@ -512,7 +513,7 @@ static int read_contact(Scene_loader *L, Scene *s)
   if (p->max_fixed_point < 1) return scene_blame(L, "must be >= 1");
   return 0;
 }
-#line 2984 "paper/scene.nw"
+#line 2986 "paper/scene.nw"
 /* [solver]: the method, 0 < tol < 1, max_iter >= 1, 0 < omega < 2 */
 static int read_solver(Scene_loader *L, Scene *s)
 {
@@ -524,7 +525,7 @@ static int read_solver(Scene_loader *L, Scene *s)
                        "bounds a force, and psor bounds unknowns; use pdas or cgssor",
                        problem_contact_name(s->problem.contact));
   
-#line 3012 "paper/scene.nw"
+#line 3014 "paper/scene.nw"
 if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     && !(friction_side_holds(&s->problem, 0) && friction_side_holds(&s->problem, 1))) {
   char sides[256];
@@ -535,7 +536,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
                      "definite; use pdas", problem_contact_name(s->problem.contact),
                      sides);
 }
-#line 2995 "paper/scene.nw"
+#line 2997 "paper/scene.nw"
   if ((rc = scene_get(L, s, "solver", "tol"))) return rc;
   if (!(o->tol > 0 && o->tol < 1))
     return scene_blame(L, "must lie in (0, 1): it is a relative residual");
@@ -546,7 +547,7 @@ if (o->method == QP_CGSSOR && s->problem.contact != CONTACT_FRICTIONLESS
     return scene_blame(L, "must lie in (0, 2), where SOR converges");
   return 0;
 }
-#line 3054 "paper/scene.nw"
+#line 3056 "paper/scene.nw"
 #define OTHER_OBJECTIVE_MAX_ITER 2000
 /* the method of a scene that names none: newton where it applies
    (opt_refusal) */
@@ -593,7 +594,7 @@ static int read_optimizer(Scene_loader *L, Scene *s)
     return scene_blame(L, "must lie in [1, 100]: 1 runs from the scene's start only");
   return 0;
 }
-#line 3107 "paper/scene.nw"
+#line 3109 "paper/scene.nw"
 /* [objective]: the kind; pressure_peak: 1 <= q <= 1000 */
 static int read_objective(Scene_loader *L, Scene *s)
 {
@@ -610,7 +611,7 @@ static int read_objective(Scene_loader *L, Scene *s)
                        "pressure, 1 the mean itself");
   return 0;
 }
-#line 3136 "paper/scene.nw"
+#line 3138 "paper/scene.nw"
 /* the scene = the table, checked */
 int scene_convert(Scene_loader *L, Scene *s)
 {

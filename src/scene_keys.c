@@ -360,7 +360,7 @@ int scene_key_means(const Scene_key *k, const char *w)
     if ((p == k->when || p[-1] == ' ') && (p[n] == ' ' || !p[n])) return 1;
   return 0;
 }
-#line 3203 "paper/scene.nw"
+#line 3205 "paper/scene.nw"
 /* buf = the default of k as printed: its own, "required", or one for each
    word of its selector, "V (w, w), V (w)", or "V" if the same for all */
 static const char *default_text(const Scene_key *k, char *buf, size_t size)
@@ -389,7 +389,7 @@ static const char *default_text(const Scene_key *k, char *buf, size_t size)
   if (distinct == 1) *strchr(buf, ' ') = '\0';  /* one value for all */
   return buf;
 }
-#line 3237 "paper/scene.nw"
+#line 3239 "paper/scene.nw"
 /* buf = the values k accepts, as printed */
 static const char *accepted_text(const Scene_key *k, char *buf, size_t size)
 {
@@ -414,7 +414,7 @@ static const char *meaning_text(const Scene_key *k, char *buf, size_t size)
   cat(buf, size, ")");
   return buf;
 }
-#line 3266 "paper/scene.nw"
+#line 3268 "paper/scene.nw"
 /* write s to f as LaTeX text */
 static void latex(FILE *f, const char *s)
 {
@@ -427,7 +427,7 @@ static void latex(FILE *f, const char *s)
     else if (strchr("_%&#${}", *s)) fprintf(f, "\\%c", *s);
     else fputc(*s, f);
 }
-#line 3284 "paper/scene.nw"
+#line 3286 "paper/scene.nw"
 void scene_keys_print(FILE *f, int latex_table)
 {
   char name[40], d[128], a[128], m[256];
@@ -451,14 +451,14 @@ void scene_keys_print(FILE *f, int latex_table)
       continue;
     }
     
-#line 3313 "paper/scene.nw"
+#line 3315 "paper/scene.nw"
 fputs("\\texttt{", f), latex(f, name), fputs("} & ", f);
 latex(f, scene_keys[i].unit), fputs(" & \\raggedright ", f);
 latex(f, default_text(&scene_keys[i], d, sizeof d));
 fputs(" & \\raggedright ", f), latex(f, accepted_text(&scene_keys[i], a, sizeof a));
 fputs(" & \\raggedright ", f), latex(f, meaning_text(&scene_keys[i], m, sizeof m));
 fputs("\\tabularnewline\n", f);
-#line 3307 "paper/scene.nw"
+#line 3309 "paper/scene.nw"
   }
   if (latex_table) fputs("\\end{longtable}}\n", f);
 }

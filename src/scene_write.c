@@ -1,11 +1,11 @@
-#line 3328 "paper/scene.nw"
+#line 3330 "paper/scene.nw"
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 #include <ini.h>
 #include "scene_private.h"
 
-#line 3350 "paper/scene.nw"
+#line 3352 "paper/scene.nw"
 /* buf = the value of k in s, its slot off bytes further, as a scene
    writes it */
 static const char *scene_value(const Scene *s, const Scene_key *k, size_t off,
@@ -24,7 +24,7 @@ static const char *scene_value(const Scene *s, const Scene_key *k, size_t off,
   snprintf(buf, size, "%d", v);
   return buf;
 }
-#line 3375 "paper/scene.nw"
+#line 3377 "paper/scene.nw"
 /* whether the key k of the slot off bytes further means something in s */
 static int written(const Scene *s, const Scene_key *k, size_t off, const char *v)
 {
@@ -36,7 +36,7 @@ static int written(const Scene *s, const Scene_key *k, size_t off, const char *v
   if (k->rectangle && s->problem.part.geometry[0]) return 0;
   return !k->quiet || strcmp(v, k->dflt) != 0;
 }
-#line 3394 "paper/scene.nw"
+#line 3396 "paper/scene.nw"
 /* write the records from..to-1 of the section sec, its slot off bytes
    further */
 static int write_section(const Scene *s, FILE *f, int from, int to,
@@ -63,7 +63,7 @@ static int write_section(const Scene *s, FILE *f, int from, int to,
   }
   return STATUS_OK;
 }
-#line 3425 "paper/scene.nw"
+#line 3427 "paper/scene.nw"
 /* the records from..to-1 of a named kind, for each of its slots in s */
 static int write_named(const Scene *s, FILE *f, int from, int to, int kind,
                        Status *st)

@@ -38,6 +38,12 @@ if limits_run; then
   ( ulimit -v 900000; unasked $BIN solve $ex -o $TMP/oom -s mesh.refine=64 >/dev/null 2>$TMP/err )
   check "ulimit -v 900 MB, N = 1024: memory runs out on the way, exit 5, one line, nothing written" \
     clean_failure $? 5 $TMP/err $TMP/oom 'out of memory'
+  # a part's scene loads gmsh's library and the libraries it needs, which
+  # 150 MB of address space cannot map: a matter of memory, exit 5, not
+  # of a missing package
+  ( ulimit -v 150000; unasked $BIN solve data/parts/pad.scene -o $TMP/gmsh-limit >/dev/null 2>$TMP/err )
+  check "ulimit -v 150 MB, a part: gmsh's library cannot be mapped, exit 5, one line" \
+    clean_failure $? 5 $TMP/err $TMP/gmsh-limit "cannot load gmsh's library .*: the memory this process may use is too small for it"
 fi
 
 # ---- interrupts ------------------------------------------------------------------

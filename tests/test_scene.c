@@ -15,6 +15,8 @@
 #include "check.h"
 #include "scene.h"
 #include "scene_files.h"
+#include "mesh.h"
+#include "resources.h"
 
 /* Example 5.1's arc R1 - sqrt(R1^2 - (x1 - 4)^2) by the obvious formula,
    which loses four digits to cancellation (the module does not): good to
@@ -381,6 +383,17 @@ static void test_part(void)
         "part: the surface rubber, E = 6e6, nu = 0.45; the body's E = 2.15e11");
   check(s.problem.side[SIDE_TOP].kind == BC_FREE && s.problem.side[SIDE_LEFT].kind
         == BC_CLAMPED, "part: no top side, the strip's left side clamped");
+  Mesh *m = mesh_new(&s.problem, &st);
+  if (check(m != NULL, "part: its mesh (%s)", st.msg)) {
+    Problem strip = s.problem;
+    strip.part.nodes = 0;
+    int own = m->nnodes - (m->N + 1) * (m->M + 1);
+    check(own > 0 && part->nodes == own && resources_memory(&s.problem)
+          >= resources_memory(&strip) + 800.0 * own,
+          "part: the scene counts its %d nodes (the mesh has %d beside the strip's), "
+          "and the estimate of memory counts their unknowns", part->nodes, own);
+    mesh_free(m);
+  }
   scene_free(&s);
   if (check(scene_load(&s, path, 6, ov, &st) == 0, "a part with overrides "
             "of named keys loads: %s", st.msg)) {
