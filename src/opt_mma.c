@@ -296,7 +296,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1765 "paper/opt.nw"
+#line 1767 "paper/opt.nw"
 if (r > 0 && !q->own_dual && (ev->o->metric == OPT_METRIC_EUCLIDEAN
                               || objective_fits_schur(&ev->o->objective)))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
@@ -331,7 +331,7 @@ q->fresh = q->stalled = 0;
 #line 1624 "paper/opt.nw"
   return rc;
 }
-#line 1752 "paper/opt.nw"
+#line 1754 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {
