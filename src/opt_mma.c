@@ -15,6 +15,8 @@ typedef struct {
   double *X0;             /* n: the design at y = 0, in B */
   double *R;              /* n x ny, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is J / sigma */
+  double dual_tol;        /* delta J / sigma at the (re)start: where NLopt's
+                             own dual of a pressure objective stops */
   double *S, *Z;          /* n x n, n x ny: scratch of the metric */
   gsl_matrix *A;          /* n x 2n: the area's and the faces' normals */
   Design_multipliers *mult;  /* of the iterate's KKT conditions */
@@ -33,7 +35,7 @@ typedef struct {
   double outside;         /* seconds in this file's callbacks, this start */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1314 "paper/opt.nw"
+#line 1316 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -54,7 +56,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
   for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1340 "paper/opt.nw"
+#line 1342 "paper/opt.nw"
 /* g (ny) = d c_k / d y for the inequality k of opt_constraints; its
    largest entry */
 static double mma_row(const Mma *q, int k, double *g)
@@ -82,7 +84,7 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   }
   q->outside += resources_clock() - start;
 }
-#line 1379 "paper/opt.nw"
+#line 1381 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static int mma_faces(Mma *q, const double *X, char *face);
 /* J(X(y)) / sigma, and its gradient in y */
@@ -102,7 +104,7 @@ static double mma_value(Mma *q, const double *y, double *grad)
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->J / q->scale;
 }
-#line 1403 "paper/opt.nw"
+#line 1405 "paper/opt.nw"
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
 {
@@ -112,7 +114,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return J;
 }
-#line 1415 "paper/opt.nw"
+#line 1417 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -132,7 +134,7 @@ static void mma_accept(Mma *q)
   else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1439 "paper/opt.nw"
+#line 1441 "paper/opt.nw"
 /* face[c] = 1 for each inequality c of opt_constraints on which X lies,
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
@@ -154,7 +156,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1469 "paper/opt.nw"
+#line 1471 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -188,7 +190,7 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1505 "paper/opt.nw"
+#line 1507 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 static void mma_varying(Mma *q);
@@ -206,9 +208,10 @@ static int mma_setup(Mma *q, const double *X)
     q->scale = q->ev->B->C0 * (Gmax > 0 ? Gmax : 1.0);
   }
   if (!rc) mma_varying(q);
+  q->dual_tol = q->ev->noise / q->scale;
   return rc;
 }
-#line 1530 "paper/opt.nw"
+#line 1533 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Opt_evaluator *ev = q->ev;
@@ -224,7 +227,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1554 "paper/opt.nw"
+#line 1557 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -238,14 +241,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1545 "paper/opt.nw"
+#line 1548 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1574 "paper/opt.nw"
+#line 1577 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Opt_evaluator *ev, double *X)
 {
@@ -269,14 +272,14 @@ int opt_mma(Opt_evaluator *ev, double *X)
   free(scratch), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1601 "paper/opt.nw"
+#line 1604 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Opt_evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1628 "paper/opt.nw"
+#line 1631 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -284,7 +287,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1607 "paper/opt.nw"
+#line 1610 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -293,18 +296,20 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1735 "paper/opt.nw"
+#line 1767 "paper/opt.nw"
 if (r > 0 && !q->own_dual && (ev->o->metric == OPT_METRIC_EUCLIDEAN
                               || objective_fits_schur(&ev->o->objective)))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
-#line 1615 "paper/opt.nw"
+else if (r > 0 && !objective_fits_schur(&ev->o->objective))
+  r = nlopt_set_param(q->opt, "dual_ftol_abs", q->dual_tol);
+#line 1618 "paper/opt.nw"
   double start = resources_clock();
   q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1641 "paper/opt.nw"
+#line 1644 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 int retry = !rc && !ev->rep->stop_reason[0] && r == NLOPT_FAILURE && !q->own_dual;
@@ -323,10 +328,10 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1621 "paper/opt.nw"
+#line 1624 "paper/opt.nw"
   return rc;
 }
-#line 1722 "paper/opt.nw"
+#line 1754 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {
