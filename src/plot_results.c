@@ -413,12 +413,13 @@ static void graph_place(FILE *f, const Panel *q, double indent)
   char x[64], y[96], w[64];
   snprintf(x, sizeof x, "colx(%d)%s%s", q->col, indent > 0 ? " + " : "",
            indent > 0 ? plot_real(indent, 3) : "");
-  snprintf(w, sizeof w, "colw%s%s", indent > 0 ? " - " : "", indent > 0 ? plot_real(indent, 3) : "");
+  snprintf(w, sizeof w, "colw%s%s", indent > 0 ? " - " : "",
+           indent > 0 ? plot_real(indent, 3) : "");
   if (q->row < 3) snprintf(y, sizeof y, "top + %d*(bodyh + rowgap)", q->row);
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, w, y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 2477 "paper/figures.nw"
+#line 2478 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -463,7 +464,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n%s", formatted ? "  set format y\n" : "");
 }
-#line 2538 "paper/figures.nw"
+#line 2539 "paper/figures.nw"
 /* gnuplot's step of tick marks for a range r (quantize_normal_tics, guide 20) */
 static double gnuplot_step(double r)
 {
@@ -506,7 +507,7 @@ static int objective_format(FILE *f, const Plot *pl)
   fprintf(f, "  set format y '%%.%df'\n", (int) fmax(0, ceil(-log10(step) - SLACK)));
   return 1;
 }
-#line 2593 "paper/figures.nw"
+#line 2594 "paper/figures.nw"
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -536,7 +537,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n");
 }
-#line 2627 "paper/figures.nw"
+#line 2628 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);
