@@ -507,7 +507,47 @@ static int objective_format(FILE *f, const Plot *pl)
   fprintf(f, "  set format y '%%.%df'\n", (int) fmax(0, ceil(-log10(step) - SLACK)));
   return 1;
 }
-#line 2594 "paper/figures.nw"
+#line 2603 "paper/figures.nw"
+/* the largest pressure (column 6) of the states' contact.dat at x1 in
+   [lo, hi], 0 where none; the largest of all in *top */
+static double pressure_in(const Plot *pl, double lo, double hi, double *top)
+{
+  double in = 0;
+  *top = 0;
+  for (int k = 0; k < 1 + pl->optimize; k++) {
+    char path[1200], line[1024];
+    double v[6];
+    snprintf(path, sizeof path, "%s/contact.dat", pl->state[k]);
+    FILE *f = fopen(path, "r");
+    while (f && fgets(line, sizeof line, f))
+      if (line[0] != '#' && sscanf(line, "%lf %lf %lf %lf %lf %lf", v, v + 1, v + 2, v + 3,
+                                   v + 4, v + 5) == 6) {
+        *top = fmax(*top, v[5]);
+        if (v[0] >= lo && v[0] <= hi) in = fmax(in, v[5]);
+      }
+    if (f) fclose(f);
+  }
+  return in;
+}
+
+/* the key of the pressure graph: a free corner, or a band above the points */
+static void pressure_key(FILE *f, const Plot *pl)
+{
+  const Problem *p = &pl->s.problem;
+  double w = 0.4 * (p->b - p->a), top;
+  const char *corner = "left";
+  if (pressure_in(pl, p->a, p->a + w, &top) > 0.6 * top) {
+    corner = "right";
+    if (pressure_in(pl, p->b - w, p->b, &top) > 0.6 * top) {
+      corner = "left";
+      fprintf(f, "  set offsets 0, 0, graph %s, 0   # a band for the key above the points\n",
+              KEYBAND);
+    }
+  }
+  fprintf(f, "  keyfont = sprintf(',%%g', %s*fsz); set key top %s font keyfont\n", KEYFONT,
+          corner);
+}
+
 static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
 {
   const Problem *p = &pl->s.problem;
@@ -525,7 +565,8 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
   else fprintf(f, "set yrange [*:*]; if (%cm == 0) { set yrange [-1:1] }\n", e[0]);
   plot_tics(f, "x", p->a, p->b, 4, 0);
   if (q->row < 3) fprintf(f, "  set ytics %s_step out nomirror\n", e);
-  if (q->kind == PRESSURE)
+  if (q->kind == PRESSURE && pl->optimize) pressure_key(f, pl);
+  else if (q->kind == PRESSURE)
     fprintf(f, "  keyfont = sprintf(',%%g', %s*fsz); set key top left font keyfont\n", KEYFONT);
   else fprintf(f, "  unset key\n");
   fprintf(f, "  plot s0.'/contact.dat' using 1:($%d/10.0**%s) with "
@@ -535,9 +576,9 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
     fprintf(f, ", \\\n       s1.'/contact.dat' using 1:($%d/10.0**%s) with linespoints "
             "pt '◁' ps 1.3 lw 1.2 pi %d \\\n           lc '#1f4e99' title 'final {/:Italic α}^*'",
             c, e, L->marks);
-  fprintf(f, "\n");
+  fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 2628 "paper/figures.nw"
+#line 2678 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);

@@ -400,6 +400,23 @@ check "a tall body optimised: (d) indented for its tick labels, which have the d
   "grep -q '^  set lmargin at screen sx(colx(0) + [0-9.]*); ' $TMP/script.gp && grep -q \"^  set format y '%.[0-9]f'\" $TMP/script.gp"
 check "a tall body optimised: the name of (d)'s axis, E_h [10^e J/m], on the page" \
   sh -c "pdftotext -bbox $TMP/tall-opt/plot-results.pdf - | grep -q '>J/m\]<'"
+# the key of the pressure in a corner its curves leave free: Example 5.1's
+# pressure rises to the right (top left); the steel strip's first
+# pressure peaks at x1 = 4 of 10, in the left two fifths (top right); a
+# column 0.5 m wide pressed evenly by its top fills both corners (top
+# left, above the points, in a band)
+script $TMP/example-5.1-opt --results
+check "(h) of Example 5.1: the key top left, no band" sh -c \
+  "grep -q 'set key top left font keyfont' $TMP/script.gp && ! grep -q '^  set offsets 0, 0, graph' $TMP/script.gp"
+$BIN optimize tests/scenes/strip.scene -o $TMP/strip-opt > /dev/null 2>&1
+script $TMP/strip-opt --results
+check "(h) of the steel strip: the key top right" grep -q 'set key top right font keyfont' $TMP/script.gp
+sed -e 's/^gamma = 3$/gamma = 6/' -e 's/^bc = clamped$/bc = roller/' -e 's/^bc = free$/bc = roller/' \
+    -e 's/^C2 = 1.4985$/C2 = 2.9985/' $scenes/tall.scene > $TMP/column.scene
+$BIN optimize $TMP/column.scene -o $TMP/column-opt > /dev/null 2>&1
+script $TMP/column-opt --results
+check "(h) of a column pressed evenly: the key top left, in a band above the points" sh -c \
+  "grep -q 'set key top left font keyfont' $TMP/script.gp && grep -q '^  set offsets 0, 0, graph 0.5, 0 ' $TMP/script.gp"
 $BIN plot $TMP/tall --title "$(printf 'a very long title %.0s' 1 2 3 4 5 6)" -o $TMP/long --gnuplot > $TMP/script.gp
 set -- $(awk '/^Wcm = / { print $3 }' $TMP/script.gp)
 check "a title of 108 characters: both pages ($1, $2 cm) wider than it and its end (at 0.254 cm a character)" \
