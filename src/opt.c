@@ -40,7 +40,7 @@ int opt_refusal(Opt_method m, const Objective *o, Problem_contact_law contact,
                       path, objective_name(o->kind));
   return STATUS_OK;
 }
-#line 2117 "paper/opt.nw"
+#line 2128 "paper/opt.nw"
 /* after a method failed at a design that lifts off: back to the last
    iterate, stop_reason lift_off */
 static int opt_lift_off(Opt_evaluator *ev, double *X)
@@ -66,11 +66,11 @@ int opt_minimize(Model *md, const Design_set *B, const Opt_options *o,
   ev.G = ev.X + n, ev.Xacc = ev.G + n;
   if (!(rc = opt_evaluate(&ev, X))) {
     
-#line 2156 "paper/opt.nw"
+#line 2167 "paper/opt.nw"
 double Gmax = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev.G[i]));
 ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
-#line 2142 "paper/opt.nw"
+#line 2153 "paper/opt.nw"
     rc = o->method == OPT_SLSQP ? opt_slsqp(&ev, X)
        : o->method == OPT_MMA ? opt_mma(&ev, X)
        : o->method == OPT_NEWTON ? opt_newton(&ev, X) : opt_projgrad(&ev, X);
@@ -81,14 +81,14 @@ ev.tau = B->C0 / (Gmax > 0 ? Gmax : 1.0);
   free(ev.X);
   return rc;
 }
-#line 2173 "paper/opt.nw"
+#line 2184 "paper/opt.nw"
 double opt_memory(const Opt_options *o, int N)
 {
   double n = N + 1.0, k = o->method == OPT_NEWTON ? 4
                         : o->method == OPT_SLSQP || o->method == OPT_MMA ? 12 : 0;
   return 8 * k * n * n;
 }
-#line 2224 "paper/opt.nw"
+#line 2235 "paper/opt.nw"
 int opt_start_design(const Design_set *B, int k, double *X, Status *st)
 {
   int N = B->N, j = (k + 1) / 2;
@@ -97,7 +97,7 @@ int opt_start_design(const Design_set *B, int k, double *X, Status *st)
   for (int i = 0; i <= N; i++) X[i] = c + s * a * cos(j * pi * i / N);
   return design_project(B, X, X, NULL, st);
 }
-#line 2305 "paper/opt.nw"
+#line 2316 "paper/opt.nw"
 /* X on 2 Nc intervals = the linear interpolation of X on Nc, in place:
    X_2i = X_i, X_2i+1 = (X_i + X_i+1) / 2 */
 void opt_interpolate(double *X, int Nc)
@@ -114,7 +114,7 @@ static void opt_prolong(double *X, int Nc)
   for (int i = 1; i + 1 < Nc; i++)
     X[2 * i + 1] = (9 * (X[2 * i] + X[2 * i + 2]) - X[2 * i - 2] - X[2 * i + 4]) / 16;
 }
-#line 2328 "paper/opt.nw"
+#line 2339 "paper/opt.nw"
 #define LEVELS_FROM 256       /* the least N that the default refines to */
 #define LEVELS_COARSEST 64    /* the least N of a default coarse level */
 #define LEVELS_TOL 100        /* a coarse level's tol, in the caller's */
@@ -127,7 +127,7 @@ int opt_levels(const Problem *p, const Opt_options *o)
     n /= 2, m /= 2, r /= 2, l++;
   return l;
 }
-#line 2356 "paper/opt.nw"
+#line 2367 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st);
@@ -157,7 +157,7 @@ int opt_coarse_start(const Problem *p, const Qp_options *solver,
   free(Y);
   return rc;
 }
-#line 2396 "paper/opt.nw"
+#line 2407 "paper/opt.nw"
 static int opt_level(const Problem *q, const Qp_options *solver,
                      const Opt_options *o, double *Y, double *gap, Opt_monitor stop,
                      cholmod_common *cm, Opt_report *coarse, Status *st)

@@ -89,7 +89,7 @@ const char *opt_nlopt_iterate(Opt_evaluator *ev, int k, double *bestX)
   if (idle >= OPT_FEW) { opt_idle_detail(ev); return "no_progress"; }
   return NULL;
 }
-#line 886 "paper/opt.nw"
+#line 897 "paper/opt.nw"
 /* c (4n - 2): the box and the slopes of B at X (n), <= 0 when met */
 void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c)
 {
@@ -104,7 +104,7 @@ void opt_constraints(const Design_set *B, const double *X, unsigned n, double *c
     c[2 * n + 2 * i + 1] = -rise - d;               /* falling at most C1 h */
   }
 }
-#line 905 "paper/opt.nw"
+#line 916 "paper/opt.nw"
 /* grad ((4n - 2) x ny, row-major) = d c / d y for X = X0 + C0 R y */
 void opt_constraints_gradient(const double *R, unsigned n, unsigned ny, double *grad)
 {

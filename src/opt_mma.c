@@ -6,7 +6,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 1285 "paper/opt.nw"
+#line 1296 "paper/opt.nw"
 typedef struct {
   Opt_evaluator *ev;
   nlopt_opt opt;
@@ -35,7 +35,7 @@ typedef struct {
   double outside;         /* seconds in this file's callbacks, this start */
 } Mma;
 enum { MMA_STALL = 20 };
-#line 1316 "paper/opt.nw"
+#line 1327 "paper/opt.nw"
 /* X = X0 + C0 R y */
 static void mma_design(const Mma *q, const double *y, double *X)
 {
@@ -56,7 +56,7 @@ static void mma_gradient(const Mma *q, const double *G, double *grad)
     for (int j = 0; j < ny; j++) grad[j] += q->R[(size_t) i * ny + j] * G[i];
   for (int j = 0; j < ny; j++) grad[j] *= q->ev->B->C0 / q->scale;
 }
-#line 1342 "paper/opt.nw"
+#line 1353 "paper/opt.nw"
 /* g (ny) = d c_k / d y for the inequality k of opt_constraints; its
    largest entry */
 static double mma_row(const Mma *q, int k, double *g)
@@ -84,7 +84,7 @@ static void mma_constraints(unsigned m, double *c, unsigned ny,
   }
   q->outside += resources_clock() - start;
 }
-#line 1381 "paper/opt.nw"
+#line 1392 "paper/opt.nw"
 static void mma_accept(Mma *q);
 static int mma_faces(Mma *q, const double *X, char *face);
 /* J(X(y)) / sigma, and its gradient in y */
@@ -104,7 +104,7 @@ static double mma_value(Mma *q, const double *y, double *grad)
   else if (++q->stalled >= MMA_STALL) nlopt_force_stop(q->opt);    /* restart */
   return ev->J / q->scale;
 }
-#line 1405 "paper/opt.nw"
+#line 1416 "paper/opt.nw"
 static double mma_objective(unsigned ny, const double *y, double *grad,
                             void *data)
 {
@@ -114,7 +114,7 @@ static double mma_objective(unsigned ny, const double *y, double *grad,
   (void) ny;
   return J;
 }
-#line 1417 "paper/opt.nw"
+#line 1428 "paper/opt.nw"
 static void mma_stop(Mma *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
@@ -134,7 +134,7 @@ static void mma_accept(Mma *q)
   else if (memcmp(q->faces, q->fixed, 4 * q->n - 2)) nlopt_force_stop(q->opt);  /* restart */
   q->k++;
 }
-#line 1441 "paper/opt.nw"
+#line 1452 "paper/opt.nw"
 /* face[c] = 1 for each inequality c of opt_constraints on which X lies,
    within 1e-3 tol C0, with a positive multiplier */
 static int mma_faces(Mma *q, const double *X, char *face)
@@ -156,7 +156,7 @@ static int mma_faces(Mma *q, const double *X, char *face)
   }
   return STATUS_OK;
 }
-#line 1471 "paper/opt.nw"
+#line 1482 "paper/opt.nw"
 static int mma_basis(Mma *q)
 {
   int n = q->n, k = 1, rank = 0, signum;
@@ -190,7 +190,7 @@ static int mma_basis(Mma *q)
   gsl_matrix_free(Rf), gsl_vector_free(tau), gsl_vector_free(norm), gsl_permutation_free(p);
   return STATUS_OK;
 }
-#line 1507 "paper/opt.nw"
+#line 1518 "paper/opt.nw"
 static int mma_basis(Mma *q);
 static int mma_schur(Mma *q);
 static void mma_varying(Mma *q);
@@ -211,7 +211,7 @@ static int mma_setup(Mma *q, const double *X)
   q->dual_tol = q->ev->noise / q->scale;
   return rc;
 }
-#line 1533 "paper/opt.nw"
+#line 1544 "paper/opt.nw"
 static int mma_schur(Mma *q)
 {
   Opt_evaluator *ev = q->ev;
@@ -227,7 +227,7 @@ static int mma_schur(Mma *q)
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &S.matrix, &Z.matrix, 0.0, &R.matrix);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, &R.matrix, 0.0, K);
     
-#line 1557 "paper/opt.nw"
+#line 1568 "paper/opt.nw"
 if (gsl_linalg_cholesky_decomp1(K))
   rc = status_set(ev->st, STATUS_NUMERIC, "optimiser: the contact stiffness "
                   "is not positive definite");
@@ -241,14 +241,14 @@ else {
   gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, K, &R.matrix);
   gsl_matrix_scale(&R.matrix, sqrt(q->scale) / ev->B->C0);
 }
-#line 1548 "paper/opt.nw"
+#line 1559 "paper/opt.nw"
   }
   gsl_matrix_free(K);
   gsl_vector_free(g);
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1577 "paper/opt.nw"
+#line 1588 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more);
 int opt_mma(Opt_evaluator *ev, double *X)
 {
@@ -272,14 +272,14 @@ int opt_mma(Opt_evaluator *ev, double *X)
   free(scratch), free(q.fixed), free(q.rows), gsl_matrix_free(q.A), design_multipliers_free(q.mult);
   return rc;
 }
-#line 1604 "paper/opt.nw"
+#line 1615 "paper/opt.nw"
 static int mma_run(Mma *q, double *y, double *tol, int *more)
 {
   Opt_evaluator *ev = q->ev;
   int m = q->nrows, rc = STATUS_OK;
   double f;
   if (q->ny == 0) 
-#line 1631 "paper/opt.nw"
+#line 1642 "paper/opt.nw"
 {
   *more = 0;
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "no_progress");
@@ -287,7 +287,7 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
            "direction of the design is fixed by a face of B that presses");
   return opt_evaluate(ev, q->bestX);
 }
-#line 1610 "paper/opt.nw"
+#line 1621 "paper/opt.nw"
   if (!(q->opt = nlopt_create(NLOPT_LD_MMA, q->ny)))
     return status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
   for (int i = 0; i < m; i++) tol[i] = 0;
@@ -296,20 +296,20 @@ static int mma_run(Mma *q, double *y, double *tol, int *more)
   if (r > 0) r = nlopt_set_min_objective(q->opt, mma_objective, q);
   if (r > 0) r = nlopt_set_maxeval(q->opt, 50 * (ev->o->max_iter + 1) - ev->rep->evaluations + 1);
   
-#line 1767 "paper/opt.nw"
+#line 1778 "paper/opt.nw"
 if (r > 0 && !q->own_dual && (ev->o->metric == OPT_METRIC_EUCLIDEAN
                               || objective_fits_schur(&ev->o->objective)))
   r = nlopt_set_param(q->opt, "dual_algorithm", NLOPT_LD_LBFGS);
 else if (r > 0 && !objective_fits_schur(&ev->o->objective))
   r = nlopt_set_param(q->opt, "dual_ftol_abs", q->dual_tol);
-#line 1618 "paper/opt.nw"
+#line 1629 "paper/opt.nw"
   double start = resources_clock();
   q->outside = 0;
   if (r > 0) r = nlopt_optimize(q->opt, y, &f);
   ev->rep->subproblem_seconds += resources_clock() - start - q->outside;
   nlopt_destroy(q->opt);
   
-#line 1644 "paper/opt.nw"
+#line 1655 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 int retry = !rc && !ev->rep->stop_reason[0] && r == NLOPT_FAILURE && !q->own_dual;
@@ -328,10 +328,10 @@ if (!rc && !*more && !ev->rep->stop_reason[0]) {
 if (!rc) rc = opt_evaluate(ev, q->bestX);
 q->fresh = q->stalled = 0;
 (void) f;
-#line 1624 "paper/opt.nw"
+#line 1635 "paper/opt.nw"
   return rc;
 }
-#line 1754 "paper/opt.nw"
+#line 1765 "paper/opt.nw"
 /* rows: the inequalities whose gradient in y is not zero (to rounding) */
 static void mma_varying(Mma *q)
 {

@@ -5,7 +5,7 @@
 #include <string.h>
 #include "opt_private.h"
 #include "newton.h"
-#line 1815 "paper/opt.nw"
+#line 1826 "paper/opt.nw"
 typedef struct {
   Opt_evaluator *ev;
   Newton_workspace *solver; /* the model problem's solver */
@@ -24,7 +24,7 @@ typedef struct {
   int sick;               /* iterations in a row whose model failed */
   char failure[400];      /* what the last model that failed measured */
 } Newton_run;
-#line 1841 "paper/opt.nw"
+#line 1852 "paper/opt.nw"
 static int newton_model_at(Newton_run *nr)
 {
   Opt_evaluator *ev = nr->ev;
@@ -46,14 +46,14 @@ static int newton_model_at(Newton_run *nr)
   memcpy(nr->Xk, ev->X, n * sizeof *nr->Xk);
   nr->Ek = ev->J, nr->noisek = ev->noise;
   
-#line 1998 "paper/opt.nw"
+#line 2009 "paper/opt.nw"
 double G2 = 0, rmin = HUGE_VAL;
 for (int i = 0; i < n; i++) G2 += ev->G[i] * ev->G[i], rmin = fmin(rmin, nr->r[i]);
 nr->rho_max = 2 * sqrt(G2) / (DBL_EPSILON * ev->B->C0 * rmin);
-#line 1862 "paper/opt.nw"
+#line 1873 "paper/opt.nw"
   return STATUS_OK;
 }
-#line 1869 "paper/opt.nw"
+#line 1880 "paper/opt.nw"
 static int newton_try(Newton_run *nr, int *accepted)
 {
   Opt_evaluator *ev = nr->ev;
@@ -83,7 +83,7 @@ static int newton_try(Newton_run *nr, int *accepted)
   else if (nrep.pred > noise && ratio < 0.25) nr->rho *= 2;
   return STATUS_OK;
 }
-#line 2029 "paper/opt.nw"
+#line 2040 "paper/opt.nw"
 static void newton_why(const Newton_run *nr)
 {
   char *s = nr->ev->rep->stop_detail;
@@ -100,7 +100,7 @@ static void newton_why(const Newton_run *nr)
     snprintf(s, z, "the model problem failed in %d iterations in a row; "
              "the last: %s", nr->sick, nr->failure);
 }
-#line 2007 "paper/opt.nw"
+#line 2018 "paper/opt.nw"
 /* 1 when the run ends at this trial, its stop reason in the report */
 static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
 {
@@ -120,7 +120,7 @@ static int newton_end(Newton_run *nr, int k, int accepted, double pg, int stop)
   if (!strcmp(why, "no_progress")) newton_why(nr);
   return 1;
 }
-#line 2052 "paper/opt.nw"
+#line 2063 "paper/opt.nw"
 int opt_newton(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, m = model_contact_count(ev->md), rc = STATUS_OK, k = 0, accepted = 1;
@@ -139,7 +139,7 @@ int opt_newton(Opt_evaluator *ev, double *X)
                             nr.r, nr.S, nr.f, nr.v0 };
   double pg = HUGE_VAL;
   
-#line 2091 "paper/opt.nw"
+#line 2102 "paper/opt.nw"
 if ((rc = newton_model_at(&nr))) {
   newton_free(nr.solver), free(nr.S);
   return rc;
@@ -147,7 +147,7 @@ if ((rc = newton_model_at(&nr))) {
 double Gmax = 0, Dmean = 0;
 for (int i = 0; i < n; i++) Gmax = fmax(Gmax, fabs(ev->G[i])), Dmean += nr.r[i] / n;
 nr.rho = Gmax > 0 ? fmin(1e-2, Gmax / (ev->B->C0 * Dmean)) : 1e-2;
-#line 2070 "paper/opt.nw"
+#line 2081 "paper/opt.nw"
   for (;;) {
     if (accepted && ((k > 0 && (rc = newton_model_at(&nr)))
                      || (rc = opt_pgnorm(ev->B, ev->X, ev->G, ev->tau, &pg, ev->st))))

@@ -6,14 +6,14 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include "opt_private.h"
-#line 844 "paper/opt.nw"
+#line 855 "paper/opt.nw"
 typedef struct {
   int n;                  /* N+1 */
   double *X0;             /* n: the start */
   double *R;              /* n x n, row-major: X = X0 + C0 R y */
   double scale;           /* sigma: the objective is E / sigma */
 } Metric;
-#line 996 "paper/opt.nw"
+#line 1007 "paper/opt.nw"
 typedef struct {
   Opt_evaluator *ev;
   nlopt_opt opt;
@@ -28,7 +28,7 @@ typedef struct {
 } Slsqp;
 enum { STALL = 10 };
 static const double OPT_IN_B = 1e-12;   /* a violation of B that is rounding */
-#line 853 "paper/opt.nw"
+#line 864 "paper/opt.nw"
 /* X = X0 + C0 R y, unclipped: the design the constraints see */
 static void metric_design(const Metric *mt, double C0, const double *y,
                           double *X)
@@ -40,7 +40,7 @@ static void metric_design(const Metric *mt, double C0, const double *y,
     X[i] = mt->X0[i] + C0 * s;
   }
 }
-#line 868 "paper/opt.nw"
+#line 879 "paper/opt.nw"
 static void linear_constraints(unsigned m, double *c, unsigned n,
                                const double *y, double *grad, void *data)
 {
@@ -54,7 +54,7 @@ static void linear_constraints(unsigned m, double *c, unsigned n,
   q->outside += resources_clock() - start;
   (void) m;
 }
-#line 924 "paper/opt.nw"
+#line 935 "paper/opt.nw"
 static double area_constraint(unsigned n, const double *y, double *grad,
                               void *data)
 {
@@ -73,13 +73,13 @@ static double area_constraint(unsigned n, const double *y, double *grad,
   q->outside += resources_clock() - start;
   return (B->h * sum - B->area) / (B->C0 * L);
 }
-#line 1014 "paper/opt.nw"
+#line 1025 "paper/opt.nw"
 static void slsqp_stop(Slsqp *q, const char *why)
 {
   snprintf(q->ev->rep->stop_reason, sizeof q->ev->rep->stop_reason, "%s", why);
   nlopt_force_stop(q->opt);
 }
-#line 1023 "paper/opt.nw"
+#line 1034 "paper/opt.nw"
 /* delta E + C0 v |grad E|_1 at the evaluator's design, v its violation of B */
 static double slsqp_band(const Opt_evaluator *ev, double v)
 {
@@ -100,13 +100,13 @@ static double slsqp_value(Slsqp *q, unsigned n, const double *y, double *grad)
   if ((ev->failed = opt_evaluate(ev, X))) { nlopt_force_stop(q->opt); return HUGE_VAL; }
   if (grad)
     
-#line 1063 "paper/opt.nw"
+#line 1074 "paper/opt.nw"
 for (unsigned j = 0; j < n; j++) {
   double g = 0;
   for (unsigned i = 0; i < n; i++) g += R[i * n + j] * ev->G[i];
   grad[j] = C0 * g / q->metric.scale;
 }
-#line 1043 "paper/opt.nw"
+#line 1054 "paper/opt.nw"
   double v = design_violation(ev->B, X), band = slsqp_band(ev, v);
   if (ev->J <= q->best + q->best_band + band && v <= OPT_IN_B
       && (q->k == 0 || memcmp(X, q->bestX, n * sizeof *X))) slsqp_accept(q, band);
@@ -123,7 +123,7 @@ static double slsqp_objective(unsigned n, const double *y, double *grad,
   q->outside += resources_clock() - start;
   return J;
 }
-#line 1073 "paper/opt.nw"
+#line 1084 "paper/opt.nw"
 static void slsqp_accept(Slsqp *q, double band)
 {
   Opt_evaluator *ev = q->ev;
@@ -135,7 +135,7 @@ static void slsqp_accept(Slsqp *q, double band)
   if (why) slsqp_stop(q, why);
   q->k++;
 }
-#line 1090 "paper/opt.nw"
+#line 1101 "paper/opt.nw"
 static int metric_setup(Opt_evaluator *ev, Metric *mt)
 {
   int n = ev->n, rc = STATUS_OK;
@@ -150,7 +150,7 @@ static int metric_setup(Opt_evaluator *ev, Metric *mt)
   double start = resources_clock();
   if ((rc = model_contact_stiffness(ev->md, mt->R, ev->st))) return rc;
   
-#line 1110 "paper/opt.nw"
+#line 1121 "paper/opt.nw"
 gsl_matrix_view S = gsl_matrix_view_array(mt->R, n, n);
 gsl_matrix *Linv = gsl_matrix_alloc(n, n);
 gsl_vector *g = gsl_vector_alloc(n);
@@ -172,11 +172,11 @@ else {
 }
 gsl_matrix_free(Linv);
 gsl_vector_free(g);
-#line 1104 "paper/opt.nw"
+#line 1115 "paper/opt.nw"
   ev->rep->metric_seconds += resources_clock() - start;
   return rc;
 }
-#line 1140 "paper/opt.nw"
+#line 1151 "paper/opt.nw"
 int opt_slsqp(Opt_evaluator *ev, double *X)
 {
   int n = ev->n, m = 2 * n + 2 * (n - 1), rc;
@@ -193,7 +193,7 @@ int opt_slsqp(Opt_evaluator *ev, double *X)
       break;
     }
     
-#line 1163 "paper/opt.nw"
+#line 1174 "paper/opt.nw"
 for (int i = 0; i < m; i++) tol[i] = 1e-14;
 for (int i = 0; i < n; i++) y[i] = 0;
 nlopt_result r = nlopt_add_inequality_mconstraint(q.opt, m, linear_constraints, &q, tol);
@@ -205,7 +205,7 @@ q.outside = 0;
 if (r > 0) r = nlopt_optimize(q.opt, y, &f);
 ev->rep->subproblem_seconds += resources_clock() - start - q.outside;
 nlopt_destroy(q.opt);
-#line 1183 "paper/opt.nw"
+#line 1194 "paper/opt.nw"
 if (!(rc = ev->failed) && r == NLOPT_OUT_OF_MEMORY)
   rc = status_set(ev->st, STATUS_MEMORY, "optimiser: out of memory (NLopt)");
 more = !rc && !ev->rep->stop_reason[0]
@@ -214,19 +214,19 @@ if (!rc && !more && !ev->rep->stop_reason[0]) {
   snprintf(ev->rep->stop_reason, sizeof ev->rep->stop_reason, "%s",
            r == NLOPT_MAXEVAL_REACHED ? "max_iter" : "no_progress");
   
-#line 1200 "paper/opt.nw"
+#line 1211 "paper/opt.nw"
 if (r != NLOPT_MAXEVAL_REACHED)
   snprintf(ev->rep->stop_detail, sizeof ev->rep->stop_detail, "SLSQP, %s, found no "
            "new iterate: %s%s", ev->rep->iterations ? "restarted from its last iterate"
            : "from the start", r == NLOPT_FORCED_STOP ? "its line search found no design "
            "in B with a lower value of the objective" : "NLopt ended it as ",
            r == NLOPT_FORCED_STOP ? "" : nlopt_result_to_string(r));
-#line 1191 "paper/opt.nw"
+#line 1202 "paper/opt.nw"
 }
 if (!rc) rc = opt_evaluate(ev, X);
 q.fresh = q.stalled = 0;
 (void) f;
-#line 1156 "paper/opt.nw"
+#line 1167 "paper/opt.nw"
   }
   free(scratch);
   return rc;
