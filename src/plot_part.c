@@ -1,9 +1,9 @@
-#line 251 "paper/figures.nw"
+#line 256 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 622 "paper/figures.nw"
+#line 627 "paper/figures.nw"
 static void chain_walk(const Mesh *m, Plot_chains *c, const int *out, char *seen, int e, int *n)
 {
   int first = m->edge[2 * e];
@@ -38,7 +38,7 @@ void plot_chains_free(Plot_chains *c)
   free(c->order), free(c->start), free(c->closed);
   memset(c, 0, sizeof *c);
 }
-#line 660 "paper/figures.nw"
+#line 665 "paper/figures.nw"
 double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double *xy)
 {
   double A = 0;
@@ -71,7 +71,7 @@ void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const doubl
     fputc('\n', f);
   }
 }
-#line 705 "paper/figures.nw"
+#line 710 "paper/figures.nw"
 typedef struct {
   double x[2];       /* a point of the curve, m */
   double n[2], t[2]; /* the outward normal and the tangent there, on the page */
@@ -94,7 +94,7 @@ static double curve_cm(const Plot *pl, int k, int s, double ucm, double vex)
       edge_cm(pl->part, c->order[j], ucm, vex, d), len += hypot(d[0], d[1]);
   return len;
 }
-#line 730 "paper/figures.nw"
+#line 735 "paper/figures.nw"
 static int curve_mark(const Plot *pl, int k, int s, double at, double ucm, double vex,
                       Curve_mark *q)
 {
@@ -128,7 +128,7 @@ static double chain_box(const Plot *pl, int k, double ucm, double vex)
   }
   return fmin((hi[0] - lo[0]) * ucm, (hi[1] - lo[1]) * ucm * vex);
 }
-#line 767 "paper/figures.nw"
+#line 772 "paper/figures.nw"
 static void mark_arrow(const Problem_curve *cv, const Curve_mark *q, double len,
                        double tail[2], double head[2])
 {
@@ -168,7 +168,7 @@ static double mark_draw(FILE *f, const Problem_curve *cv, const Curve_mark *q, d
             y, tail[1], x, head[0], y, head[1], AHEAD);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 810 "paper/figures.nw"
+#line 815 "paper/figures.nw"
 static void curve_text(FILE *f, const Problem_curve *cv)
 {
   char v[2][64];
@@ -190,7 +190,7 @@ static double curve_text_cm(const Problem_curve *cv)
          cv->kind == BC_TRACTION ? ": (P_1, P_2) = (−5.75·10^8, −5.75·10^8) N/m^2"
          : ": p = −5.75·10^8 N/m^2 (clamped)", 9.8));
 }
-#line 837 "paper/figures.nw"
+#line 842 "paper/figures.nw"
 static double curve_draw(FILE *f, const Plot *pl, int k, int s, double ucm, double vex,
                          int sideways)
 {
@@ -233,4 +233,82 @@ double plot_part_reach(const Plot *pl, double ucm, double vex, int sideways)
     for (int s = 0; s < pl->s.problem.part.ncurve; s++)
       r = fmax(r, curve_draw(NULL, pl, k, s, ucm, vex, sideways));
   return r;
+}
+#line 899 "paper/figures.nw"
+typedef struct { int lo, hi, material; } Region_edge;
+
+static int region_edge_cmp(const void *x, const void *y)
+{
+  const Region_edge *a = x, *b = y;
+  if (a->lo != b->lo) return (a->lo > b->lo) - (a->lo < b->lo);
+  return (a->hi > b->hi) - (a->hi < b->hi);
+}
+
+/* the material of index k of mesh_material: 0 the problem's, 1 + s region s's */
+static const Problem_material *material_of(const Plot *pl, int k)
+{
+  return k ? &pl->s.problem.part.region[k - 1].material : &pl->s.problem.material;
+}
+
+/* 1 if the materials of indices j and k have the same kind and values */
+static int same_material(const Plot *pl, int j, int k)
+{
+  const Problem_material *a = material_of(pl, j), *b = material_of(pl, k);
+  return a->kind == b->kind && a->young == b->young && a->nu == b->nu && a->E1 == b->E1
+         && a->E2 == b->E2 && a->nu12 == b->nu12 && a->G12 == b->G12 && a->E3 == b->E3
+         && a->nu13 == b->nu13 && a->nu23 == b->nu23 && a->angle == b->angle;
+}
+
+void plot_part_interfaces(FILE *f, const Plot *pl)
+{
+  const Mesh *m = pl->part;
+  size_t n = 3 * (size_t) m->ntri;
+  Region_edge *e = malloc(n * sizeof *e + 1);
+  fprintf(f, "$interfaces << EOD\n");
+  for (int t = 0; e && t < m->ntri; t++)
+    for (int k = 0; k < 3; k++) {
+      int u = m->tri[3 * t + k], v = m->tri[3 * t + (k + 1) % 3];
+      e[3 * t + k] = (Region_edge){ u < v ? u : v, u < v ? v : u, mesh_material(m, t) };
+    }
+  if (e) qsort(e, n, sizeof *e, region_edge_cmp);
+  for (size_t k = 0; e && k + 1 < n; k++)
+    if (e[k].lo == e[k + 1].lo && e[k].hi == e[k + 1].hi
+        && !same_material(pl, e[k].material, e[k + 1].material))
+      fprintf(f, "%.9g %.9g\n%.9g %.9g\n\n", m->xy[2 * e[k].lo], m->xy[2 * e[k].lo + 1],
+              m->xy[2 * e[k].hi], m->xy[2 * e[k].hi + 1]);
+  fprintf(f, "0 0\n0 0\nEOD\n");    /* never empty: gnuplot refuses an empty block */
+  free(e);
+}
+
+static void triangle_centroid(const Mesh *m, int t, double c[2])
+{
+  for (int d = 0; d < 2; d++)
+    c[d] = (m->xy[2 * m->tri[3 * t] + d] + m->xy[2 * m->tri[3 * t + 1] + d]
+            + m->xy[2 * m->tri[3 * t + 2] + d]) / 3;
+}
+
+void plot_part_region_labels(FILE *f, const Plot *pl)
+{
+  const Mesh *m = pl->part;
+  for (int s = 1; s <= pl->s.problem.part.nregion; s++) {
+    double area = 0, at[2] = { 0, 0 }, c[2], best = INFINITY, label[2] = { 0, 0 };
+    for (int t = 0; t < m->ntri; t++)
+      if (mesh_material(m, t) == s) {
+        double a = mesh_area(m, t);
+        triangle_centroid(m, t, c);
+        area += a, at[0] += a * c[0], at[1] += a * c[1];
+      }
+    if (!(area > 0)) continue;
+    at[0] /= area, at[1] /= area;
+    for (int t = 0; t < m->ntri; t++)
+      if (mesh_material(m, t) == s) {
+        triangle_centroid(m, t, c);
+        double d = hypot(c[0] - at[0], c[1] - at[1]);
+        if (d < best) best = d, label[0] = c[0], label[1] = c[1];
+      }
+    fprintf(f, "  set label ");
+    plot_quote(f, pl->s.problem.part.region[s - 1].name, 1);
+    fprintf(f, " at %.9g, %.9g center front font sprintf(',%%g', 0.9*fsz)\n",
+            label[0], label[1]);
+  }
 }

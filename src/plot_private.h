@@ -6,7 +6,7 @@
 #include "scene.h"
 #include "objective.h"
 #include "mesh.h"
-#line 447 "paper/figures.nw"
+#line 452 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   int n;            /* all nodes: ncol*nrow, then a part's own */
@@ -21,7 +21,7 @@ typedef struct {
 int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
                     Status *st);
 void plot_state_free(Plot_state *s);
-#line 601 "paper/figures.nw"
+#line 606 "paper/figures.nw"
 typedef struct {
   int nchain;   /* chains of boundary edges */
   int *order;   /* nedge: the edges chain by chain, each one's end the next one's start */
@@ -38,7 +38,7 @@ double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double 
    0), or all (which == 0) */
 void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const double *xy,
                        const double *u, int which);
-#line 274 "paper/figures.nw"
+#line 279 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -59,12 +59,12 @@ typedef struct {
 #line 171 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
-#line 1265 "paper/figures.nw"
+#line 1361 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
 #define LGAP 0.22     /* between a decoration and the side's name */
-#line 1438 "paper/figures.nw"
+#line 1534 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -76,6 +76,11 @@ void plot_part_curves(FILE *f, const Plot *pl, double ucm, double vex);
 /* how far those whose names stand beside them (sideways) or above or
    below them (!sideways) reach out of the body, their names included, cm */
 double plot_part_reach(const Plot *pl, double ucm, double vex, int sideways);
+/* a part's materials on the body figure: the data block $interfaces of
+   the edges between triangles of two materials (the strip's among them),
+   and a label naming each region of a material of its own */
+void plot_part_interfaces(FILE *f, const Plot *pl);
+void plot_part_region_labels(FILE *f, const Plot *pl);
 /* the lines that set up the page and the terminal of every script */
 extern const char plot_page_lines[], plot_terminal_lines[];
 /* v as gnuplot reads it back exactly; in a static buffer of 8 */

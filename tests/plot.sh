@@ -533,8 +533,22 @@ $BIN optimize $TMP/parts/bore.scene -o $TMP/bore > /dev/null 2>&1
 check "optimize a part with a bore exits 0" test -s $TMP/bore/final/solution.vtu
 plotted "optimize a part with a bore" $TMP/bore
 $BIN plot $TMP/bore --gnuplot > $TMP/bore.gp
-# block NAME: the lines of the data block $NAME of the body figure
-block() { awk -v n="\$$1" '$1 == n && $2 == "<<" { on = 1; next } $1 == "EOD" { on = 0 } on' $TMP/bore.gp; }
+# block NAME [SCRIPT]: the lines of the data block $NAME of the body figure
+block() { awk -v n="\$$1" '$1 == n && $2 == "<<" { on = 1; next } $1 == "EOD" { on = 0 } on' ${2:-$TMP/bore.gp}; }
+# the pad of two materials (data/parts/pad.geo: the plate from x2 = 0.003,
+# the strip's top, to 0.013, the rubber from 0.013 to 0.033, 0.2 m wide,
+# the strip of the plate's values): the edges between two materials all
+# lie on x2 = 0.013 and run from x1 = 0 to 0.2 (not on the joining
+# segment: the same values there), and each layer is named inside it
+$BIN solve data/parts/pad.scene -o $TMP/pad > /dev/null 2>&1
+$BIN plot $TMP/pad --body --gnuplot > $TMP/pad.gp
+check "a part of two materials: their interface drawn, x2 = 0.013 from x1 = 0 to 0.2, and nothing else" sh -c \
+  "$(block interfaces $TMP/pad.gp | awk 'NF == 2 && !($1 == 0 && $2 == 0) { n++; if ($2 != 0.013) bad++
+     lo = n == 1 || $1 < lo ? $1 : lo; hi = n == 1 || $1 > hi ? $1 : hi }
+     END { print (n > 0 && !bad && lo == 0 && hi == 0.2) ? "true" : "false" }')"
+check "a part of two materials: each layer named inside it" sh -c \
+  "grep \"set label 'plate' at\" $TMP/pad.gp | awk '{ y = \$6 + 0; exit !(y > 0.003 && y < 0.013) }' &&
+   grep \"set label 'rubber' at\" $TMP/pad.gp | awk '{ y = \$6 + 0; exit !(y > 0.013 && y < 0.033) }'"
 # on_outline: every point (x, y) of the input on the band's sides x = 0,
 # x = 4 (0.25 <= y <= 1), its top y = 1 (0 <= x <= 4), or the bore
 on_outline() { awk 'NF { x = $1; y = $2; r = sqrt((x - 2)^2 + (y - 0.625)^2); e = 1e-9
