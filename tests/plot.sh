@@ -542,6 +542,9 @@ block() { awk -v n="\$$1" '$1 == n && $2 == "<<" { on = 1; next } $1 == "EOD" { 
 # segment: the same values there), and each layer is named inside it
 $BIN solve data/parts/pad.scene -o $TMP/pad > /dev/null 2>&1
 $BIN plot $TMP/pad --body --gnuplot > $TMP/pad.gp
+# the machine foot: its strip's tick labels have six characters (0.0006)
+$BIN solve data/parts/machine-foot.scene -o $TMP/foot > /dev/null 2>&1
+plotted "solve the machine foot" $TMP/foot
 check "a part of two materials: their interface drawn, x2 = 0.013 from x1 = 0 to 0.2, and nothing else" sh -c \
   "$(block interfaces $TMP/pad.gp | awk 'NF == 2 && !($1 == 0 && $2 == 0) { n++; if ($2 != 0.013) bad++
      lo = n == 1 || $1 < lo ? $1 : lo; hi = n == 1 || $1 > hi ? $1 : hi }
