@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include "plot_private.h"
 #include "interrupt.h"
-#line 309 "paper/figures.nw"
+#line 311 "paper/figures.nw"
 int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
 {
   memset(a, 0, sizeof *a);
@@ -39,7 +39,7 @@ int plot_args_read(int argc, char **argv, Plot_args *a, Status *st)
                       "results figure draws it");
   return STATUS_OK;
 }
-#line 349 "paper/figures.nw"
+#line 351 "paper/figures.nw"
 /* dir/name is there, a plain file */
 static int has(const char *dir, const char *name)
 {
@@ -59,7 +59,7 @@ static int staging(const char *dir)
   snprintf(last, sizeof last, "%.*s", (int) (n - k), dir + k);
   return strstr(last, ".partial-") != NULL;
 }
-#line 373 "paper/figures.nw"
+#line 375 "paper/figures.nw"
 static const char *const state_files[] = { "shape.dat", "contact.dat", "solution.vtu" };
 
 /* dir: a finished run of solve or optimize (*optimize says which) whose
@@ -93,7 +93,7 @@ static int plot_folder(const char *dir, int *optimize, Status *st)
     }
   return STATUS_OK;
 }
-#line 411 "paper/figures.nw"
+#line 413 "paper/figures.nw"
 /* the value of the line "name value" of dir/summary.dat, or fallback */
 static double summary_value(const char *dir, const char *name, double fallback)
 {
@@ -107,7 +107,7 @@ static double summary_value(const char *dir, const char *name, double fallback)
   fclose(f);
   return found;
 }
-#line 428 "paper/figures.nw"
+#line 430 "paper/figures.nw"
 /* the least and greatest objective (column 2) of dir/history.dat; NaN
    where it has none */
 static void history_range(const char *dir, double *lo, double *hi)
@@ -123,7 +123,7 @@ static void history_range(const char *dir, double *lo, double *hi)
       *lo = isnan(*lo) ? v : fmin(*lo, v), *hi = isnan(*hi) ? v : fmax(*hi, v);
   fclose(f);
 }
-#line 2823 "paper/figures.nw"
+#line 2832 "paper/figures.nw"
 extern char **environ;
 
 /* gnuplot started, reading its script from *f, its errors going to err */
@@ -155,7 +155,7 @@ static int gnuplot_start(pid_t *pid, FILE **f, int err, Status *st)
   }
   return STATUS_OK;
 }
-#line 2858 "paper/figures.nw"
+#line 2867 "paper/figures.nw"
 static void last_line(FILE *f, char *buf, size_t size)
 {
   char line[1024];
@@ -168,7 +168,7 @@ static void last_line(FILE *f, char *buf, size_t size)
     if (*s) snprintf(buf, size, "%s", s);
   }
 }
-#line 2879 "paper/figures.nw"
+#line 2888 "paper/figures.nw"
 enum { GNUPLOT_GRACE = 2000 };   /* ms that gnuplot has to end after an interrupt */
 static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
 {
@@ -190,7 +190,7 @@ static int gnuplot_end(pid_t pid, FILE *err, const char *name, Status *st)
                     "drawing %s%s%s", done < 0 ? -1 : WEXITSTATUS(ws), name,
                     why[0] ? ": " : "", why);
 }
-#line 2907 "paper/figures.nw"
+#line 2916 "paper/figures.nw"
 static void write_script(FILE *f, const Plot *pl, int fig, const char *out)
 {
   if (fig == PLOT_BODY) plot_body_figure(f, pl, out);
@@ -224,7 +224,7 @@ static int commit(const char *stage, const char *name, Status *st)
   }
   return STATUS_OK;
 }
-#line 2949 "paper/figures.nw"
+#line 2958 "paper/figures.nw"
 static int draw(const Plot *pl, int fig, const char *name, Status *st)
 {
   char stage[1200];
@@ -252,7 +252,7 @@ static int draw(const Plot *pl, int fig, const char *name, Status *st)
   if (rc) unstage(stage);
   return rc ? rc : commit(stage, name, st);
 }
-#line 2986 "paper/figures.nw"
+#line 2995 "paper/figures.nw"
 static void figure_name(const Plot_args *a, int fig, char *buf, size_t size)
 {
   const char *suffix = fig == PLOT_BODY ? "body" : "results";
@@ -273,7 +273,7 @@ static int writable(const char *name, Status *st)
                       dir, strerror(errno));
   return STATUS_OK;
 }
-#line 3016 "paper/figures.nw"
+#line 3025 "paper/figures.nw"
 static int plot_open(Plot *pl, const Plot_args *a, Status *st)
 {
   char scene[1100], file[64];
@@ -316,7 +316,7 @@ static int plot_open(Plot *pl, const Plot_args *a, Status *st)
       return rc;
   return STATUS_OK;
 }
-#line 3063 "paper/figures.nw"
+#line 3072 "paper/figures.nw"
 int plot_run(const Plot_args *a, FILE *out, Plot_drawn *d, Status *st)
 {
   static const int fig[2] = { PLOT_BODY, PLOT_RESULTS };

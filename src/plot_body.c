@@ -1,9 +1,9 @@
-#line 240 "paper/figures.nw"
+#line 242 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 1374 "paper/figures.nw"
+#line 1376 "paper/figures.nw"
 #define LROOM 1.4     /* room for the name */
 #define BELOW 0.88    /* the foundation, drawn under x2 = 0 */
 #define ABOVE 0.88    /* room above the top's decoration */
@@ -17,10 +17,10 @@ typedef struct {
   double width;               /* cm: the page */
   double left;                /* cm: the page left of the panels */
 } Body_page;
-#line 1391 "paper/figures.nw"
+#line 1393 "paper/figures.nw"
 /* the rollers along a side of n cm */
 static int rollers(double n) { return (int) fmax(1, floor(n / 0.88 + 0.5) - 1); }
-#line 1399 "paper/figures.nw"
+#line 1401 "paper/figures.nw"
 static const char hatch[] = "fs pattern 4 noborder fc 'gray40' back";
 
 /* a clamp or rollers on the left (s = -1) or the right (s = 1) side at x,
@@ -46,7 +46,7 @@ static void side_support(FILE *f, Problem_bc_kind kind, const char *x, const cha
           "nohead lw 1.5 lc 'black' back\n", x, s > 0 ? '+' : '-', 2 * ROLLER,
           end, x, s > 0 ? '+' : '-', 2 * ROLLER, top);
 }
-#line 1427 "paper/figures.nw"
+#line 1429 "paper/figures.nw"
 static void top_support(FILE *f, Problem_bc_kind kind, int n)
 {
   if (kind == BC_CLAMPED)
@@ -61,7 +61,7 @@ static void top_support(FILE *f, Problem_bc_kind kind, int n)
   fprintf(f, "  set arrow from a, gamma + cy(%g) to b, gamma + cy(%g) "
           "nohead lw 1.5 lc 'black' back\n", 2 * ROLLER, 2 * ROLLER);
 }
-#line 1446 "paper/figures.nw"
+#line 1448 "paper/figures.nw"
 static double load_reach(const Problem_side *sd, int k);
 #define ALABEL 0.484  /* a load's value beyond its arrows (0.11 m) */
 static double side_reach(const Problem_side *sd, int k)
@@ -73,7 +73,7 @@ static double side_reach(const Problem_side *sd, int k)
   default: return 0;
   }
 }
-#line 1462 "paper/figures.nw"
+#line 1464 "paper/figures.nw"
 static void body_fit(const Plot *pl, Body_page *L);
 static Body_page body_page(const Plot *pl)
 {
@@ -101,7 +101,7 @@ static Body_page body_page(const Plot *pl)
   body_fit(pl, &L);
   return L;
 }
-#line 1496 "paper/figures.nw"
+#line 1498 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size);
 static void load_text(const Problem_side *sd, char *buf, size_t size);
 static void body_fit(const Plot *pl, Body_page *L)
@@ -132,7 +132,7 @@ static void body_fit(const Plot *pl, Body_page *L)
     L->width += left - L->left, L->left = left;
   }
 }
-#line 1551 "paper/figures.nw"
+#line 1553 "paper/figures.nw"
 static const double normal[SIDE_COUNT][2] = { { -1, 0 }, { 1, 0 }, { 0, 1 } };
 
 /* the tail and head of the arrows of side k, cm from the side */
@@ -157,7 +157,7 @@ static double load_reach(const Problem_side *sd, int k)
   load_arrow(sd, k, tail, head);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 1578 "paper/figures.nw"
+#line 1580 "paper/figures.nw"
 static void load_text(const Problem_side *sd, char *buf, size_t size)
 {
   char p1[64], p2[64];
@@ -167,13 +167,13 @@ static void load_text(const Problem_side *sd, char *buf, size_t size)
   else if (sd->P[1] == 0) snprintf(buf, size, "{/:Italic P}_1 = %s N/m^2", p1);
   else snprintf(buf, size, "({/:Italic P}_1, {/:Italic P}_2) = (%s, %s) N/m^2", p1, p2);
 }
-#line 1592 "paper/figures.nw"
+#line 1594 "paper/figures.nw"
 static void side_point(FILE *f, int k, const char *s, double dx, double dy)
 {
   fprintf(f, "%s + cx(%.4g), %s + cy(%.4g)", k == SIDE_TOP ? s : k == SIDE_LEFT ? "a" : "b",
           dx, k == SIDE_TOP ? "gamma" : s, dy);
 }
-#line 1602 "paper/figures.nw"
+#line 1604 "paper/figures.nw"
 static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
 {
   double tail[2], head[2], reach = load_reach(sd, k);
@@ -207,7 +207,7 @@ static void side_load(FILE *f, const Problem_side *sd, int k, double ucm)
   side_point(f, k, mid, (reach + ALABEL) * n[0], (reach + ALABEL) * n[1]);
   fprintf(f, " center%s tc '#b00000'\n", k == SIDE_TOP ? "" : " rotate by 90");
 }
-#line 1651 "paper/figures.nw"
+#line 1653 "paper/figures.nw"
 /* the sides' names at 1.2 times the text, so that they print at 9.8 pt
    (the text's 8.2 pt, fontpt); the stacked scripts of Gamma_P^k at 0.85 of
    gnuplot's scripts (0.8), 6.7 pt, where the two clear each other */
@@ -239,7 +239,7 @@ static void top_name_place(const Problem *p, const Body_page *L, double *x, doub
     *up = 0.5 * L->ext[SIDE_TOP];
   }
 }
-#line 1691 "paper/figures.nw"
+#line 1693 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow);
 static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -271,7 +271,7 @@ static void body_labels(FILE *f, const Plot *pl, const Body_page *L)
   fprintf(f, "  set style textbox opaque noborder\n");
   if (p->has_body_force) body_force_label(f, p, low, narrow);
 }
-#line 1725 "paper/figures.nw"
+#line 1727 "paper/figures.nw"
 static void foundation_text(const Problem *p, char *buf, size_t size)
 {
   char g[64] = "";
@@ -282,7 +282,7 @@ static void foundation_text(const Problem *p, char *buf, size_t size)
            : p->contact == CONTACT_COULOMB ? ", Coulomb friction {/:Italic F} = " : "",
            g, p->contact == CONTACT_TRESCA ? " N/m^2" : "");
 }
-#line 1740 "paper/figures.nw"
+#line 1742 "paper/figures.nw"
 static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
 {
   char f1[64], f2[64];
@@ -292,7 +292,7 @@ static void body_force_label(FILE *f, const Problem *p, int low, int narrow)
           "at a + %s*(b - a), %s*gamma center front%s\n", f1, f2, narrow ? "0.5" : low
           ? "0.7" : "0.65", narrow ? "0.45" : low ? "0.5" : "0.6", narrow ? " boxed" : "");
 }
-#line 1757 "paper/figures.nw"
+#line 1759 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L);
 static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -326,7 +326,7 @@ static void body_upper(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1806 "paper/figures.nw"
+#line 1808 "paper/figures.nw"
 static void body_part(FILE *f, const Plot *pl, const Body_page *L)
 {
   const Problem *p = &pl->s.problem;
@@ -346,7 +346,7 @@ static void body_part(FILE *f, const Plot *pl, const Body_page *L)
           "       shape using 1:2 with lines lw 2 lc 'black' notitle\n"
           "  unset object; unset arrow; unset label; unset title\n");
 }
-#line 1837 "paper/figures.nw"
+#line 1839 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl);
 static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
 {
@@ -377,7 +377,7 @@ static void body_strip(FILE *f, const Plot *pl, const Body_page *L)
   body_strip_plot(f, pl);
   fprintf(f, "  unset object; unset arrow; unset label; unset title; unset xlabel\n");
 }
-#line 1872 "paper/figures.nw"
+#line 1874 "paper/figures.nw"
 static void body_strip_plot(FILE *f, const Plot *pl)
 {
   fprintf(f, "  plot shape using 1:2 with filledcurves y=shi fc '#dce6f2' notitle, \\\n"
@@ -387,7 +387,7 @@ static void body_strip_plot(FILE *f, const Plot *pl)
     fprintf(f, ", \\\n       final using 1:2 with lines dt 2 lw 2 lc '#1f4e99' notitle");
   fprintf(f, "\n");
 }
-#line 1890 "paper/figures.nw"
+#line 1892 "paper/figures.nw"
 /* a part's outline: its chains, those filled, its holes */
 static void body_part_blocks(FILE *f, const Plot *pl)
 {

@@ -1,9 +1,9 @@
-#line 259 "paper/figures.nw"
+#line 261 "paper/figures.nw"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 630 "paper/figures.nw"
+#line 632 "paper/figures.nw"
 static void chain_walk(const Mesh *m, Plot_chains *c, const int *out, char *seen, int e, int *n)
 {
   int first = m->edge[2 * e];
@@ -38,7 +38,7 @@ void plot_chains_free(Plot_chains *c)
   free(c->order), free(c->start), free(c->closed);
   memset(c, 0, sizeof *c);
 }
-#line 668 "paper/figures.nw"
+#line 670 "paper/figures.nw"
 double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double *xy)
 {
   double A = 0;
@@ -71,7 +71,7 @@ void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const doubl
     fputc('\n', f);
   }
 }
-#line 713 "paper/figures.nw"
+#line 715 "paper/figures.nw"
 typedef struct {
   double x[2];       /* a point of the curve, m */
   double n[2], t[2]; /* the outward normal and the tangent there, on the page */
@@ -94,7 +94,7 @@ static double curve_cm(const Plot *pl, int k, int s, double ucm, double vex)
       edge_cm(pl->part, c->order[j], ucm, vex, d), len += hypot(d[0], d[1]);
   return len;
 }
-#line 738 "paper/figures.nw"
+#line 740 "paper/figures.nw"
 static int curve_mark(const Plot *pl, int k, int s, double at, double ucm, double vex,
                       Curve_mark *q)
 {
@@ -128,7 +128,7 @@ static double chain_box(const Plot *pl, int k, double ucm, double vex)
   }
   return fmin((hi[0] - lo[0]) * ucm, (hi[1] - lo[1]) * ucm * vex);
 }
-#line 775 "paper/figures.nw"
+#line 777 "paper/figures.nw"
 static void mark_arrow(const Problem_curve *cv, const Curve_mark *q, double len,
                        double tail[2], double head[2])
 {
@@ -168,7 +168,7 @@ static double mark_draw(FILE *f, const Problem_curve *cv, const Curve_mark *q, d
             y, tail[1], x, head[0], y, head[1], AHEAD);
   return fmax(tail[0] * n[0] + tail[1] * n[1], head[0] * n[0] + head[1] * n[1]);
 }
-#line 818 "paper/figures.nw"
+#line 820 "paper/figures.nw"
 static void curve_text(FILE *f, const Problem_curve *cv)
 {
   char v[2][64];
@@ -190,7 +190,7 @@ static double curve_text_cm(const Problem_curve *cv)
          cv->kind == BC_TRACTION ? ": (P_1, P_2) = (−5.75·10^8, −5.75·10^8) N/m^2"
          : ": p = −5.75·10^8 N/m^2 (clamped)", 9.8));
 }
-#line 845 "paper/figures.nw"
+#line 847 "paper/figures.nw"
 static double curve_draw(FILE *f, const Plot *pl, int k, int s, double ucm, double vex,
                          int sideways)
 {
@@ -234,7 +234,7 @@ double plot_part_reach(const Plot *pl, double ucm, double vex, int sideways)
       r = fmax(r, curve_draw(NULL, pl, k, s, ucm, vex, sideways));
   return r;
 }
-#line 902 "paper/figures.nw"
+#line 904 "paper/figures.nw"
 typedef struct { int lo, hi, material; } Region_edge;
 
 static int region_edge_cmp(const void *x, const void *y)

@@ -6,7 +6,7 @@
 #include "scene.h"
 #include "objective.h"
 #include "mesh.h"
-#line 455 "paper/figures.nw"
+#line 457 "paper/figures.nw"
 typedef struct {
   int ncol, nrow;   /* N+1 columns and M+R+1 rows: node (i,j) is j*ncol + i */
   int n;            /* all nodes: ncol*nrow, then a part's own */
@@ -21,7 +21,7 @@ typedef struct {
 int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
                     Status *st);
 void plot_state_free(Plot_state *s);
-#line 609 "paper/figures.nw"
+#line 611 "paper/figures.nw"
 typedef struct {
   int nchain;   /* chains of boundary edges */
   int *order;   /* nedge: the edges chain by chain, each one's end the next one's start */
@@ -38,7 +38,7 @@ double plot_chain_area(const Mesh *m, const Plot_chains *c, int k, const double 
    0), or all (which == 0) */
 void plot_chains_write(FILE *f, const Mesh *m, const Plot_chains *c, const double *xy,
                        const double *u, int which);
-#line 282 "paper/figures.nw"
+#line 284 "paper/figures.nw"
 typedef struct {
   const Plot_args *args;
   Scene s;                 /* DIR/effective.scene, alpha0 its first design */
@@ -59,12 +59,12 @@ typedef struct {
 #line 171 "paper/figures.nw"
 #define SLACK 1e-9    /* relative: what a round number may be off by */
 #define MARKS 33      /* the most markers along a curve of the contact surface */
-#line 1367 "paper/figures.nw"
+#line 1369 "paper/figures.nw"
 #define WALL 0.528    /* cm: the wall of a clamp (0.12 m in Fig. 5.1) */
 #define ROLLER 0.154  /* a roller's radius (0.035 m) */
 #define RWALL 0.352   /* the wall behind the rollers (0.08 m) */
 #define LGAP 0.22     /* between a decoration and the side's name */
-#line 1544 "paper/figures.nw"
+#line 1546 "paper/figures.nw"
 #define ARROW 1.232   /* cm: a load arrow (0.28 m in Fig. 5.1) */
 #define AGAP 0.088    /* between the side and the arrow (0.02 m) */
 #define ASTEP 1.1     /* between two arrows (0.25 m) */
@@ -110,6 +110,8 @@ double plot_text_cm(const char *s, double pt);
 /* the characters of the widest label of tick marks from first to last
    (first <= last) printed with the decimals of step ('%.*f') */
 int plot_tick_chars(double first, double step, double last);
+/* the decimals that tick marks a step apart need */
+int plot_decimals(double step);
 /* cm: the room left of an axis that its name and tick labels of chars
    characters take on a page Wcm wide, with base ems for the name, the
    tick marks and the gaps (PLOT_BODY_BASE, PLOT_GRAPH_BASE) */

@@ -1,10 +1,10 @@
-#line 268 "paper/figures.nw"
+#line 270 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 2047 "paper/figures.nw"
+#line 2049 "paper/figures.nw"
 #define COLW 10.8     /* cm: the plot area of a column */
 #define RMARGIN 0.5   /* cm: the page right of the right column */
 #define GRAPHH 5.0    /* the height of a graph's row */
@@ -24,7 +24,7 @@ typedef struct {
   int below[2];       /* each state: its scaled contact surface crosses x2 = 0 */
   int tris;           /* a part: its triangles drawn (else only its outline) */
 } Results_page;
-#line 2069 "paper/figures.nw"
+#line 2071 "paper/figures.nw"
 static int free_vertically(const Problem *p)
 {
   Problem_bc_kind t = p->side[SIDE_TOP].kind;
@@ -33,7 +33,7 @@ static int free_vertically(const Problem *p)
   return p->side[SIDE_LEFT].kind != BC_CLAMPED && p->side[SIDE_RIGHT].kind != BC_CLAMPED
          && t != BC_CLAMPED && t != BC_ROLLER;
 }
-#line 2081 "paper/figures.nw"
+#line 2083 "paper/figures.nw"
 static double largest(const Plot_state *s, double t2)
 {
   double m = 0;
@@ -49,7 +49,7 @@ static double sink(const Plot_state *s)
     if (s->xy[2 * i + 1] + s->u[2 * i + 1] <= touch) t = fmin(t, s->u[2 * i + 1]);
   return t;
 }
-#line 2101 "paper/figures.nw"
+#line 2103 "paper/figures.nw"
 static void state_scale(const Plot_state *s, int sinks, double umax, double *S, double *t2)
 {
   double m;
@@ -65,7 +65,7 @@ static int crosses(const Plot_state *s, double S, double t2, double tol)
     if (s->xy[2 * i + 1] + t2 + S * (s->u[2 * i + 1] - t2) < -tol) return 1;
   return 0;
 }
-#line 2121 "paper/figures.nw"
+#line 2123 "paper/figures.nw"
 static void least_cell(const Plot_state *s, const Results_page *L, double *w, double *h)
 {
   for (int j = 0; j < s->nrow; j++)
@@ -75,7 +75,7 @@ static void least_cell(const Plot_state *s, const Results_page *L, double *w, do
       if (j + 1 < s->nrow) *h = fmin(*h, (x[2 * s->ncol + 1] - x[1]) * L->ucm * L->vex);
     }
 }
-#line 2133 "paper/figures.nw"
+#line 2135 "paper/figures.nw"
 /* a part: the side of its mean own triangle on the page, cm */
 static double part_cell(const Mesh *m, const Results_page *L)
 {
@@ -109,7 +109,7 @@ static Results_page results_page(const Plot *pl)
   L.tris = pl->part && part_cell(pl->part, &L) >= 2 * MESHCELL;
   return L;
 }
-#line 2170 "paper/figures.nw"
+#line 2172 "paper/figures.nw"
 enum { MESH, DEFORMED, FIELD, ENERGY, PRESSURE, TANGENTIAL, SLIP };
 typedef struct { int col, row; char letter; int kind, state; } Panel;
 static const Panel optimize_panels[] = {
@@ -120,7 +120,7 @@ static const Panel optimize_panels[] = {
 static const Panel solve_panels[] = {
   { 0, 0, 'a', MESH, 0 }, { 0, 1, 'b', DEFORMED, 0 }, { 0, 2, 'c', FIELD, 0 },
   { 1, 0, 'd', PRESSURE, 0 }, { 1, 1, 'e', TANGENTIAL, 0 }, { 1, 2, 'f', SLIP, 0 } };
-#line 2187 "paper/figures.nw"
+#line 2189 "paper/figures.nw"
 static void mesh_node(FILE *f, const Plot_state *s, int i, int j)
 {
   const double *x = s->xy + 2 * (j * s->ncol + i), *u = s->u + 2 * (j * s->ncol + i);
@@ -141,7 +141,7 @@ static void mesh_diagonal(FILE *f, const Plot_state *s, int i, int j, int step)
   for (; i < s->ncol && j < s->nrow; i += step, j += step) mesh_node(f, s, i, j);
   fputc('\n', f);
 }
-#line 2218 "paper/figures.nw"
+#line 2220 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris);
 static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int sc, int sr,
                        int tris)
@@ -157,7 +157,7 @@ static void mesh_block(FILE *f, const Plot *pl, const Plot_state *s, int k, int 
   for (int j = sc; j < s->nrow - 1; j += sc) mesh_diagonal(f, s, 0, j, d);
   fprintf(f, "EOD\n");
 }
-#line 2250 "paper/figures.nw"
+#line 2252 "paper/figures.nw"
 static void part_lines(FILE *f, const Plot *pl, const Plot_state *s, int tris)
 {
   const Mesh *m = s->part;
@@ -187,7 +187,7 @@ static void arrow_block(FILE *f, const Plot_state *s, const Results_page *L, int
   if (s->part) part_arrows(f, s, L);
   fprintf(f, "EOD\n");
 }
-#line 2283 "paper/figures.nw"
+#line 2285 "paper/figures.nw"
 static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
 {
   double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
@@ -209,7 +209,7 @@ static void part_arrows(FILE *f, const Plot_state *s, const Results_page *L)
   }
   free(taken);
 }
-#line 2311 "paper/figures.nw"
+#line 2313 "paper/figures.nw"
 static void results_scales(FILE *f, const Plot *pl);
 static double results_width(const Plot *pl);
 static void results_head(FILE *f, const Plot *pl, const Results_page *L, const char *out)
@@ -250,25 +250,32 @@ static void results_head(FILE *f, const Plot *pl, const Results_page *L, const c
             "0 %.15g\nEOD\n", objective_name(pl->s.optimizer.objective.kind), pl->start_value);
   results_scales(f, pl);
 }
-#line 2354 "paper/figures.nw"
+#line 2356 "paper/figures.nw"
 static double results_width(const Plot *pl)
 {
   const char *t = pl->args->title ? pl->args->title : pl->args->dir;
   double w = plot_text_cm(t, 12) + plot_text_cm(": numerical results", 12) + 1;
   return fmax(2.8 + 2 * COLW + 2.4 + RMARGIN, w);
 }
-#line 2366 "paper/figures.nw"
+#line 2368 "paper/figures.nw"
 static void results_power(FILE *f, const Plot *pl, const char *m, const char *e, int c);
+/* the power of ten of the objective's values in history.dat, 0 for a
+   dimensionless one between 0.01 and 1000, or with no history */
+static int objective_power(const Plot *pl)
+{
+  double m = fmax(fabs(pl->jlo), fabs(pl->jhi));
+  int e = m > 0 ? (int) floor(log10(m)) : 0;
+  if (!*objective_unit(pl->s.optimizer.objective.kind) && e >= -2 && e < 3) e = 0;
+  return e;
+}
+
 static void results_scales(FILE *f, const Plot *pl)
 {
   fprintf(f, "round_down(x) = (p = 10**floor(log10(x)), m = x/p, "
           "(m >= 5 ? 5 : m >= 2 ? 2 : 1) * p)\n");
-  if (pl->optimize) {
-    fprintf(f, "stats opt.'/history.dat' using 2 nooutput\n"
-            "ee = tens(amax(abs(STATS_min), abs(STATS_max)))\n");
-    if (!*objective_unit(pl->s.optimizer.objective.kind))
-      fprintf(f, "if (ee >= -2 && ee < 3) { ee = 0 }      # dimensionless: as it is\n");
-  }
+  if (pl->optimize)
+    fprintf(f, "ee = %d      # the objective's power of ten (history.dat; a dimensionless "
+            "one in [0.01, 1000) as it is)\n", objective_power(pl));
   results_power(f, pl, "pm", "pe", 6);
   fprintf(f, "plo = pm > 0 ? -0.06*pm/10.0**pe : -1\n");
   if (pl->s.problem.contact != CONTACT_FRICTIONLESS) {
@@ -288,7 +295,7 @@ static void results_power(FILE *f, const Plot *pl, const char *m, const char *e,
   fprintf(f, "%s = tens(%s); %s_step = %s > 0 ? round_down(%s/10.0**%s/2) : 1\n",
           e, m, e, m, m, e);
 }
-#line 2404 "paper/figures.nw"
+#line 2413 "paper/figures.nw"
 static const char *state_name[2] = { "Ω({/:Italic α}^0)", "Ω({/:Italic α}^*)" };
 
 static void body_panel_place(FILE *f, const Plot *pl, const Results_page *L, const Panel *q)
@@ -344,7 +351,7 @@ static const char *one_in(const Results_page *L)
   snprintf(buf, sizeof buf, L->acol * L->arow > 1 ? ", one arrow in %d" : "", L->acol * L->arow);
   return buf;
 }
-#line 2466 "paper/figures.nw"
+#line 2475 "paper/figures.nw"
 static const char foundation[] =
   "  set object 1 rect from bxlo, bylo to bxhi, 0 fs pattern 5 noborder fc 'gray50' back\n";
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q);
@@ -375,7 +382,7 @@ static void body_panel(FILE *f, const Plot *pl, const Results_page *L, const Pan
             k, k, k, k, k, VHEAD);
   }
 }
-#line 2509 "paper/figures.nw"
+#line 2518 "paper/figures.nw"
 /* cm: the widest title over a body panel of column c */
 #define TITLEW(c) (COLW + 2 * ((c) ? RMARGIN : 1.0))
 static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, ...)
@@ -391,7 +398,7 @@ static void panel_title(FILE *f, const Results_page *L, int k, const char *fmt, 
   fprintf(f, "  set title sprintf('%s', S%d) font sprintf(',%%g', %s*fsz)\n", t, k,
           plot_real(fmin(1, TITLEW(k) / w), 3));
 }
-#line 2530 "paper/figures.nw"
+#line 2539 "paper/figures.nw"
 static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
 {
   int k = q->state;
@@ -407,7 +414,7 @@ static void deformed_title(FILE *f, const Results_page *L, const Panel *q)
     fprintf(f, "  set format x ''; set label 1 'so magnified, Γ_C falls below "
             "{/:Italic x}_2 = 0' at graph 0.5, graph 0 center offset 0, -1\n");
 }
-#line 2551 "paper/figures.nw"
+#line 2560 "paper/figures.nw"
 static void graph_place(FILE *f, const Panel *q, double indent)
 {
   char x[64], y[96], w[64];
@@ -419,7 +426,7 @@ static void graph_place(FILE *f, const Panel *q, double indent)
   else snprintf(y, sizeof y, "top + 3*(bodyh + rowgap) + %d*(graphh + graphgap)", q->row - 3);
   plot_place(f, x, w, y, q->row < 3 ? "bodyh" : "graphh");
 }
-#line 2587 "paper/figures.nw"
+#line 2596 "paper/figures.nw"
 #define KEYBAND "0.5"  /* of the objective's range: the band of (d)'s key */
 #define KEYFONT "1.0"  /* of the text: the keys of the graphs */
 /* the objective in a title, its symbol on an axis */
@@ -464,7 +471,7 @@ static void objective_graph(FILE *f, const Plot *pl)
                                         : "{/:Italic α}^0 as given");
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n%s", formatted ? "  set format y\n" : "");
 }
-#line 2648 "paper/figures.nw"
+#line 2658 "paper/figures.nw"
 /* gnuplot's step of tick marks for a range r (quantize_normal_tics, guide 20) */
 static double gnuplot_step(double r)
 {
@@ -478,10 +485,9 @@ static double gnuplot_step(double r)
    gnuplot's step between them, in units of 10^ee */
 static int objective_ticks(const Plot *pl, double *step)
 {
-  double lo = pl->jlo, hi = pl->jhi, m = fmax(fabs(lo), fabs(hi));
+  double lo = pl->jlo, hi = pl->jhi;
   if (isnan(lo)) return 0;
-  int e = m > 0 ? (int) floor(log10(m)) : 0;
-  if (!*objective_unit(pl->s.optimizer.objective.kind) && e >= -2 && e < 3) e = 0;
+  int e = objective_power(pl);
   if (!isnan(pl->start_value)) lo = fmin(lo, pl->start_value), hi = fmax(hi, pl->start_value);
   lo /= pow(10, e), hi /= pow(10, e);
   if (hi == lo) lo -= lo ? 0.01 * fabs(lo) : 1, hi += hi ? 0.01 * fabs(hi) : 1;
@@ -505,10 +511,10 @@ static int objective_format(FILE *f, const Plot *pl)
 {
   double step;
   if (objective_ticks(pl, &step) <= 4) return 0;
-  fprintf(f, "  set format y '%%.%df'\n", (int) fmax(0, ceil(-log10(step) - SLACK)));
+  fprintf(f, "  set format y '%%.%df'\n", plot_decimals(step));
   return 1;
 }
-#line 2713 "paper/figures.nw"
+#line 2722 "paper/figures.nw"
 /* the largest pressure (column 6) of the states' contact.dat at x1 in
    [lo, hi], 0 where none; the largest of all in *top */
 static double pressure_in(const Plot *pl, double lo, double hi, double *top)
@@ -579,7 +585,7 @@ static void contact_graph(FILE *f, const Plot *pl, const Results_page *L, const 
             c, e, L->marks);
   fprintf(f, "\n  set offsets 0, 0, 0, 0\n");
 }
-#line 2788 "paper/figures.nw"
+#line 2797 "paper/figures.nw"
 void plot_results_figure(FILE *f, const Plot *pl, const char *out)
 {
   Results_page L = results_page(pl);

@@ -1,10 +1,10 @@
-#line 250 "paper/figures.nw"
+#line 252 "paper/figures.nw"
 #include <errno.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 477 "paper/figures.nw"
+#line 479 "paper/figures.nw"
 /* the value of the attribute name in line, into buf; NULL if none */
 static const char *attribute(const char *line, const char *name, char *buf, size_t size)
 {
@@ -18,7 +18,7 @@ static const char *attribute(const char *line, const char *name, char *buf, size
   buf[e - s] = 0;
   return buf;
 }
-#line 496 "paper/figures.nw"
+#line 498 "paper/figures.nw"
 typedef struct {
   long points;                   /* NumberOfPoints */
   int native;                    /* written in this machine's byte order */
@@ -46,7 +46,7 @@ static int vtu_head(FILE *f, Vtu_head *h)
   h->base = ftell(f);
   return c == '_' && h->points > 0 && h->at[0] >= 0 && h->at[1] >= 0;
 }
-#line 527 "paper/figures.nw"
+#line 529 "paper/figures.nw"
 static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf)
 {
   uint64_t bytes;
@@ -57,7 +57,7 @@ static int vtu_pairs(FILE *f, const Vtu_head *h, int k, double *out, double *buf
   for (size_t j = 0; j < n; j++) out[2 * j] = buf[3 * j], out[2 * j + 1] = buf[3 * j + 1];
   return 1;
 }
-#line 541 "paper/figures.nw"
+#line 543 "paper/figures.nw"
 int plot_state_read(const char *dir, const Problem *p, const Mesh *part, Plot_state *s,
                     Status *st)
 {

@@ -1,10 +1,10 @@
-#line 230 "paper/figures.nw"
+#line 232 "paper/figures.nw"
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_private.h"
-#line 990 "paper/figures.nw"
+#line 992 "paper/figures.nw"
 /* v in the fewest digits that read back as v; an integer as one (10, not 1e+01) */
 const char *plot_num(double v)
 {
@@ -21,7 +21,7 @@ const char *plot_num(double v)
   }
   return s;
 }
-#line 1012 "paper/figures.nw"
+#line 1014 "paper/figures.nw"
 const char *plot_real(double v, int digits)
 {
   static char buf[8][40];
@@ -32,7 +32,7 @@ const char *plot_real(double v, int digits)
   if (!strpbrk(s, ".en")) strcat(s, ".0");
   return s;
 }
-#line 1027 "paper/figures.nw"
+#line 1029 "paper/figures.nw"
 /* |v| of power of ten x, -2 <= x <= 3, after the sign: three significant
    digits, or all of its integer part (1000, not 1e+03) */
 static void plain_number(double v, int x, const char *minus, char *buf, size_t size)
@@ -61,7 +61,7 @@ void plot_enhanced_number(double v, char *buf, size_t size)
   else snprintf(buf, size, "%s%s%s10^{%s%d}", minus, strcmp(m, "1") ? m : "",
                 strcmp(m, "1") ? "·" : "", x < 0 ? "−" : "", abs(x));
 }
-#line 1062 "paper/figures.nw"
+#line 1064 "paper/figures.nw"
 /* s between single quotes for gnuplot; enhanced: its marks escaped */
 void plot_quote(FILE *f, const char *s, int enhanced)
 {
@@ -73,7 +73,7 @@ void plot_quote(FILE *f, const char *s, int enhanced)
   }
   fputc('\'', f);
 }
-#line 1080 "paper/figures.nw"
+#line 1082 "paper/figures.nw"
 double plot_text_cm(const char *s, double pt)
 {
   int n = 0;
@@ -87,8 +87,8 @@ double plot_text_cm(const char *s, double pt)
   }
   return n * 0.6 * pt * 2.54 / 72;
 }
-#line 1106 "paper/figures.nw"
-static int plot_decimals(double step)
+#line 1108 "paper/figures.nw"
+int plot_decimals(double step)
 {
   return (int) fmax(0, ceil(-log10(step) - SLACK));
 }
@@ -110,7 +110,7 @@ double plot_tick_room(double base, int chars, double Wcm)
   double em = 8.2 * Wcm / 16.4 * 2.54 / 72;       /* cm: fontpt */
   return (base + 0.64 * chars) * em + 0.12;
 }
-#line 1134 "paper/figures.nw"
+#line 1136 "paper/figures.nw"
 double plot_nice_down(double x)
 {
   double p = pow(10, floor(log10(x) + SLACK)), m = x / p * (1 + SLACK);
@@ -127,7 +127,7 @@ double plot_nice(double x)
   double d = plot_nice_down(x), u = plot_nice_up(x);
   return x / d <= u / x ? d : u;
 }
-#line 1159 "paper/figures.nw"
+#line 1161 "paper/figures.nw"
 void plot_tics_at(FILE *f, const char *axis, double first, double step,
                     double last, int format)
 {
@@ -142,7 +142,7 @@ void plot_tics(FILE *f, const char *axis, double lo, double hi, double n, int fo
   double step = plot_nice((hi - lo) / n);
   plot_tics_at(f, axis, ceil(lo / step - SLACK) * step, step, hi, format);
 }
-#line 1257 "paper/figures.nw"
+#line 1259 "paper/figures.nw"
 const char plot_page_lines[] =
   "dpcm = 1600.0 / Wcm; fontpt = 8.2*Wcm/16.4   # 8.2 pt printed 16.4 cm wide\n"
   "sx(cm) = cm / Wcm\n"
@@ -164,7 +164,7 @@ const char plot_terminal_lines[] =
   "  }\n"
   "  set output out.'.'.fmt\n"
   "  unset xlabel; unset ylabel; unset title; unset key\n";
-#line 1288 "paper/figures.nw"
+#line 1290 "paper/figures.nw"
 void plot_widen(double *ucm, double *vex, double w, double least, double want)
 {
   double hex;
@@ -173,7 +173,7 @@ void plot_widen(double *ucm, double *vex, double w, double least, double want)
   *ucm *= hex;
   *vex /= hex;
 }
-#line 1305 "paper/figures.nw"
+#line 1307 "paper/figures.nw"
 /* the head of a script: the figure, the run, and the variables of both */
 void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out)
 {
@@ -191,7 +191,7 @@ void plot_script_head(FILE *f, const Plot *pl, const char *what, const char *out
     fprintf(f, "cprime = %s      # the part stands on the strip x2 < cprime\n",
             plot_real(p->C0prime, 0));
 }
-#line 1326 "paper/figures.nw"
+#line 1328 "paper/figures.nw"
 void plot_place(FILE *f, const char *x, const char *w, const char *y, const char *h)
 {
   fprintf(f, "  set lmargin at screen sx(%s); set rmargin at screen sx(%s + %s)\n"

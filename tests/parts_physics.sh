@@ -232,4 +232,16 @@ for run in o-mma two; do
     check "$cmd: effective.scene of a part's run reproduces its summary's numbers" [ $same -eq 1 ]
   else fail "effective.scene of $run: $(cat $TMP/err)"; fi
 done
+
+# ---- a part that is not one body, or a condition on no boundary ---------
+# the band of rectangle.geo with a square drawn inside it (not cut from
+# it), and with a loaded curve embedded in it: refused by solve before
+# any work, exit 2, one line naming the scene, part.geometry and the
+# geometry, nothing written (test_part checks the mesher's words)
+for g in bad-overlap bad-inner; do
+  part_scene "$geo/$g.geo" > $TMP/$g.scene
+  rm -rf $TMP/$g-run; $BIN solve $TMP/$g.scene -o $TMP/$g-run > /dev/null 2> $TMP/err
+  check "$g.geo: solve refuses it, exit 2, one line ($(head -c 200 $TMP/err))" \
+    clean_failure $? 2 $TMP/err $TMP/$g-run "$g.scene: part.geometry: .*$g.geo: "
+done
 finish

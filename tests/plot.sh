@@ -304,7 +304,11 @@ check "pressure_spread: (d) names the spread J_s, with no unit (no J/m anywhere)
   "grep -q \"set title '(d) pressure spread {/:Italic J_s} against iteration'\" $TMP/pressure_spread.gp &&
    ! grep -q 'J/m' $TMP/pressure_spread.gp && ! grep -q 'E_h' $TMP/pressure_spread.gp"
 check "pressure_spread: a spread between 0.01 and 1000 is shown as it is, not in a power of ten" \
-  grep -q '^if (ee >= -2 && ee < 3) { ee = 0 }' $TMP/pressure_spread.gp
+  grep -q '^ee = 0 ' $TMP/pressure_spread.gp
+ce=$(awk '!/^#/ { m = $2 < 0 ? -$2 : $2; if (m > top) top = m } END { printf "%d", int(log(top) / log(10)) }' \
+  $(awk -F"'" '/^opt = / { print $2 }' $TMP/compliance.gp)/history.dat)
+check "compliance: shown in units of 10^$ce J/m, the power of ten of its largest value in history.dat" \
+  grep -q "^ee = $ce " $TMP/compliance.gp
 check "pressure_peak: (d) names the peak J_q and its q = 8, with no unit" sh -c \
   "grep -q \"(d) pressure peak {/:Italic J_q}, {/:Italic q} = 8 against\" $TMP/pressure_peak.gp &&
    ! grep -q 'J/m' $TMP/pressure_peak.gp"
